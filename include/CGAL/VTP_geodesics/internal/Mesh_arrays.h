@@ -1,0 +1,191 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_MESH_ARRAYS_H
+#define CGAL_VTP_GEODESICS_INTERNAL_MESH_ARRAYS_H
+
+#include <CGAL/license/VTP_geodesics.h>
+
+#include <CGAL/assertions.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace VTP_geodesics {
+namespace internal {
+
+typedef std::int32_t Index;
+const Index NO_INDEX = -1;
+
+// Local geometry of the face of a half-edge h = (A -> B), in the frame where A = (0,0),
+// B = (length, 0) and the third vertex C of face(h) lies at (cx, cy), cy >= 0.
+struct Halfedge_geometry
+{
+  double length;  // |AB|
+  double cx, cy;  // C in the frame of h
+  double l_next;  // |BC|
+  double l_prev;  // |CA|
+};
+
+// Compact, index-based description of a triangle mesh, built once per mesh.
+// The half-edges of face f are 3f, 3f+1, 3f+2 (in the order of `next`), so that
+// next/prev/face are index arithmetic; only `opposite` and the vertices are stored.
+struct Mesh_arrays
+{
+  Index nv = 0;
+  Index nf = 0;
+  std::vector<Index> source;     // per half-edge: its source vertex A
+  std::vector<Index> opposite;   // per half-edge: opposite half-edge, NO_INDEX on the border
+  std::vector<Halfedge_geometry> geometry;
+  // Per vertex, the half-edges whose source is the vertex (one per incident face), CSR.
+  std::vector<Index> corner_begin;
+  std::vector<Index> corners;
+  std::vector<double> angle_sum;
+  std::vector<unsigned char> is_pseudo_source; // saddle or boundary vertex
+  std::vector<unsigned char> is_boundary;
+  double mean_edge_length = 0.;
+  double min_edge_length = 0.;
+  double max_edge_length = 0.;
+  double anisotropy = 1.;         // tau, see compute_anisotropy()
+  std::size_t number_of_edges = 0;
+
+  static Index next(Index h) { return (h % 3 == 2) ? h - 2 : h + 1; }
+  static Index prev(Index h) { return (h % 3 == 0) ? h + 2 : h - 1; }
+  static Index face(Index h) { return h / 3; }
+  Index target(Index h) const { return source[next(h)]; }
+
+  // Builds the arrays from triangles (3 vertex indices each, counterclockwise), the opposite
+  // of each half-edge (NO_INDEX on the border) and the length of each half-edge.
+  void build(Index number_of_vertices,
+             std::vector<Index>&& triangle_vertices,
+             std::vector<Index>&& opposite_halfedges,
+             const std::vector<double>& halfedge_lengths)
+  {
+    nv = number_of_vertices;
+    source = std::move(triangle_vertices);
+    opposite = std::move(opposite_halfedges);
+    const Index nh = static_cast<Index>(source.size());
+    CGAL_precondition(nh % 3 == 0);
+    CGAL_precondition(opposite.size() == source.size());
+    CGAL_precondition(halfedge_lengths.size() == source.size());
+    nf = nh / 3;
+
+    geometry.resize(nh);
+    for(Index h = 0; h < nh; ++h)
+    {
+      const double l = halfedge_lengths[h];
+      const double lb = halfedge_lengths[next(h)]; // |BC|
+      const double la = halfedge_lengths[prev(h)]; // |CA|
+      Halfedge_geometry& g = geometry[h];
+      g.length = l;
+      g.l_next = lb;
+      g.l_prev = la;
+      if(l > 0.)
+      {
+        g.cx = (l * l + la * la - lb * lb) / (2. * l);
+        const double s = la * la - g.cx * g.cx;
+        g.cy = s > 0. ? std::sqrt(s) : 0.;
+      }
+      else
+      {
+        g.cx = 0.;
+        g.cy = la;
+      }
+    }
+
+    // corners per vertex
+    corner_begin.assign(nv + 1, 0);
+    for(Index h = 0; h < nh; ++h)
+      ++corner_begin[source[h] + 1];
+    for(Index v = 0; v < nv; ++v)
+      corner_begin[v + 1] += corner_begin[v];
+    corners.resize(nh);
+    {
+      std::vector<Index> fill(corner_begin.begin(), corner_begin.end() - 1);
+      for(Index h = 0; h < nh; ++h)
+        corners[fill[source[h]]++] = h;
+    }
+
+    // angles, boundary and saddle flags, edge statistics
+    angle_sum.assign(nv, 0.);
+    is_boundary.assign(nv, 0);
+    double sum_len = 0.;
+    std::size_t ne = 0;
+    min_edge_length = (nh > 0) ? halfedge_lengths[0] : 0.;
+    max_edge_length = 0.;
+    for(Index h = 0; h < nh; ++h)
+    {
+      // corner angle at source(h) between h (A->B) and the reversed prev(h) (A->C)
+      angle_sum[source[h]] += corner_angle(geometry[h].length, geometry[h].l_prev, geometry[h].l_next);
+      if(opposite[h] == NO_INDEX)
+      {
+        is_boundary[source[h]] = 1;
+        is_boundary[target(h)] = 1;
+      }
+      if(opposite[h] == NO_INDEX || opposite[h] > h) // count each edge once
+      {
+        const double l = geometry[h].length;
+        sum_len += l;
+        ++ne;
+        min_edge_length = (std::min)(min_edge_length, l);
+        max_edge_length = (std::max)(max_edge_length, l);
+      }
+    }
+    number_of_edges = ne;
+    mean_edge_length = ne > 0 ? sum_len / double(ne) : 0.;
+    const double two_pi = 2. * 3.14159265358979323846;
+    is_pseudo_source.assign(nv, 0);
+    for(Index v = 0; v < nv; ++v)
+      is_pseudo_source[v] = (is_boundary[v] || angle_sum[v] > two_pi + 1e-9) ? 1 : 0;
+    compute_anisotropy();
+  }
+
+  // angle opposite to side c in a triangle of sides a, b, c (robust for degenerate triangles)
+  static double corner_angle(double a, double b, double c)
+  {
+    if(a <= 0. || b <= 0.)
+      return 0.;
+    double cosine = (a * a + b * b - c * c) / (2. * a * b);
+    cosine = (std::max)(-1., (std::min)(1., cosine));
+    return std::acos(cosine);
+  }
+
+  // Anisotropy degree tau: mean over faces of (longest edge / (2 sqrt(3) inradius)),
+  // which is 1 for equilateral triangles and grows with elongation; capped for degenerate faces.
+  void compute_anisotropy()
+  {
+    double acc = 0.;
+    std::size_t n = 0;
+    for(Index f = 0; f < nf; ++f)
+    {
+      const double a = geometry[3 * f].length, b = geometry[3 * f].l_next, c = geometry[3 * f].l_prev;
+      const double s = 0.5 * (a + b + c);
+      const double area2 = s * (s - a) * (s - b) * (s - c);
+      const double lmax = (std::max)(a, (std::max)(b, c));
+      if(!(area2 > 0.) || !(s > 0.))
+        continue;
+      const double inradius = std::sqrt(area2) / s;
+      const double q = lmax / (2. * std::sqrt(3.) * inradius);
+      acc += (std::min)(q, 1e3);
+      ++n;
+    }
+    anisotropy = n > 0 ? (std::max)(1., acc / double(n)) : 1.;
+  }
+};
+
+} // namespace internal
+} // namespace VTP_geodesics
+} // namespace CGAL
+
+#endif // CGAL_VTP_GEODESICS_INTERNAL_MESH_ARRAYS_H
