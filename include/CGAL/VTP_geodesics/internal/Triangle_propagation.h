@@ -1,0 +1,329 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_TRIANGLE_PROPAGATION_H
+#define CGAL_VTP_GEODESICS_INTERNAL_TRIANGLE_PROPAGATION_H
+
+#include <CGAL/license/VTP_geodesics.h>
+
+#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/Window_storage.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace VTP_geodesics {
+namespace internal {
+
+// The geometry of one window list crossing one triangle. Everything here is a pure function of
+// its arguments (no shared state), so that the parallel scheduling can call it from many threads.
+//
+// Notation: the list lies on h = (A -> B) and crosses face(h) = (A, B, C). In the frame of h,
+// A = (0,0), B = (L,0), C = (cx,cy). Children go to the edge A-C (stored on the half-edge
+// A -> C of the neighbouring face) and to the edge C-B (stored on C -> B of the neighbour).
+
+inline double window_distance(const Window& w, double x)
+{
+  const double dx = x - w.sx;
+  return w.sigma + std::sqrt(dx * dx + w.sy * w.sy);
+}
+
+// Pointwise domination by the endpoint vertices (the ICH filter, applied as trimming): on an edge
+// X -> Y of length L, the part of the window where sigma + |S q| > d(X) + |X q| (a prefix, since
+// |S q| - |X q| does not increase away from X) or sigma + |S q| > d(Y) + |Y q| (a suffix) carries
+// no shortest path: every point beyond is reached at least as fast through X or Y.
+// Returns false when nothing is left.
+inline bool trim_by_vertices(Window& w, double L, double dX, double dY)
+{
+  // prefix dominated by X
+  if(window_distance(w, w.b1) > dX + w.b1)
+    return false;
+  if(window_distance(w, w.b0) > dX + w.b0)
+  {
+    const double D = dX - w.sigma;
+    const double den = 2. * (w.sx + D);
+    double t = (den > 0.) ? (w.sx * w.sx + w.sy * w.sy - D * D) / den : w.b0;
+    if(!(t > w.b0)) t = w.b0;
+    if(t > w.b1) t = w.b1;
+    w.b0 = t;
+  }
+  // suffix dominated by Y
+  if(window_distance(w, w.b0) > dY + (L - w.b0))
+    return false;
+  if(window_distance(w, w.b1) > dY + (L - w.b1))
+  {
+    const double rx = L - w.sx;
+    const double D = dY - w.sigma;
+    const double den = 2. * (rx + D);
+    double t = (den > 0.) ? (rx * rx + w.sy * w.sy - D * D) / den : (L - w.b1);
+    double nb1 = L - t;
+    if(!(nb1 < w.b1)) nb1 = w.b1;
+    if(nb1 < w.b0) nb1 = w.b0;
+    w.b1 = nb1;
+  }
+  return w.b1 > w.b0;
+}
+
+// Pairwise pruning of two windows of the same list (Rule 2), by pointwise comparison on their
+// overlap: the part of a window where the other one is strictly shorter carries no shortest
+// path and is cut off, when it is at an end of the window (a window is never split in two).
+// Near-ties are left alone. Marks a window dead by setting b1 < b0.
+inline void prune_pair(Window& a, Window& b)
+{
+  const double l = (std::max)(a.b0, b.b0);
+  const double r = (std::min)(a.b1, b.b1);
+  if(!(r > l))
+    return;
+
+  // roots of fa(x) = fb(x): sqrt(qa) = beta + sqrt(qb), beta = sigma_b - sigma_a
+  double cuts[5];
+  int nc = 0;
+  cuts[nc++] = l;
+  {
+    const double beta = b.sigma - a.sigma;
+    const double al = 2. * (b.sx - a.sx);
+    const double c = a.sx * a.sx + a.sy * a.sy - b.sx * b.sx - b.sy * b.sy - beta * beta;
+    const double b2 = beta * beta;
+    const double qa = al * al - 4. * b2;
+    const double qb = 2. * al * c + 8. * b2 * b.sx;
+    const double qc = c * c - 4. * b2 * (b.sx * b.sx + b.sy * b.sy);
+    // Candidate break points: the roots and the apex of the quadratic (a double root can be
+    // lost to rounding). Extra candidates are harmless: the pieces are classified below by
+    // evaluating the distances themselves.
+    double roots[3];
+    int nr = 0;
+    if(qa != 0.)
+    {
+      roots[nr++] = -qb / (2. * qa);
+      const double disc = qb * qb - 4. * qa * qc;
+      if(disc > 0.)
+      {
+        const double sq = std::sqrt(disc);
+        const double q = -0.5 * (qb + (qb >= 0. ? sq : -sq));
+        if(q != 0.)
+        {
+          roots[nr++] = q / qa;
+          roots[nr++] = qc / q;
+        }
+      }
+    }
+    else if(qb != 0.)
+      roots[nr++] = -qc / qb;
+    std::sort(roots, roots + nr);
+    for(int i = 0; i < nr; ++i)
+      if(roots[i] > l && roots[i] < r && roots[i] > cuts[nc - 1])
+        cuts[nc++] = roots[i];
+  }
+  cuts[nc++] = r;
+
+  // sign of fa - fb on each piece, checked at its middle and both ends; 0 for a near-tie or
+  // an inconsistent piece (which is then left alone)
+  int sign[4];
+  int end_sign[5];
+  const int np = nc - 1;
+  for(int i = 0; i < nc; ++i)
+  {
+    const double fa = window_distance(a, cuts[i]), fb = window_distance(b, cuts[i]);
+    const double tol = 1e-13 * (std::max)(fa, fb);
+    end_sign[i] = (fa > fb + tol) ? 1 : ((fb > fa + tol) ? -1 : 0);
+  }
+  for(int i = 0; i < np; ++i)
+  {
+    const double m = 0.5 * (cuts[i] + cuts[i + 1]);
+    const double fa = window_distance(a, m), fb = window_distance(b, m);
+    const double tol = 1e-13 * (std::max)(fa, fb);
+    int sg = (fa > fb + tol) ? 1 : ((fb > fa + tol) ? -1 : 0);
+    if(end_sign[i] == -sg || end_sign[i + 1] == -sg)
+      sg = 0;
+    sign[i] = sg;
+  }
+
+  // a loses where sign > 0, b loses where sign < 0
+  for(int who = 0; who < 2; ++who)
+  {
+    Window& w = who == 0 ? a : b;
+    const int lose = who == 0 ? 1 : -1;
+    const bool starts = (w.b0 == l);
+    const bool ends = (w.b1 == r);
+    int first = 0;
+    while(first < np && sign[first] == lose) ++first;        // losing pieces from the left
+    int last = np;
+    while(last > 0 && sign[last - 1] == lose) --last;        // losing pieces from the right
+    if(first == np)
+    {
+      // loses on the whole overlap
+      if(starts && ends) { w.b1 = w.b0 - 1.; continue; }
+      if(starts) { w.b0 = r; continue; }
+      if(ends) { w.b1 = l; continue; }
+      continue;
+    }
+    if(starts && first > 0)
+      w.b0 = cuts[first];
+    if(ends && last < np)
+      w.b1 = cuts[last];
+  }
+}
+
+// Output of the propagation of one list across one triangle.
+struct Propagation_result
+{
+  double distance_to_C = std::numeric_limits<double>::infinity();
+  std::size_t propagated = 0;
+};
+
+// Maps the part [p0, p1] of window w (frame of h) onto the edge X -> Y whose frame is given by
+// its origin (ox, oy), unit direction (ux, uy) (both in the frame of h) and length lc; appends
+// the child to `out` unless it is shorter than `min_length`. `c_pos` is the position of C on the
+// child edge: a ray that does not meet the line of the child edge properly (only by rounding,
+// for the ray through C) is sent to C.
+inline void emit_child(const Window& w, double p0, double p1,
+                       double ox, double oy, double ux, double uy, double lc, double c_pos,
+                       double min_length, double dX, double dY,
+                       std::vector<Window>& out)
+{
+  const double rx = w.sx - ox, ry = w.sy - oy;
+  Window c;
+  c.sx = rx * ux + ry * uy;
+  c.sy = ux * ry - uy * rx;
+  c.sigma = w.sigma;
+  if(!(c.sy < 0.))
+    return; // source on the line of the edge (degenerate face): nothing crosses
+  // intersection of the ray from the source through (p, 0) with the line of the child edge
+  const double ax0 = p0 - ox, ay0 = -oy;
+  const double px0 = ax0 * ux + ay0 * uy, py0 = ux * ay0 - uy * ax0;
+  const double ax1 = p1 - ox, ay1 = -oy;
+  const double px1 = ax1 * ux + ay1 * uy, py1 = ux * ay1 - uy * ax1;
+  double x0, x1;
+  {
+    const double den = c.sy - py0;
+    x0 = (den < 0.) ? c.sx + (px0 - c.sx) * (c.sy / den) : c_pos;
+  }
+  {
+    const double den = c.sy - py1;
+    x1 = (den < 0.) ? c.sx + (px1 - c.sx) * (c.sy / den) : c_pos;
+  }
+  if(x0 > x1) std::swap(x0, x1);
+  if(x0 < 0.) x0 = 0.;
+  if(x1 > lc) x1 = lc;
+  if(!(x1 - x0 > min_length))
+    return;
+  c.b0 = x0;
+  c.b1 = x1;
+  if(!trim_by_vertices(c, lc, dX, dY))
+    return;
+  if(!(c.b1 - c.b0 > min_length))
+    return;
+  out.push_back(c);
+}
+
+// Propagates the windows `ws` (already trimmed by the vertices and pruned pairwise) of a list on
+// h across face(h): Rule 1 ("one angle, two sides") then the children on A-C and C-B.
+// dA, dB, dC are the current distances of the triangle's vertices (dC is lowered by the list).
+// The children are appended to out_ac (frame of A -> C) and out_cb (frame of C -> B); when
+// `want_ac` / `want_cb` is false (border edge) the corresponding children are not computed.
+inline Propagation_result
+propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
+               double dA, double dB, double dC, double min_ratio,
+               bool want_ac, bool want_cb,
+               std::vector<Window>& out_ac, std::vector<Window>& out_cb,
+               std::vector<double>& scratch_xc)
+{
+  Propagation_result res;
+  const double L = g.length, cx = g.cx, cy = g.cy;
+  const std::size_t n = ws.size();
+  scratch_xc.resize(n);
+
+  // Rule 1: the window giving the shortest distance to C, and its separating point sp_s.
+  double best = std::numeric_limits<double>::infinity();
+  double sp_s = 0.;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const Window& w = ws[i];
+    const double den = cy - w.sy;
+    const double xc = den > 0. ? w.sx + (cx - w.sx) * (-w.sy / den) : cx;
+    scratch_xc[i] = xc;
+    const double sp = (std::min)((std::max)(xc, w.b0), w.b1);
+    const double d1x = sp - w.sx, d2x = cx - sp;
+    const double dist = w.sigma + std::sqrt(d1x * d1x + w.sy * w.sy) + std::sqrt(d2x * d2x + cy * cy);
+    if(dist < best)
+    {
+      best = dist;
+      sp_s = sp;
+    }
+  }
+  res.distance_to_C = best;
+  res.propagated = n;
+  if(best < dC)
+    dC = best;
+
+  const double lac = g.l_prev, lcb = g.l_next;
+  // frames of the child edges, expressed in the frame of h
+  const double uax = lac > 0. ? cx / lac : 0., uay = lac > 0. ? cy / lac : 0.;
+  const double ubx = lcb > 0. ? (L - cx) / lcb : 0., uby = lcb > 0. ? -cy / lcb : 0.;
+  const double min_ac = min_ratio * lac, min_cb = min_ratio * lcb;
+
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const Window& w = ws[i];
+    const double xc = scratch_xc[i];
+    if(want_ac && lac > 0.)
+    {
+      const double p1 = (std::min)(w.b1, (std::min)(xc, sp_s));
+      if(p1 > w.b0)
+        emit_child(w, w.b0, p1, 0., 0., uax, uay, lac, lac, min_ac, dA, dC, out_ac);
+    }
+    if(want_cb && lcb > 0.)
+    {
+      const double p0 = (std::max)(w.b0, (std::max)(xc, sp_s));
+      if(w.b1 > p0)
+        emit_child(w, p0, w.b1, cx, cy, ubx, uby, lcb, 0., min_cb, dC, dB, out_cb);
+    }
+  }
+  return res;
+}
+
+// Filters a list before propagation: vertex trimming (ICH), tiny windows, pairwise pruning.
+inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB, double min_length)
+{
+  std::size_t k = 0;
+  for(std::size_t i = 0; i < ws.size(); ++i)
+  {
+    Window w = ws[i];
+    if(trim_by_vertices(w, L, dA, dB) && w.b1 - w.b0 > min_length)
+      ws[k++] = w;
+  }
+  ws.resize(k);
+  if(k < 2)
+    return;
+  for(std::size_t i = 1; i < ws.size(); ++i)
+    for(std::size_t j = 0; j < i; ++j)
+    {
+      if(!(ws[i].b1 > ws[i].b0))
+        break;
+      if(ws[j].b1 > ws[j].b0)
+        prune_pair(ws[j], ws[i]);
+    }
+  k = 0;
+  for(std::size_t i = 0; i < ws.size(); ++i)
+    if(ws[i].b1 - ws[i].b0 > min_length)
+      ws[k++] = ws[i];
+  ws.resize(k);
+}
+
+} // namespace internal
+} // namespace VTP_geodesics
+} // namespace CGAL
+
+#endif // CGAL_VTP_GEODESICS_INTERNAL_TRIANGLE_PROPAGATION_H
