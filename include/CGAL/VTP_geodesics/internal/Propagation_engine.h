@@ -234,7 +234,7 @@ private:
       m_out_ac.clear();
       m_out_cb.clear();
       const Propagation_result r =
-        propagate_list(g, m_in, d[a], d[b], d[c], m_min_ratio, h_ac != NO_INDEX, h_cb != NO_INDEX,
+        propagate_list(g, m_in, m_min_ratio, h_ac != NO_INDEX, h_cb != NO_INDEX,
                        m_out_ac, m_out_cb, m_xc);
       m_propagated += r.propagated;
       light(c, r.distance_to_C);

@@ -128,8 +128,9 @@ inline void prune_pair(Window& a, Window& b)
   }
   cuts[nc++] = r;
 
-  // sign of fa - fb on each piece, checked at its middle and both ends; 0 for a near-tie or
-  // an inconsistent piece (which is then left alone)
+  // Sign of fa - fb at the break points (0 for a near-tie). All the roots are break points, so
+  // the sign is constant inside each piece: it is the sign at a nonzero end. A piece whose ends
+  // disagree (a root lost to rounding) or are both ties is left alone (sign 0).
   int sign[4];
   int end_sign[5];
   const int np = nc - 1;
@@ -141,13 +142,8 @@ inline void prune_pair(Window& a, Window& b)
   }
   for(int i = 0; i < np; ++i)
   {
-    const double m = 0.5 * (cuts[i] + cuts[i + 1]);
-    const double fa = window_distance(a, m), fb = window_distance(b, m);
-    const double tol = 1e-13 * (std::max)(fa, fb);
-    int sg = (fa > fb + tol) ? 1 : ((fb > fa + tol) ? -1 : 0);
-    if(end_sign[i] == -sg || end_sign[i + 1] == -sg)
-      sg = 0;
-    sign[i] = sg;
+    const int s0 = end_sign[i], s1 = end_sign[i + 1];
+    sign[i] = (s0 == s1 || s1 == 0) ? s0 : (s0 == 0 ? s1 : 0);
   }
 
   // a loses where sign > 0, b loses where sign < 0
@@ -190,8 +186,7 @@ struct Propagation_result
 // for the ray through C) is sent to C.
 inline void emit_child(const Window& w, double p0, double p1,
                        double ox, double oy, double ux, double uy, double lc, double c_pos,
-                       double min_length, double dX, double dY,
-                       std::vector<Window>& out)
+                       double min_length, std::vector<Window>& out)
 {
   const double rx = w.sx - ox, ry = w.sy - oy;
   Window c;
@@ -221,21 +216,18 @@ inline void emit_child(const Window& w, double p0, double p1,
     return;
   c.b0 = x0;
   c.b1 = x1;
-  if(!trim_by_vertices(c, lc, dX, dY))
-    return;
-  if(!(c.b1 - c.b0 > min_length))
-    return;
   out.push_back(c);
 }
 
 // Propagates the windows `ws` (already trimmed by the vertices and pruned pairwise) of a list on
 // h across face(h): Rule 1 ("one angle, two sides") then the children on A-C and C-B.
-// dA, dB, dC are the current distances of the triangle's vertices (dC is lowered by the list).
+// The distance the list offers to C (through the best window) is returned. Children are trimmed
+// by the vertices later, when their own list is propagated (with the distances of that time).
 // The children are appended to out_ac (frame of A -> C) and out_cb (frame of C -> B); when
 // `want_ac` / `want_cb` is false (border edge) the corresponding children are not computed.
 inline Propagation_result
 propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
-               double dA, double dB, double dC, double min_ratio,
+               double min_ratio,
                bool want_ac, bool want_cb,
                std::vector<Window>& out_ac, std::vector<Window>& out_cb,
                std::vector<double>& scratch_xc)
@@ -265,8 +257,6 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
   }
   res.distance_to_C = best;
   res.propagated = n;
-  if(best < dC)
-    dC = best;
 
   const double lac = g.l_prev, lcb = g.l_next;
   // frames of the child edges, expressed in the frame of h
@@ -282,13 +272,13 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
     {
       const double p1 = (std::min)(w.b1, (std::min)(xc, sp_s));
       if(p1 > w.b0)
-        emit_child(w, w.b0, p1, 0., 0., uax, uay, lac, lac, min_ac, dA, dC, out_ac);
+        emit_child(w, w.b0, p1, 0., 0., uax, uay, lac, lac, min_ac, out_ac);
     }
     if(want_cb && lcb > 0.)
     {
       const double p0 = (std::max)(w.b0, (std::max)(xc, sp_s));
       if(w.b1 > p0)
-        emit_child(w, p0, w.b1, cx, cy, ubx, uby, lcb, 0., min_cb, dC, dB, out_cb);
+        emit_child(w, p0, w.b1, cx, cy, ubx, uby, lcb, 0., min_cb, out_cb);
     }
   }
   return res;
