@@ -226,7 +226,7 @@ private:
       const Index a = m.source[h];
       const Index b = m.source[Mesh_arrays::next(h)];
       const Index c = m.source[Mesh_arrays::prev(h)];
-      filter_list(m_in, g.length, d[a], d[b], m_min_ratio * g.length);
+      filter_list(m_in, g.length, d[a], d[b], m_min_ratio * g.length, m_reach);
       if(m_in.empty())
         continue;
       const Index h_cb = m.opposite[Mesh_arrays::next(h)];
@@ -270,7 +270,7 @@ private:
   std::size_t m_fifo_head = 0;
 
   std::vector<Window> m_in, m_out_ac, m_out_cb;
-  std::vector<double> m_xc;
+  std::vector<double> m_xc, m_reach;
 
   std::size_t m_created = 0, m_propagated = 0, m_vertices_processed = 0, m_pseudo_sources = 0;
 };

@@ -285,7 +285,8 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
 }
 
 // Filters a list before propagation: vertex trimming (ICH), tiny windows, pairwise pruning.
-inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB, double min_length)
+inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB, double min_length,
+                        std::vector<double>& reach)
 {
   std::size_t k = 0;
   for(std::size_t i = 0; i < ws.size(); ++i)
@@ -297,14 +298,23 @@ inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB,
   ws.resize(k);
   if(k < 2)
     return;
-  for(std::size_t i = 1; i < ws.size(); ++i)
-    for(std::size_t j = 0; j < i; ++j)
+  // Sorted by start, a window can only overlap earlier windows while the running maximum of
+  // their ends exceeds its start: most lists are nearly disjoint, so few pairs are examined.
+  // (Skipping a pair is always safe: pruning only removes redundant coverage.)
+  std::sort(ws.begin(), ws.end(), [](const Window& x, const Window& y) { return x.b0 < y.b0; });
+  reach.resize(k);
+  reach[0] = ws[0].b1;
+  for(std::size_t i = 1; i < k; ++i)
+  {
+    for(std::size_t j = i; j-- > 0;)
     {
-      if(!(ws[i].b1 > ws[i].b0))
+      if(!(reach[j] > ws[i].b0) || !(ws[i].b1 > ws[i].b0))
         break;
       if(ws[j].b1 > ws[j].b0)
         prune_pair(ws[j], ws[i]);
     }
+    reach[i] = (std::max)(reach[i - 1], ws[i].b1);
+  }
   k = 0;
   for(std::size_t i = 0; i < ws.size(); ++i)
     if(ws[i].b1 - ws[i].b0 > min_length)
