@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Installs everything needed to build, test and benchmark VTP_geodesics on a fresh Debian 12
+# machine: compiler, CMake, CGAL 5.5 (header-only) and its dependencies, GoogleTest, and
+# Python with matplotlib for the benchmark plots. Safe to run again (apt-get install is idempotent).
+set -euo pipefail
+
+PACKAGES=(
+  build-essential
+  cmake
+  libcgal-dev
+  libeigen3-dev
+  libboost-dev
+  libgmp-dev
+  libmpfr-dev
+  libgtest-dev
+  python3
+  python3-matplotlib
+)
+
+if [ "$(id -u)" -eq 0 ]; then
+  SUDO=()
+elif command -v sudo >/dev/null 2>&1; then
+  SUDO=(sudo)
+else
+  echo "setup.sh: run as root, or install sudo" >&2
+  exit 1
+fi
+
+# Skip apt entirely when everything is already installed (e.g. a second run, or an offline CI image).
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
+    missing+=("$p")
+  fi
+done
+
+if [ "${#missing[@]}" -eq 0 ]; then
+  echo "setup.sh: all dependencies are already installed"
+  exit 0
+fi
+
+echo "setup.sh: installing ${missing[*]}"
+"${SUDO[@]}" apt-get update
+"${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${PACKAGES[@]}"
