@@ -84,6 +84,9 @@ struct Propagation_statistics
   std::size_t pseudo_sources = 0;
   /// Number of window resets (approximate variants only).
   std::size_t resets = 0;
+  /// Parallel scheduling only: propagation rounds (arrays of lists), and those run on several threads.
+  std::size_t rounds = 0;
+  std::size_t parallel_rounds = 0;
   /// Vertices with a finite distance, and the largest finite distance.
   std::size_t reached_vertices = 0;
   double max_distance = 0.;

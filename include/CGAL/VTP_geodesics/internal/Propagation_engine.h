@@ -25,27 +25,45 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace CGAL {
 namespace VTP_geodesics {
 namespace internal {
 
-// The propagation engine: the loop of VTP (Qin et al. 2016) over the per-mesh arrays.
+// The propagation engine: one loop, two orthogonal policies.
 //
 // State: a distance upper bound per vertex (always the length of a real surface path), the set of
 // swept faces (the one-rings of the vertices taken so far), and per half-edge the list of windows
-// waiting to cross its face. A vertex taken from the queue (in increasing distance) first emits
-// windows if it is a pseudo-source (saddle or boundary vertex), then sweeps its one-ring: every
-// waiting list whose face is swept is propagated, and so are, in FIFO order, the lists it feeds
-// inside the swept region, until the windows wait on the wavefront (the border of the region).
+// waiting to cross its face. A vertex taken from the schedule first emits windows if it is a
+// pseudo-source (saddle or boundary vertex), then sweeps its one-ring: every waiting list whose
+// face is swept is propagated, and so are the lists it feeds inside the swept region, until the
+// windows wait on the wavefront (the border of the swept region).
 //
-// Exactness does not depend on the order: windows are only cut where another real path is
-// shorter, so the order only decides how many windows are created.
+// Scheduling policy:
+//  - sequential (VTP, Qin et al. 2016): a binary heap of vertices; lists propagated one at a time
+//    in FIFO order;
+//  - parallel (PVTP, Du et al. 2020, Section 4): buckets of width h / tau; each round takes an
+//    adaptive number of vertices, gathers at most 100 T lists, propagates them on T threads into
+//    per-list output slots (delayed writes), then merges the slots in list order (Rule 3),
+//    lowering distances and filling the buckets; the lists fed inside the swept region make the
+//    next array, until it is empty. The output does not depend on thread timing.
+//
+// Reset policy: never (exact), or, when the nearest wavefront vertex passes (R+1) lambda h, delete
+// the waiting windows next to the wavefront vertices closer than (R+1) lambda h + lambda_g h and
+// restart from all wavefront vertices as pseudo-sources (AVTP, Du et al. 2020, Section 5).
+//
+// Exactness (without resets) does not depend on the order: windows are only cut where another
+// real path is shorter; the order only decides how many windows are created.
 class Propagation_engine
 {
 public:
@@ -53,18 +71,39 @@ public:
   void run(const Mesh_arrays& m, Index s, const Propagation_options& options,
            std::vector<double>& dist, Propagation_statistics& st)
   {
+    const bool parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+#ifndef _OPENMP
     static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
-                  "CGAL::Parallel_tag (PVTP) is not implemented yet in VTP_geodesics.");
+                  "Parallel_tag is enabled but OpenMP is unavailable "
+                  "(link CGAL::VTP_geodesics_OpenMP_support, or compile with -fopenmp).");
+#endif
     const auto t0 = std::chrono::steady_clock::now();
     start(m, s, options, dist);
-    run_sequential();
-    finish(st, "vtp", 1);
+    int threads = 1;
+    if(parallel)
+    {
+      threads = options.number_of_threads;
+#ifdef _OPENMP
+      if(threads <= 0)
+        threads = omp_get_max_threads();
+#endif
+      if(threads <= 0)
+        threads = 1;
+      run_parallel(threads);
+    }
+    else
+      run_sequential();
+    const bool approximate = m_reset_step < std::numeric_limits<double>::infinity();
+    finish(st, parallel ? (approximate ? "pavtp" : "pvtp") : (approximate ? "avtp" : "vtp"), threads);
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
 
 private:
   typedef std::pair<double, Index> Entry;
 
+  // ------------------------------------------------------------------------------------------
+  // setup
+  // ------------------------------------------------------------------------------------------
   void start(const Mesh_arrays& m, Index s, const Propagation_options& options, std::vector<double>& dist)
   {
     m_mesh = &m;
@@ -80,7 +119,20 @@ private:
     m_heap.clear();
     m_fifo.clear();
     m_fifo_head = 0;
-    m_created = m_propagated = m_vertices_processed = m_pseudo_sources = 0;
+    m_created = m_propagated = m_vertices_processed = m_pseudo_sources = m_resets = 0;
+    m_rounds = m_parallel_rounds = 0;
+    m_use_buckets = false;
+
+    // reset policy
+    const double h = m.mean_edge_length;
+    m_reset_step = (options.lambda < std::numeric_limits<double>::infinity() && h > 0.)
+                     ? options.lambda * h : std::numeric_limits<double>::infinity();
+    m_reset_guard = options.lambda_g * h;
+    m_next_reset = m_reset_step;
+    if(m_reset_step < std::numeric_limits<double>::infinity())
+      m_forced_pseudo_source.assign(static_cast<std::size_t>(m.nv), 0);
+    else
+      m_forced_pseudo_source.clear();
   }
 
   void finish(Propagation_statistics& st, const char* method, int threads) const
@@ -97,6 +149,9 @@ private:
     st.peak_window_bytes = m_store.peak_bytes();
     st.vertices_processed = m_vertices_processed;
     st.pseudo_sources = m_pseudo_sources;
+    st.resets = m_resets;
+    st.rounds = m_rounds;
+    st.parallel_rounds = m_parallel_rounds;
     for(double d : *m_dist)
       if(d < std::numeric_limits<double>::infinity())
       {
@@ -105,30 +160,35 @@ private:
       }
   }
 
-  void run_sequential()
+  // ------------------------------------------------------------------------------------------
+  // shared steps
+  // ------------------------------------------------------------------------------------------
+
+  // Starts the propagation from the source vertex.
+  void seed()
   {
-    std::vector<double>& d = *m_dist;
-    const Mesh_arrays& m = *m_mesh;
-    d[m_source] = 0.;
+    (*m_dist)[m_source] = 0.;
     m_processed[m_source] = 0.;
     emit_pseudo_source(m_source);
     sweep(m_source);
-    drain();
-    while(!m_heap.empty())
+  }
+
+  // Processes vertex v taken from the schedule at distance dv; returns false for a stale entry.
+  bool take_vertex(Index v, double dv)
+  {
+    if(dv > (*m_dist)[v] || m_processed[v] == dv)
+      return false; // stale entry, or already processed at this distance
+    if(dv > m_next_reset)
     {
-      std::pop_heap(m_heap.begin(), m_heap.end(), std::greater<Entry>());
-      const Entry e = m_heap.back();
-      m_heap.pop_back();
-      const Index v = e.second;
-      if(e.first > d[v] || m_processed[v] == e.first)
-        continue; // stale entry, or already processed at this distance
-      m_processed[v] = e.first;
-      ++m_vertices_processed;
-      if(m.is_pseudo_source[v])
-        emit_pseudo_source(v);
-      sweep(v);
-      drain();
+      reset_windows(dv);
+      m_forced_pseudo_source[v] = 1; // v was the nearest wavefront vertex
     }
+    m_processed[v] = dv;
+    ++m_vertices_processed;
+    if(m_mesh->is_pseudo_source[v] || (!m_forced_pseudo_source.empty() && m_forced_pseudo_source[v]))
+      emit_pseudo_source(v);
+    sweep(v);
+    return true;
   }
 
   void light(Index v, double value)
@@ -137,8 +197,13 @@ private:
     if(value < d[v])
     {
       d[v] = value;
-      m_heap.push_back(Entry(value, v));
-      std::push_heap(m_heap.begin(), m_heap.end(), std::greater<Entry>());
+      if(m_use_buckets)
+        bucket_push(v, value);
+      else
+      {
+        m_heap.push_back(Entry(value, v));
+        std::push_heap(m_heap.begin(), m_heap.end(), std::greater<Entry>());
+      }
     }
   }
 
@@ -209,53 +274,311 @@ private:
     }
   }
 
+  void store_children(Index h, const Window* begin, const Window* end)
+  {
+    if(begin == end)
+      return;
+    for(const Window* w = begin; w != end; ++w)
+      m_store.push(h, *w);
+    m_created += static_cast<std::size_t>(end - begin);
+    if(m_swept[Mesh_arrays::face(h)])
+      enqueue(h);
+  }
+
+  // Thread-independent work on one list: filter it, propagate it across its face.
+  struct Scratch
+  {
+    std::vector<Window> in, out_ac, out_cb;
+    std::vector<double> xc, reach;
+    std::size_t propagated = 0;
+  };
+
+  // Returns the distance offered to the opposite vertex; children are left in s.out_ac / s.out_cb.
+  double propagate_one(Index h, Scratch& s) const
+  {
+    const Mesh_arrays& m = *m_mesh;
+    const std::vector<double>& d = *m_dist;
+    const Halfedge_geometry& g = m.geometry[h];
+    const Index a = m.source[h];
+    const Index b = m.source[Mesh_arrays::next(h)];
+    filter_list(s.in, g.length, d[a], d[b], m_min_ratio * g.length, s.reach);
+    if(s.in.empty())
+      return std::numeric_limits<double>::infinity();
+    const Index h_cb = m.opposite[Mesh_arrays::next(h)];
+    const Index h_ac = m.opposite[Mesh_arrays::prev(h)];
+    const Propagation_result r = propagate_list(g, s.in, m_min_ratio, h_ac != NO_INDEX, h_cb != NO_INDEX,
+                                                s.out_ac, s.out_cb, s.xc);
+    s.propagated += r.propagated;
+    return r.distance_to_C;
+  }
+
+  // ------------------------------------------------------------------------------------------
+  // sequential scheduling (VTP / AVTP)
+  // ------------------------------------------------------------------------------------------
+  void run_sequential()
+  {
+    m_use_buckets = false;
+    seed();
+    drain();
+    while(!m_heap.empty())
+    {
+      std::pop_heap(m_heap.begin(), m_heap.end(), std::greater<Entry>());
+      const Entry e = m_heap.back();
+      m_heap.pop_back();
+      if(take_vertex(e.second, e.first))
+        drain();
+    }
+  }
+
   // Propagates queued lists until every window waits on the wavefront.
   void drain()
   {
     const Mesh_arrays& m = *m_mesh;
-    std::vector<double>& d = *m_dist;
+    Scratch& s = m_scratch_sequential;
     while(m_fifo_head < m_fifo.size())
     {
       const Index h = m_fifo[m_fifo_head++];
       m_queued[h] = 0;
       if(m_store.empty(h))
         continue;
-      m_in.clear();
-      m_store.take(h, m_in);
-      const Halfedge_geometry& g = m.geometry[h];
-      const Index a = m.source[h];
-      const Index b = m.source[Mesh_arrays::next(h)];
-      const Index c = m.source[Mesh_arrays::prev(h)];
-      filter_list(m_in, g.length, d[a], d[b], m_min_ratio * g.length, m_reach);
-      if(m_in.empty())
-        continue;
-      const Index h_cb = m.opposite[Mesh_arrays::next(h)];
-      const Index h_ac = m.opposite[Mesh_arrays::prev(h)];
-      m_out_ac.clear();
-      m_out_cb.clear();
-      const Propagation_result r =
-        propagate_list(g, m_in, m_min_ratio, h_ac != NO_INDEX, h_cb != NO_INDEX,
-                       m_out_ac, m_out_cb, m_xc);
-      m_propagated += r.propagated;
-      light(c, r.distance_to_C);
-      store_children(h_ac, m_out_ac);
-      store_children(h_cb, m_out_cb);
+      s.in.clear();
+      m_store.take(h, s.in);
+      s.out_ac.clear();
+      s.out_cb.clear();
+      const double dc = propagate_one(h, s);
+      light(m.source[Mesh_arrays::prev(h)], dc);
+      store_children(m.opposite[Mesh_arrays::prev(h)], s.out_ac.data(), s.out_ac.data() + s.out_ac.size());
+      store_children(m.opposite[Mesh_arrays::next(h)], s.out_cb.data(), s.out_cb.data() + s.out_cb.size());
     }
+    m_propagated += s.propagated;
+    s.propagated = 0;
     m_fifo.clear();
     m_fifo_head = 0;
   }
 
-  void store_children(Index h, const std::vector<Window>& ws)
+  // ------------------------------------------------------------------------------------------
+  // parallel scheduling (PVTP / PAVTP)
+  // ------------------------------------------------------------------------------------------
+  void bucket_push(Index v, double value)
   {
-    if(ws.empty())
-      return;
-    for(const Window& w : ws)
-      m_store.push(h, w);
-    m_created += ws.size();
-    if(m_swept[Mesh_arrays::face(h)])
-      enqueue(h);
+    const double b = value * m_inv_bucket_width;
+    const double max_bucket = double(std::size_t(1) << 26);
+    std::size_t i = static_cast<std::size_t>((std::min)(b, max_bucket));
+    if(i < m_bucket_current)
+      i = m_bucket_current;
+    if(i >= m_buckets.size())
+    {
+      m_buckets.resize(i + 1);
+      m_bucket_read.resize(i + 1, 0);
+    }
+    m_buckets[i].push_back(Entry(value, v));
+    ++m_bucket_pending;
+    if(value > m_round_limit)
+      ++m_updated_large;
+    else
+      ++m_updated_small;
   }
 
+  bool bucket_pop(Entry& e)
+  {
+    while(m_bucket_current < m_buckets.size())
+    {
+      std::vector<Entry>& b = m_buckets[m_bucket_current];
+      std::size_t& r = m_bucket_read[m_bucket_current];
+      if(r < b.size())
+      {
+        e = b[r++];
+        --m_bucket_pending;
+        return true;
+      }
+      b.clear();
+      r = 0;
+      ++m_bucket_current;
+    }
+    return false;
+  }
+
+  void run_parallel(int threads)
+  {
+    const Mesh_arrays& m = *m_mesh;
+    m_use_buckets = true;
+    const double h = m.mean_edge_length;
+    m_inv_bucket_width = (h > 0.) ? m.anisotropy / h : 1.;
+    for(std::vector<Entry>& b : m_buckets)
+      b.clear();
+    m_buckets.clear();
+    m_bucket_read.clear();
+    m_bucket_current = 0;
+    m_bucket_pending = 0;
+    m_round_limit = std::numeric_limits<double>::infinity();
+    m_updated_large = m_updated_small = 0;
+    m_scratch.resize(static_cast<std::size_t>(threads));
+    for(Scratch& s : m_scratch)
+      s.propagated = 0;
+
+    const std::size_t max_lists = 100 * static_cast<std::size_t>(threads);
+    long long k_ad = threads;
+
+    seed();
+    propagate_rounds(threads);
+    while(m_bucket_pending > 0)
+    {
+      // K-window-list selection: up to k_ad vertices, and at most 100 T lists
+      m_updated_large = m_updated_small = 0;
+      long long popped = 0;
+      Entry e;
+      double last = 0.;
+      while(popped < k_ad && m_fifo.size() < max_lists && bucket_pop(e))
+      {
+        if(take_vertex(e.second, e.first))
+        {
+          ++popped;
+          last = e.first;
+        }
+      }
+      // distances are compared with the end of the last bucket popped from (Eq. 5)
+      m_round_limit = (std::floor(last * m_inv_bucket_width) + 1.) / m_inv_bucket_width;
+      propagate_rounds(threads);
+      k_ad = k_ad + static_cast<long long>(m_updated_large) - static_cast<long long>(m_updated_small);
+      k_ad = (std::max)(k_ad, static_cast<long long>(threads));
+      k_ad = (std::min)(k_ad, static_cast<long long>(m.nv) + 1);
+    }
+    for(Scratch& s : m_scratch)
+    {
+      m_propagated += s.propagated;
+      s.propagated = 0;
+    }
+  }
+
+  struct Slot
+  {
+    int thread;
+    std::size_t begin;   // in the thread's output buffer
+    std::uint32_t n_ac, n_cb;
+    double distance_to_C;
+  };
+
+  // Propagates the queued lists in parallel, merges, and repeats while lists are fed inside the
+  // swept region (the dual arrays A_from / A_to).
+  void propagate_rounds(int threads)
+  {
+    const Mesh_arrays& m = *m_mesh;
+    while(!m_fifo.empty())
+    {
+      m_from.swap(m_fifo);
+      m_fifo.clear();
+      for(Index h : m_from)
+        m_queued[h] = 0;
+      const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_from.size());
+      m_slots.resize(m_from.size());
+      for(Scratch& s : m_scratch)
+        s.out_ac.clear();
+
+      // parallel propagation: reads the window storage and the distances, writes only to the
+      // thread's own scratch and to the list's own slot
+      // small arrays are not worth waking the threads: same work, same result, one thread
+      const int team = (n >= 4 * static_cast<std::ptrdiff_t>(threads)) ? threads : 1;
+      ++m_rounds;
+      if(team > 1)
+        ++m_parallel_rounds;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 2) num_threads(team) if(team > 1)
+#endif
+      for(std::ptrdiff_t i = 0; i < n; ++i)
+      {
+        int t = 0;
+#ifdef _OPENMP
+        t = omp_get_thread_num();
+#endif
+        Scratch& s = m_scratch[static_cast<std::size_t>(t)];
+        const Index h = m_from[static_cast<std::size_t>(i)];
+        s.in.clear();
+        m_store.copy(h, s.in);
+        s.out_cb.clear();
+        const std::size_t begin = s.out_ac.size();
+        Slot& slot = m_slots[static_cast<std::size_t>(i)];
+        slot.thread = t;
+        slot.begin = begin;
+        // children on A-C are appended to out_ac directly, those on C-B after them
+        const std::size_t before = s.out_ac.size();
+        slot.distance_to_C = propagate_one(h, s);
+        slot.n_ac = static_cast<std::uint32_t>(s.out_ac.size() - before);
+        slot.n_cb = static_cast<std::uint32_t>(s.out_cb.size());
+        s.out_ac.insert(s.out_ac.end(), s.out_cb.begin(), s.out_cb.end());
+      }
+      (void)team;
+
+      // delayed writes, in list order (deterministic): free the propagated lists, then merge
+      for(Index h : m_from)
+        m_store.clear(h);
+      for(std::size_t i = 0; i < m_from.size(); ++i)
+      {
+        const Index h = m_from[i];
+        const Slot& slot = m_slots[i];
+        light(m.source[Mesh_arrays::prev(h)], slot.distance_to_C);
+        const Window* w = m_scratch[static_cast<std::size_t>(slot.thread)].out_ac.data() + slot.begin;
+        store_children(m.opposite[Mesh_arrays::prev(h)], w, w + slot.n_ac);
+        store_children(m.opposite[Mesh_arrays::next(h)], w + slot.n_ac, w + slot.n_ac + slot.n_cb);
+      }
+      m_from.clear();
+    }
+  }
+
+  // ------------------------------------------------------------------------------------------
+  // reset policy (AVTP / PAVTP)
+  // ------------------------------------------------------------------------------------------
+
+  // Called when the vertex taken next is beyond the current reset radius: deletes the waiting
+  // windows near the wavefront (but those of lists whose both ends are beyond the guard band) and
+  // makes every wavefront vertex a pseudo-source. Every distance stays the length of a real path.
+  void reset_windows(double dv)
+  {
+    const Mesh_arrays& m = *m_mesh;
+    const std::vector<double>& d = *m_dist;
+    while(m_next_reset < dv)
+      m_next_reset += m_reset_step;
+    const double keep_beyond = (m_next_reset - m_reset_step) + m_reset_guard;
+    ++m_resets;
+    // wavefront vertices: reached, not processed yet
+    m_wavefront.clear();
+    auto collect = [&](const Entry& e) {
+      const Index v = e.second;
+      if(e.first == d[v] && m_processed[v] != e.first) // one live entry per vertex
+        m_wavefront.push_back(v);
+    };
+    if(m_use_buckets)
+    {
+      for(std::size_t b = m_bucket_current; b < m_buckets.size(); ++b)
+        for(std::size_t i = m_bucket_read[b]; i < m_buckets[b].size(); ++i)
+          collect(m_buckets[b][i]);
+    }
+    else
+      for(const Entry& e : m_heap)
+        collect(e);
+    for(Index v : m_wavefront)
+    {
+      if(d[v] > keep_beyond)
+        continue;
+      for(Index c = m.corner_begin[v]; c < m.corner_begin[v + 1]; ++c)
+      {
+        const Index h = m.corners[c];
+        const Index edges[2] = { h, Mesh_arrays::prev(h) };
+        for(Index e : edges)
+        {
+          const Index a = m.source[e], b = m.target(e);
+          if(d[a] > keep_beyond || d[b] > keep_beyond)
+            continue;
+          m_store.clear(e);
+          if(m.opposite[e] != NO_INDEX)
+            m_store.clear(m.opposite[e]);
+        }
+      }
+    }
+    for(Index v : m_wavefront)
+      m_forced_pseudo_source[v] = 1;
+  }
+
+  // ------------------------------------------------------------------------------------------
   const Mesh_arrays* m_mesh = nullptr;
   std::vector<double>* m_dist = nullptr;
   Index m_source = 0;
@@ -265,14 +588,35 @@ private:
   std::vector<unsigned char> m_swept;
   std::vector<unsigned char> m_queued;
   std::vector<double> m_processed;
-  std::vector<Entry> m_heap;
   std::vector<Index> m_fifo;
   std::size_t m_fifo_head = 0;
 
-  std::vector<Window> m_in, m_out_ac, m_out_cb;
-  std::vector<double> m_xc, m_reach;
+  // sequential scheduling
+  std::vector<Entry> m_heap;
+  Scratch m_scratch_sequential;
 
-  std::size_t m_created = 0, m_propagated = 0, m_vertices_processed = 0, m_pseudo_sources = 0;
+  // parallel scheduling
+  bool m_use_buckets = false;
+  std::vector<std::vector<Entry> > m_buckets;
+  std::vector<std::size_t> m_bucket_read;
+  std::size_t m_bucket_current = 0;
+  std::size_t m_bucket_pending = 0;
+  double m_inv_bucket_width = 1.;
+  double m_round_limit = 0.;
+  std::size_t m_updated_large = 0, m_updated_small = 0;
+  std::vector<Scratch> m_scratch;
+  std::vector<Index> m_from;
+  std::vector<Slot> m_slots;
+
+  // reset policy
+  double m_reset_step = std::numeric_limits<double>::infinity();
+  double m_reset_guard = 0.;
+  double m_next_reset = std::numeric_limits<double>::infinity();
+  std::vector<unsigned char> m_forced_pseudo_source;
+  std::vector<Index> m_wavefront;
+
+  std::size_t m_created = 0, m_propagated = 0, m_vertices_processed = 0, m_pseudo_sources = 0, m_resets = 0;
+  std::size_t m_rounds = 0, m_parallel_rounds = 0;
 };
 
 } // namespace internal

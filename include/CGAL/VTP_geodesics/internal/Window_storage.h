@@ -103,6 +103,17 @@ public:
     m_head[h] = m_tail[h] = NO_INDEX;
   }
 
+  // Appends the windows of the list of h to `out`, leaving the list as it is. Only reads the
+  // storage, so that several threads may copy different lists at the same time.
+  void copy(Index h, std::vector<Window>& out) const
+  {
+    for(Index b = m_head[h]; b != NO_INDEX; b = block(b).next)
+    {
+      const Block& blk = block(b);
+      out.insert(out.end(), blk.w, blk.w + blk.count);
+    }
+  }
+
   // Deletes the windows of the list of h.
   void clear(Index h)
   {
@@ -154,6 +165,7 @@ private:
 
   static const std::size_t SLAB = 512;
   Block& block(Index b) { return m_slabs[static_cast<std::size_t>(b) / SLAB][static_cast<std::size_t>(b) % SLAB]; }
+  const Block& block(Index b) const { return m_slabs[static_cast<std::size_t>(b) / SLAB][static_cast<std::size_t>(b) % SLAB]; }
 
   std::vector<std::unique_ptr<Block[]> > m_slabs;
   std::size_t m_number_of_blocks = 0;
