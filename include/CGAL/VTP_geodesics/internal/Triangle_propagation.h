@@ -76,6 +76,19 @@ inline bool trim_by_vertices(Window& w, double L, double dX, double dY)
   return w.b1 > w.b0;
 }
 
+// Window w is dominated on [l, r], its overlap with another window: cut that part off when it is
+// at an end of w (marking w dead, b1 < b0, when it is all of w).
+inline void lose_overlap(Window& w, double l, double r)
+{
+  const bool starts = (w.b0 == l), ends = (w.b1 == r);
+  if(starts && ends)
+    w.b1 = w.b0 - 1.;
+  else if(starts)
+    w.b0 = r;
+  else if(ends)
+    w.b1 = l;
+}
+
 // Pairwise pruning of two windows of the same list (Rule 2), by pointwise comparison on their
 // overlap: the part of a window where the other one is strictly shorter carries no shortest
 // path and is cut off, when it is at an end of the window (a window is never split in two).
@@ -86,6 +99,9 @@ inline void prune_pair(Window& a, Window& b)
   const double r = (std::min)(a.b1, b.b1);
   if(!(r > l))
     return;
+
+  const double fal = window_distance(a, l), far = window_distance(a, r);
+  const double fbl = window_distance(b, l), fbr = window_distance(b, r);
 
   // roots of fa(x) = fb(x): sqrt(qa) = beta + sqrt(qb), beta = sigma_b - sigma_a
   double cuts[5];
@@ -136,7 +152,8 @@ inline void prune_pair(Window& a, Window& b)
   const int np = nc - 1;
   for(int i = 0; i < nc; ++i)
   {
-    const double fa = window_distance(a, cuts[i]), fb = window_distance(b, cuts[i]);
+    const double fa = (i == 0) ? fal : (i == nc - 1 ? far : window_distance(a, cuts[i]));
+    const double fb = (i == 0) ? fbl : (i == nc - 1 ? fbr : window_distance(b, cuts[i]));
     const double tol = 1e-13 * (std::max)(fa, fb);
     end_sign[i] = (fa > fb + tol) ? 1 : ((fb > fa + tol) ? -1 : 0);
   }
@@ -159,10 +176,7 @@ inline void prune_pair(Window& a, Window& b)
     while(last > 0 && sign[last - 1] == lose) --last;        // losing pieces from the right
     if(first == np)
     {
-      // loses on the whole overlap
-      if(starts && ends) { w.b1 = w.b0 - 1.; continue; }
-      if(starts) { w.b0 = r; continue; }
-      if(ends) { w.b1 = l; continue; }
+      lose_overlap(w, l, r);
       continue;
     }
     if(starts && first > 0)

@@ -1,0 +1,775 @@
+// vtp_benchmark: time, peak memory and accuracy of VTP against CGAL's exact and approximate
+// geodesic distance methods.
+//
+//   vtp_benchmark [--subdivide N] [--sources K] [--methods vtp,cgal,heat,heat_idt] [--csv FILE]
+//                 [--repeat R] MESH...
+//
+// Every (mesh, source, method) run happens in a forked child process, so that the peak resident
+// memory of each method (ru_maxrss of the child, from wait4) is measured on its own; the child
+// sends its timings and its distances back through a pipe. Errors are measured against VTP.
+// See readme.txt.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/assertions_behaviour.h>
+
+#include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
+#include <CGAL/VTP_geodesics/options_and_statistics.h>
+#include <CGAL/VTP_geodesics/internal/tools/midpoint_subdivision.h>
+#include <CGAL/VTP_geodesics/internal/tools/shortest_path_reference.h>
+
+#ifdef CGAL_EIGEN3_ENABLED
+#define VTP_BENCHMARK_WITH_HEAT_METHOD 1
+#include <CGAL/Heat_method_3/Surface_mesh_geodesic_distances_3.h>
+#endif
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <sys/resource.h> // getrusage, struct rusage
+#include <sys/types.h>
+#include <sys/wait.h>     // wait4
+#include <unistd.h>       // fork, pipe, read, write, _exit, sysconf
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+typedef Mesh::Vertex_index Vertex_index;
+
+namespace {
+
+const double inf = std::numeric_limits<double>::infinity();
+const double nan_value = std::numeric_limits<double>::quiet_NaN();
+
+struct Usage_error : std::runtime_error
+{
+  explicit Usage_error(const std::string& what) : std::runtime_error(what) {}
+};
+
+// ================================================================================================
+// Methods. To add one (e.g. "pvtp:T"), add an enumerator, a parser in `method_parsers`, and a case
+// in `run_in_child()`.
+// ================================================================================================
+enum class Method_kind { VTP, PVTP, AVTP, PAVTP, CGAL_SMSP, HEAT_DIRECT, HEAT_IDT };
+
+struct Method
+{
+  std::string label;        // as printed and written in the CSV, e.g. "vtp", "pvtp:4"
+  Method_kind kind = Method_kind::VTP;
+  int threads = 1;
+  double lambda = inf;      // approximate variants
+};
+
+int parse_int_field(const std::string& method, const std::string& s, int min_value)
+{
+  char* end = nullptr;
+  errno = 0;
+  const long v = std::strtol(s.c_str(), &end, 10);
+  if(s.empty() || *end != '\0' || errno == ERANGE || v < min_value || v > 4096)
+    throw Usage_error("invalid parameter '" + s + "' in method '" + method + "'");
+  return static_cast<int>(v);
+}
+
+double parse_positive_field(const std::string& method, const std::string& s)
+{
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if(s.empty() || *end != '\0' || !(v > 0.))
+    throw Usage_error("invalid parameter '" + s + "' in method '" + method + "'");
+  return v;
+}
+
+struct Method_parser
+{
+  const char* name;
+  const char* syntax;
+  bool available;
+  // fields[0] is the name; the parser reads the parameters and fills `m`.
+  void (*parse)(const std::vector<std::string>& fields, Method& m);
+};
+
+void expect_fields(const std::vector<std::string>& fields, std::size_t n, const char* syntax)
+{
+  if(fields.size() != n)
+    throw Usage_error("invalid method '" + fields[0] + "...' (expected " + syntax + ")");
+}
+
+const Method_parser method_parsers[] = {
+  { "vtp", "vtp", true,
+    [](const std::vector<std::string>& f, Method& m) { expect_fields(f, 1, "vtp"); m.kind = Method_kind::VTP; } },
+  { "pvtp", "pvtp:T", false,
+    [](const std::vector<std::string>& f, Method& m) {
+      expect_fields(f, 2, "pvtp:T");
+      m.kind = Method_kind::PVTP;
+      m.threads = parse_int_field(m.label, f[1], 1);
+    } },
+  { "avtp", "avtp:lambda", false,
+    [](const std::vector<std::string>& f, Method& m) {
+      expect_fields(f, 2, "avtp:lambda");
+      m.kind = Method_kind::AVTP;
+      m.lambda = parse_positive_field(m.label, f[1]);
+    } },
+  { "pavtp", "pavtp:T:lambda", false,
+    [](const std::vector<std::string>& f, Method& m) {
+      expect_fields(f, 3, "pavtp:T:lambda");
+      m.kind = Method_kind::PAVTP;
+      m.threads = parse_int_field(m.label, f[1], 1);
+      m.lambda = parse_positive_field(m.label, f[2]);
+    } },
+  { "cgal", "cgal", true,
+    [](const std::vector<std::string>& f, Method& m) { expect_fields(f, 1, "cgal"); m.kind = Method_kind::CGAL_SMSP; } },
+#ifdef VTP_BENCHMARK_WITH_HEAT_METHOD
+  { "heat", "heat", true,
+#else
+  { "heat", "heat", false,
+#endif
+    [](const std::vector<std::string>& f, Method& m) { expect_fields(f, 1, "heat"); m.kind = Method_kind::HEAT_DIRECT; } },
+#ifdef VTP_BENCHMARK_WITH_HEAT_METHOD
+  { "heat_idt", "heat_idt", true,
+#else
+  { "heat_idt", "heat_idt", false,
+#endif
+    [](const std::vector<std::string>& f, Method& m) { expect_fields(f, 1, "heat_idt"); m.kind = Method_kind::HEAT_IDT; } },
+};
+
+std::vector<std::string> split(const std::string& s, char separator)
+{
+  std::vector<std::string> parts;
+  std::string::size_type begin = 0;
+  for(;;)
+  {
+    const std::string::size_type end = s.find(separator, begin);
+    parts.push_back(s.substr(begin, end == std::string::npos ? std::string::npos : end - begin));
+    if(end == std::string::npos)
+      return parts;
+    begin = end + 1;
+  }
+}
+
+Method parse_method(const std::string& spec)
+{
+  const std::vector<std::string> fields = split(spec, ':');
+  for(const Method_parser& p : method_parsers)
+  {
+    if(fields[0] != p.name)
+      continue;
+    Method m;
+    m.label = spec;
+    p.parse(fields, m);
+    if(!p.available)
+    {
+#ifndef VTP_BENCHMARK_WITH_HEAT_METHOD
+      if(m.kind == Method_kind::HEAT_DIRECT || m.kind == Method_kind::HEAT_IDT)
+        throw Usage_error("method " + spec + " is not available (vtp_benchmark was built without Eigen)");
+#endif
+      throw Usage_error("method " + std::string(p.name) + " is not available yet");
+    }
+    return m;
+  }
+  std::string known;
+  for(const Method_parser& p : method_parsers)
+    known += (known.empty() ? "" : ", ") + std::string(p.syntax);
+  throw Usage_error("unknown method '" + spec + "' (known: " + known + ")");
+}
+
+// ================================================================================================
+// Command line
+// ================================================================================================
+struct Arguments
+{
+  int subdivide = 0;
+  std::size_t sources = 1;
+  std::vector<Method> methods;
+  std::string csv;
+  int repeat = 1;
+  std::vector<std::string> meshes;
+  bool help = false;
+};
+
+void print_usage(std::ostream& os)
+{
+  os << "usage: vtp_benchmark [options] MESH...\n"
+        "\n"
+        "  --subdivide N    midpoint-subdivide each mesh N times first (default 0)\n"
+        "  --sources K      number of source vertices per mesh: vertex 0 and evenly spaced ids (default 1)\n"
+        "  --methods LIST   comma-separated methods (default vtp,cgal):\n"
+        "                     vtp       exact VTP (this package)\n"
+        "                     cgal      CGAL::Surface_mesh_shortest_path (exact)\n"
+        "                     heat      CGAL::Heat_method_3, Direct (approximate, needs Eigen)\n"
+        "                     heat_idt  CGAL::Heat_method_3, Intrinsic_Delaunay (approximate, needs Eigen)\n"
+        "                     pvtp:T, avtp:lambda, pavtp:T:lambda   (not available yet)\n"
+        "  --csv FILE       also write the results as CSV\n"
+        "  --repeat R       run each method R times per source and keep the fastest (default 1)\n"
+        "  --help           print this help\n"
+        "\n"
+        "Each method runs in its own child process: peak_rss_mb is the peak resident memory of that\n"
+        "process (mesh included). Errors are measured against VTP, which is always run.\n";
+}
+
+std::size_t parse_count(const std::string& option, const std::string& s, std::size_t min_value, std::size_t max_value)
+{
+  if(s.empty() || s.find_first_not_of("0123456789") != std::string::npos)
+    throw Usage_error("invalid value '" + s + "' for " + option + " (expected an integer)");
+  errno = 0;
+  const unsigned long long v = std::strtoull(s.c_str(), nullptr, 10);
+  if(errno == ERANGE || v < min_value || v > max_value)
+    throw Usage_error("value '" + s + "' for " + option + " is out of range [" + std::to_string(min_value) + ", "
+                      + std::to_string(max_value) + "]");
+  return static_cast<std::size_t>(v);
+}
+
+Arguments parse_arguments(int argc, char** argv)
+{
+  Arguments a;
+  std::string methods = "vtp,cgal";
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if(i + 1 >= argc)
+        throw Usage_error("missing value for " + arg);
+      return argv[++i];
+    };
+    if(arg == "--help" || arg == "-h") a.help = true;
+    else if(arg == "--subdivide") a.subdivide = static_cast<int>(parse_count(arg, value(), 0, 6));
+    else if(arg == "--sources") a.sources = parse_count(arg, value(), 1, 1000000);
+    else if(arg == "--methods") methods = value();
+    else if(arg == "--csv")
+    {
+      a.csv = value();
+      if(a.csv.empty())
+        throw Usage_error("empty file name for --csv");
+    }
+    else if(arg == "--repeat") a.repeat = static_cast<int>(parse_count(arg, value(), 1, 1000));
+    else if(arg.size() > 1 && arg[0] == '-')
+      throw Usage_error("unknown option '" + arg + "' (see --help)");
+    else
+      a.meshes.push_back(arg);
+  }
+  if(a.help)
+    return a;
+  if(a.meshes.empty())
+    throw Usage_error("no mesh given (see --help)");
+  for(const std::string& spec : split(methods, ','))
+  {
+    if(spec.empty())
+      throw Usage_error("empty method name in --methods '" + methods + "'");
+    Method m = parse_method(spec);
+    for(const Method& other : a.methods)
+      if(other.label == m.label)
+        throw Usage_error("method '" + spec + "' given twice");
+    a.methods.push_back(m);
+  }
+  return a;
+}
+
+// ================================================================================================
+// Child side: run one method on one source, R times.
+// ================================================================================================
+struct Child_header
+{
+  double seconds = nan_value;                // per-source work, fastest of the repeats
+  double preprocessing_seconds = nan_value;  // per-mesh work (solver construction, factorization)
+  double rss_at_start_kb = 0.;
+  std::uint64_t windows_created = 0, windows_propagated = 0, peak_window_bytes = 0, peak_live_windows = 0;
+  std::int32_t threads = 1;
+  std::int32_t has_windows = 0;
+  std::uint64_t number_of_distances = 0;
+  std::uint64_t error_length = 0;
+};
+
+double now_seconds()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+double current_rss_kb()
+{
+  std::ifstream statm("/proc/self/statm");
+  unsigned long size = 0, resident = 0;
+  if(!(statm >> size >> resident))
+    return 0.;
+  return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1024.;
+}
+
+void run_vtp(const Mesh& mesh, Vertex_index source, const Method& method, int repeat,
+             Child_header& h, std::vector<double>& d)
+{
+  typedef CGAL::VTP_geodesics::Geodesic_distance_solver<Mesh> Solver;
+  Solver solver(mesh);
+  h.preprocessing_seconds = solver.preprocessing_seconds();
+  CGAL::VTP_geodesics::Propagation_options options;
+  options.lambda = method.lambda;
+  options.number_of_threads = method.threads;
+  for(int r = 0; r < repeat; ++r)
+  {
+    CGAL::VTP_geodesics::Propagation_statistics s;
+    switch(method.kind)
+    {
+      case Method_kind::VTP:
+      case Method_kind::AVTP:
+        s = solver.compute_dense<CGAL::Sequential_tag>(source, options);
+        break;
+      default:
+        // PVTP / PAVTP: s = solver.compute_dense<CGAL::Parallel_tag>(source, options);
+        throw std::runtime_error("method " + method.label + " is not available yet");
+    }
+    if(r == 0 || s.seconds < h.seconds)
+      h.seconds = s.seconds;
+    h.windows_created = s.windows_created;
+    h.windows_propagated = s.windows_propagated;
+    h.peak_window_bytes = (std::max)(h.peak_window_bytes, static_cast<std::uint64_t>(s.peak_window_bytes));
+    h.peak_live_windows = (std::max)(h.peak_live_windows, static_cast<std::uint64_t>(s.peak_live_windows));
+    h.threads = s.threads;
+  }
+  h.has_windows = 1;
+  d = solver.distances();
+}
+
+void run_cgal(const Mesh& mesh, Vertex_index source, int repeat, Child_header& h, std::vector<double>& d)
+{
+  // Sequence tree from the source, and a query for every vertex of its component.
+  h.preprocessing_seconds = 0.;
+  for(int r = 0; r < repeat; ++r)
+  {
+    const double t0 = now_seconds();
+    d = CGAL::VTP_geodesics::internal::shortest_path_reference_distances(mesh, source);
+    const double t = now_seconds() - t0;
+    if(r == 0 || t < h.seconds)
+      h.seconds = t;
+  }
+}
+
+#ifdef VTP_BENCHMARK_WITH_HEAT_METHOD
+template <class Mode>
+void run_heat(Mesh& mesh, Vertex_index source, int repeat, Child_header& h, std::vector<double>& d)
+{
+  typedef CGAL::Heat_method_3::Surface_mesh_geodesic_distances_3<Mesh, Mode> Heat_method;
+  Mesh::Property_map<Vertex_index, double> distance =
+    mesh.add_property_map<Vertex_index, double>("v:benchmark_heat_distance", 0.).first;
+  for(int r = 0; r < repeat; ++r)
+  {
+    const double t0 = now_seconds();
+    Heat_method heat(mesh);           // precomputation: matrices and factorizations
+    const double t1 = now_seconds();
+    heat.add_source(source);
+    heat.estimate_geodesic_distances(distance);
+    const double t2 = now_seconds();
+    if(r == 0 || (t2 - t1) < h.seconds)
+      h.seconds = t2 - t1;
+    if(r == 0 || (t1 - t0) < h.preprocessing_seconds)
+      h.preprocessing_seconds = t1 - t0;
+  }
+  d.resize(mesh.number_of_vertices());
+  for(Vertex_index v : mesh.vertices())
+    d[static_cast<std::size_t>(v)] = distance[v];
+}
+#endif
+
+void write_all(int fd, const void* data, std::size_t size)
+{
+  const char* p = static_cast<const char*>(data);
+  while(size > 0)
+  {
+    const ssize_t w = ::write(fd, p, size);
+    if(w < 0)
+    {
+      if(errno == EINTR)
+        continue;
+      _exit(3);
+    }
+    p += w;
+    size -= static_cast<std::size_t>(w);
+  }
+}
+
+[[noreturn]] void run_in_child(int fd, Mesh& mesh, Vertex_index source, const Method& method, int repeat)
+{
+  Child_header h;
+  std::vector<double> d;
+  std::string error;
+  h.rss_at_start_kb = current_rss_kb();
+  try
+  {
+    switch(method.kind)
+    {
+      case Method_kind::VTP:
+      case Method_kind::PVTP:
+      case Method_kind::AVTP:
+      case Method_kind::PAVTP:
+        run_vtp(mesh, source, method, repeat, h, d);
+        break;
+      case Method_kind::CGAL_SMSP:
+        run_cgal(mesh, source, repeat, h, d);
+        break;
+#ifdef VTP_BENCHMARK_WITH_HEAT_METHOD
+      case Method_kind::HEAT_DIRECT:
+        run_heat<CGAL::Heat_method_3::Direct>(mesh, source, repeat, h, d);
+        break;
+      case Method_kind::HEAT_IDT:
+        run_heat<CGAL::Heat_method_3::Intrinsic_Delaunay>(mesh, source, repeat, h, d);
+        break;
+#endif
+      default:
+        throw std::runtime_error("method " + method.label + " is not available");
+    }
+  }
+  catch(const std::exception& e) { error = e.what(); }
+  catch(...) { error = "unknown exception"; }
+  if(error.empty() && d.size() != mesh.number_of_vertices())
+    error = "wrong number of distances";
+  if(!error.empty())
+    d.clear();
+  std::replace(error.begin(), error.end(), '\n', ' ');
+
+  h.number_of_distances = d.size();
+  h.error_length = error.size();
+  write_all(fd, &h, sizeof(h));
+  if(!d.empty())
+    write_all(fd, d.data(), d.size() * sizeof(double));
+  if(!error.empty())
+    write_all(fd, error.data(), error.size());
+  ::close(fd);
+  _exit(0);
+}
+
+// ================================================================================================
+// Parent side
+// ================================================================================================
+struct Run_result
+{
+  Method method;
+  bool ok = false;
+  std::string status = "ok";
+  Child_header header;
+  double peak_rss_mb = nan_value;
+  std::vector<double> distances;
+  // Filled after all methods of the source ran.
+  double max_abs_err = nan_value, max_rel_err = nan_value, mean_rel_err = nan_value, speedup_vs_cgal = nan_value;
+  std::size_t mismatched_infinities = 0;
+};
+
+double total_seconds(const Run_result& r) { return r.header.seconds + r.header.preprocessing_seconds; }
+
+Run_result run_forked(Mesh& mesh, Vertex_index source, const Method& method, int repeat)
+{
+  Run_result result;
+  result.method = method;
+  int fds[2];
+  if(::pipe(fds) != 0)
+    throw std::runtime_error(std::string("pipe() failed: ") + std::strerror(errno));
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if(pid < 0)
+  {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    throw std::runtime_error(std::string("fork() failed: ") + std::strerror(errno));
+  }
+  if(pid == 0)
+  {
+    ::close(fds[0]);
+    run_in_child(fds[1], mesh, source, method, repeat);
+  }
+  ::close(fds[1]);
+
+  // Read everything before waiting: the child blocks when the pipe is full.
+  std::string message;
+  char buffer[1 << 16];
+  for(;;)
+  {
+    const ssize_t r = ::read(fds[0], buffer, sizeof(buffer));
+    if(r < 0 && errno == EINTR)
+      continue;
+    if(r <= 0)
+      break;
+    message.append(buffer, static_cast<std::size_t>(r));
+  }
+  ::close(fds[0]);
+
+  int status = 0;
+  struct rusage usage;
+  std::memset(&usage, 0, sizeof(usage));
+  while(::wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {}
+  result.peak_rss_mb = static_cast<double>(usage.ru_maxrss) / 1024.; // ru_maxrss is in KB on Linux
+
+  if(WIFSIGNALED(status))
+  {
+    result.status = "killed by signal " + std::to_string(WTERMSIG(status));
+    return result;
+  }
+  if(!WIFEXITED(status) || WEXITSTATUS(status) != 0 || message.size() < sizeof(Child_header))
+  {
+    result.status = "child failed";
+    return result;
+  }
+  std::memcpy(&result.header, message.data(), sizeof(Child_header));
+  const Child_header& h = result.header;
+  const std::size_t expected = sizeof(Child_header) + h.number_of_distances * sizeof(double) + h.error_length;
+  if(message.size() != expected)
+  {
+    result.status = "truncated child report";
+    return result;
+  }
+  result.distances.resize(h.number_of_distances);
+  if(h.number_of_distances > 0)
+    std::memcpy(result.distances.data(), message.data() + sizeof(Child_header), h.number_of_distances * sizeof(double));
+  if(h.error_length > 0)
+  {
+    result.status = "error: " + message.substr(sizeof(Child_header) + h.number_of_distances * sizeof(double));
+    return result;
+  }
+  result.ok = true;
+  return result;
+}
+
+// CSV and table output ---------------------------------------------------------------------------
+std::string number(double x, int precision = 6)
+{
+  if(std::isnan(x))
+    return std::string();
+  if(std::isinf(x))
+    return x > 0 ? "inf" : "-inf";
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*g", precision, x);
+  return buffer;
+}
+
+std::string csv_field(const std::string& s)
+{
+  if(s.find_first_of(",\"\n") == std::string::npos)
+    return s;
+  std::string r = "\"";
+  for(char c : s)
+  {
+    if(c == '"') r += '"';
+    r += c;
+  }
+  return r + "\"";
+}
+
+const char* const csv_columns =
+  "mesh,vertices,faces,source,method,threads,seconds,preprocessing_seconds,peak_rss_mb,windows_created,"
+  "windows_propagated,peak_window_bytes,max_abs_err_vs_vtp,max_rel_err_vs_vtp,mean_rel_err_vs_vtp,speedup_vs_cgal,"
+  "total_seconds,rss_at_start_mb,status";
+
+struct Mesh_info
+{
+  std::string label;
+  std::size_t vertices = 0, faces = 0;
+};
+
+void write_csv_row(std::ostream& os, const Mesh_info& mesh, std::size_t source, const Run_result& r)
+{
+  const Child_header& h = r.header;
+  const bool w = r.ok && h.has_windows;
+  os << csv_field(mesh.label) << ',' << mesh.vertices << ',' << mesh.faces << ',' << source << ','
+     << csv_field(r.method.label) << ',' << (r.ok ? std::to_string(h.threads) : std::string()) << ','
+     << (r.ok ? number(h.seconds, 9) : "") << ',' << (r.ok ? number(h.preprocessing_seconds, 9) : "") << ','
+     << number(r.peak_rss_mb, 6) << ','
+     << (w ? std::to_string(h.windows_created) : "") << ','
+     << (w ? std::to_string(h.windows_propagated) : "") << ','
+     << (w ? std::to_string(h.peak_window_bytes) : "") << ','
+     << number(r.max_abs_err, 6) << ',' << number(r.max_rel_err, 6) << ',' << number(r.mean_rel_err, 6) << ','
+     << number(r.speedup_vs_cgal, 6) << ','
+     << (r.ok ? number(total_seconds(r), 9) : "") << ','
+     << (r.ok ? number(h.rss_at_start_kb / 1024., 6) : "") << ','
+     << csv_field(r.status) << '\n';
+}
+
+void print_table_header()
+{
+  std::printf("%-22s %9s %9s  %-12s %11s %11s %9s %9s %11s %10s %9s  %s\n", "mesh", "vertices", "source", "method",
+              "seconds", "prep_s", "rss_MB", "+rss_MB", "windows", "max_rel", "speedup", "status");
+}
+
+void print_table_row(const Mesh_info& mesh, std::size_t source, const Run_result& r)
+{
+  const Child_header& h = r.header;
+  const std::string windows = (r.ok && h.has_windows) ? std::to_string(h.windows_created) : "-";
+  const double increase = r.ok ? r.peak_rss_mb - h.rss_at_start_kb / 1024. : nan_value;
+  auto cell = [](double x, int p) { const std::string s = number(x, p); return s.empty() ? std::string("-") : s; };
+  std::printf("%-22s %9zu %9zu  %-12s %11s %11s %9s %9s %11s %10s %9s  %s\n", mesh.label.c_str(), mesh.vertices, source,
+              r.method.label.c_str(), cell(r.ok ? h.seconds : nan_value, 4).c_str(),
+              cell(r.ok ? h.preprocessing_seconds : nan_value, 4).c_str(), cell(r.peak_rss_mb, 4).c_str(),
+              cell(increase, 4).c_str(), windows.c_str(), cell(r.max_rel_err, 3).c_str(),
+              cell(r.speedup_vs_cgal, 3).c_str(), r.status.c_str());
+  std::fflush(stdout);
+}
+
+std::string base_name(const std::string& path)
+{
+  const std::string::size_type slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+void load_mesh(const std::string& file, int subdivide, Mesh& mesh)
+{
+  std::ostringstream diagnostics;
+  std::streambuf* const cerr_buffer = std::cerr.rdbuf(diagnostics.rdbuf());
+  bool ok = false;
+  try { ok = CGAL::IO::read_polygon_mesh(file, mesh); } catch(...) { ok = false; }
+  std::cerr.rdbuf(cerr_buffer);
+  if(!ok)
+    throw Usage_error("cannot read mesh '" + file + "'");
+  if(mesh.is_empty() || mesh.number_of_faces() == 0)
+    throw Usage_error("the mesh '" + file + "' is empty");
+  if(!CGAL::is_triangle_mesh(mesh))
+    throw Usage_error("the mesh '" + file + "' is not a triangle mesh");
+  CGAL::VTP_geodesics::internal::midpoint_subdivide(mesh, subdivide);
+}
+
+int run(int argc, char** argv)
+{
+  const Arguments args = parse_arguments(argc, argv);
+  if(args.help)
+  {
+    print_usage(std::cout);
+    return 0;
+  }
+  for(const std::string& file : args.meshes)
+    if(!std::ifstream(file))
+      throw Usage_error("cannot open '" + file + "'");
+
+  std::ofstream csv;
+  if(!args.csv.empty())
+  {
+    csv.open(args.csv);
+    if(!csv)
+      throw Usage_error("cannot write '" + args.csv + "'");
+    csv << csv_columns << '\n';
+  }
+
+  // VTP is the reference: it runs first, even when not asked for (then it is not reported).
+  std::vector<Method> runs;
+  Method reference;
+  reference.label = "vtp";
+  reference.kind = Method_kind::VTP;
+  const bool report_vtp =
+    std::any_of(args.methods.begin(), args.methods.end(), [](const Method& m) { return m.label == "vtp"; });
+  runs.push_back(reference);
+  for(const Method& m : args.methods)
+    if(m.label != "vtp")
+      runs.push_back(m);
+
+  bool header_printed = false;
+  int failures = 0;
+  for(const std::string& file : args.meshes)
+  {
+    Mesh mesh;
+    load_mesh(file, args.subdivide, mesh);
+    Mesh_info info;
+    info.label = base_name(file) + (args.subdivide > 0 ? "/s" + std::to_string(args.subdivide) : std::string());
+    info.vertices = mesh.number_of_vertices();
+    info.faces = mesh.number_of_faces();
+    if(!header_printed)
+    {
+      print_table_header();
+      header_printed = true;
+    }
+
+    const std::size_t k = (std::min)(args.sources, info.vertices);
+    for(std::size_t i = 0; i < k; ++i)
+    {
+      // Vertex 0 and evenly spaced ids.
+      const std::size_t source_id = static_cast<std::size_t>(
+        (static_cast<unsigned long long>(i) * info.vertices) / k);
+      const Vertex_index source(static_cast<Mesh::size_type>(source_id));
+
+      std::vector<Run_result> results;
+      for(const Method& m : runs)
+        results.push_back(run_forked(mesh, source, m, args.repeat));
+
+      const Run_result& vtp = results.front();
+      const Run_result* cgal = nullptr;
+      for(const Run_result& r : results)
+        if(r.method.kind == Method_kind::CGAL_SMSP && r.ok)
+          cgal = &r;
+      for(Run_result& r : results)
+      {
+        if(!r.ok)
+          continue;
+        if(vtp.ok)
+        {
+          const CGAL::VTP_geodesics::internal::Distance_comparison c =
+            CGAL::VTP_geodesics::internal::compare_distances(r.distances, vtp.distances);
+          r.max_abs_err = c.max_abs_diff;
+          r.max_rel_err = c.max_rel_diff;
+          r.mean_rel_err = c.mean_rel_diff;
+          r.mismatched_infinities = c.mismatched_infinities;
+          if(c.mismatched_infinities > 0 && r.status == "ok")
+            r.status = "ok (" + std::to_string(c.mismatched_infinities) + " reachability mismatches)";
+        }
+        if(cgal != nullptr && total_seconds(r) > 0.)
+          r.speedup_vs_cgal = total_seconds(*cgal) / total_seconds(r);
+      }
+      // Report in the order of --methods; the reference run is shown only if "vtp" was asked for
+      // (or if it failed).
+      std::vector<const Run_result*> shown;
+      if(!report_vtp && !vtp.ok)
+        shown.push_back(&vtp);
+      for(const Method& m : args.methods)
+        for(const Run_result& r : results)
+          if(r.method.label == m.label)
+            shown.push_back(&r);
+      for(const Run_result* r : shown)
+      {
+        if(!r->ok)
+          ++failures;
+        print_table_row(info, source_id, *r);
+        if(csv.is_open())
+          write_csv_row(csv, info, source_id, *r);
+      }
+      if(csv.is_open())
+      {
+        csv.flush();
+        if(!csv)
+          throw Usage_error("cannot write '" + args.csv + "'");
+      }
+    }
+  }
+  if(failures > 0)
+  {
+    std::cerr << "vtp_benchmark: " << failures << " run(s) failed (see the status column)" << std::endl;
+    return 1;
+  }
+  return 0;
+}
+
+void silent_cgal_handler(const char*, const char*, const char*, int, const char*) {}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  // CGAL failures become exceptions reported on one line (or in the status column).
+  CGAL::set_error_handler(silent_cgal_handler);
+  CGAL::set_warning_handler(silent_cgal_handler);
+  try
+  {
+    return run(argc, argv);
+  }
+  catch(const std::exception& e)
+  {
+    std::string message = e.what();
+    std::replace(message.begin(), message.end(), '\n', ' ');
+    std::cerr << "vtp_benchmark: error: " << message << std::endl;
+    return 2;
+  }
+}
