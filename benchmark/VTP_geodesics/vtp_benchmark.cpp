@@ -108,22 +108,28 @@ void expect_fields(const std::vector<std::string>& fields, std::size_t n, const 
     throw Usage_error("invalid method '" + fields[0] + "...' (expected " + syntax + ")");
 }
 
+#ifdef _OPENMP
+#define VTP_BENCHMARK_PARALLEL true
+#else
+#define VTP_BENCHMARK_PARALLEL false
+#endif
+
 const Method_parser method_parsers[] = {
   { "vtp", "vtp", true,
     [](const std::vector<std::string>& f, Method& m) { expect_fields(f, 1, "vtp"); m.kind = Method_kind::VTP; } },
-  { "pvtp", "pvtp:T", false,
+  { "pvtp", "pvtp:T", VTP_BENCHMARK_PARALLEL,
     [](const std::vector<std::string>& f, Method& m) {
       expect_fields(f, 2, "pvtp:T");
       m.kind = Method_kind::PVTP;
       m.threads = parse_int_field(m.label, f[1], 1);
     } },
-  { "avtp", "avtp:lambda", false,
+  { "avtp", "avtp:lambda", true,
     [](const std::vector<std::string>& f, Method& m) {
       expect_fields(f, 2, "avtp:lambda");
       m.kind = Method_kind::AVTP;
       m.lambda = parse_positive_field(m.label, f[1]);
     } },
-  { "pavtp", "pavtp:T:lambda", false,
+  { "pavtp", "pavtp:T:lambda", VTP_BENCHMARK_PARALLEL,
     [](const std::vector<std::string>& f, Method& m) {
       expect_fields(f, 3, "pavtp:T:lambda");
       m.kind = Method_kind::PAVTP;
@@ -176,7 +182,7 @@ Method parse_method(const std::string& spec)
       if(m.kind == Method_kind::HEAT_DIRECT || m.kind == Method_kind::HEAT_IDT)
         throw Usage_error("method " + spec + " is not available (vtp_benchmark was built without Eigen)");
 #endif
-      throw Usage_error("method " + std::string(p.name) + " is not available yet");
+      throw Usage_error("method " + std::string(p.name) + " is not available (vtp_benchmark was built without OpenMP)");
     }
     return m;
   }
@@ -211,7 +217,7 @@ void print_usage(std::ostream& os)
         "                     cgal      CGAL::Surface_mesh_shortest_path (exact)\n"
         "                     heat      CGAL::Heat_method_3, Direct (approximate, needs Eigen)\n"
         "                     heat_idt  CGAL::Heat_method_3, Intrinsic_Delaunay (approximate, needs Eigen)\n"
-        "                     pvtp:T, avtp:lambda, pavtp:T:lambda   (not available yet)\n"
+        "                     pvtp:T, avtp:lambda, pavtp:T:lambda\n"
         "  --csv FILE       also write the results as CSV\n"
         "  --repeat R       run each method R times per source and keep the fastest (default 1)\n"
         "  --help           print this help\n"
@@ -325,8 +331,11 @@ void run_vtp(const Mesh& mesh, Vertex_index source, const Method& method, int re
         s = solver.compute_dense<CGAL::Sequential_tag>(source, options);
         break;
       default:
-        // PVTP / PAVTP: s = solver.compute_dense<CGAL::Parallel_tag>(source, options);
-        throw std::runtime_error("method " + method.label + " is not available yet");
+#ifdef _OPENMP
+        s = solver.compute_dense<CGAL::Parallel_tag>(source, options);
+#else
+        throw std::runtime_error("method " + method.label + " needs OpenMP");
+#endif
     }
     if(r == 0 || s.seconds < h.seconds)
       h.seconds = s.seconds;

@@ -1,7 +1,7 @@
 // vtp_geodesics: command-line front end of the VTP_geodesics package.
 //
 //   vtp_geodesics [MESH] [--source V] [--output FILE] [--stats-json FILE|-] [--check-cgal]
-//                 [--method vtp] [--threads T] [--lambda L] [--lambda-g G]
+//                 [--method vtp|pvtp|avtp|pavtp] [--threads T] [--lambda L] [--lambda-g G]
 //
 // Computes the exact geodesic distances from one source vertex to all vertices of a triangle mesh
 // (OFF, OBJ or PLY) by vertex-oriented triangle propagation. Run `vtp_geodesics --help` for details.
@@ -75,10 +75,12 @@ void print_usage(std::ostream& os)
         "  --stats-json FILE|-  write statistics as one JSON object to FILE, or to stdout with \"-\"\n"
         "  --check-cgal         also run CGAL::Surface_mesh_shortest_path from the same source and\n"
         "                       report the largest absolute and relative differences\n"
-        "  --method M           vtp (default); pvtp, avtp and pavtp are not available yet\n"
+        "  --method M           vtp (exact, default), pvtp (exact, parallel), avtp (approximate),\n"
+        "                       pavtp (approximate, parallel)\n"
         "  --threads T          number of threads of the parallel methods (0: OpenMP default);\n"
         "                       ignored by the sequential methods\n"
-        "  --lambda L           window-reset period of avtp / pavtp, in mean edge lengths (> 0)\n"
+        "  --lambda L           window-reset period of avtp / pavtp, in mean edge lengths (> 0,\n"
+        "                       default 8)\n"
         "  --lambda-g G         guard band of avtp / pavtp, in mean edge lengths (>= 0, default 1)\n"
         "  --help               print this help and exit\n"
         "\n"
@@ -98,11 +100,17 @@ struct Method_info
   bool available;
 };
 
+#ifdef _OPENMP
+const bool parallel_available = true;
+#else
+const bool parallel_available = false; // built without OpenMP
+#endif
+
 const Method_info methods[] = {
   { "vtp",   false, false, true  },
-  { "pvtp",  true,  false, false },
-  { "avtp",  false, true,  false },
-  { "pavtp", true,  true,  false },
+  { "pvtp",  true,  false, parallel_available },
+  { "avtp",  false, true,  true  },
+  { "pavtp", true,  true,  parallel_available },
 };
 
 const Method_info& find_method(const std::string& name)
@@ -118,12 +126,13 @@ const CGAL::VTP_geodesics::Propagation_statistics&
 run_method(const Method_info& method, Solver& solver, Vertex_index source,
            const CGAL::VTP_geodesics::Propagation_options& options)
 {
-  const std::string name = method.name;
-  if(name == "vtp")
+  if(!method.parallel)
     return solver.compute_dense<CGAL::Sequential_tag>(source, options);
-  // pvtp / pavtp: solver.compute_dense<CGAL::Parallel_tag>(source, options)
-  // avtp:         solver.compute_dense<CGAL::Sequential_tag>(source, options) with a finite lambda
-  throw Usage_error("method " + name + " is not available yet");
+#ifdef _OPENMP
+  return solver.compute_dense<CGAL::Parallel_tag>(source, options);
+#else
+  throw Usage_error(std::string("method ") + method.name + " needs OpenMP, and this program was built without it");
+#endif
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -479,7 +488,7 @@ int run(int argc, char** argv)
   }
   const Method_info& method = find_method(args.method);
   if(!method.available)
-    throw Usage_error(std::string("method ") + method.name + " is not available yet");
+    throw Usage_error(std::string("method ") + method.name + " needs OpenMP, and this program was built without it");
 
   Mesh mesh;
   read_mesh(args.mesh, mesh);
@@ -492,7 +501,7 @@ int run(int argc, char** argv)
   options.number_of_threads = args.threads;
   if(method.approximate)
   {
-    options.lambda = args.lambda;
+    options.lambda = args.has_lambda ? args.lambda : CGAL::VTP_geodesics::Propagation_options::recommended_lambda;
     options.lambda_g = args.lambda_g;
   }
 
