@@ -92,6 +92,11 @@ struct Propagation_statistics
   /// Parallel scheduling only: propagation rounds (arrays of lists), and those run on several threads.
   std::size_t rounds = 0;
   std::size_t parallel_rounds = 0;
+  /// Parallel scheduling only: seconds spent selecting vertices and lists (serial), propagating
+  /// lists (parallel) and merging their output (serial).
+  double selection_seconds = 0.;
+  double propagation_seconds = 0.;
+  double merge_seconds = 0.;
   /// Vertices with a finite distance, and the largest finite distance.
   std::size_t reached_vertices = 0;
   double max_distance = 0.;

@@ -78,7 +78,6 @@ public:
                   "(link CGAL::VTP_geodesics_OpenMP_support, or compile with -fopenmp).");
 #endif
     const auto t0 = std::chrono::steady_clock::now();
-    start(m, s, options, dist);
     int threads = 1;
     if(parallel)
     {
@@ -87,10 +86,11 @@ public:
       if(threads <= 0)
         threads = omp_get_max_threads();
 #endif
-      if(threads <= 0)
-        threads = 1;
-      run_parallel(threads);
+      threads = (std::max)(1, (std::min)(threads, 126));
     }
+    start(m, s, options, dist, static_cast<std::size_t>(threads));
+    if(parallel)
+      run_parallel(threads);
     else
       run_sequential();
     const bool approximate = m_reset_step < std::numeric_limits<double>::infinity();
@@ -104,7 +104,8 @@ private:
   // ------------------------------------------------------------------------------------------
   // setup
   // ------------------------------------------------------------------------------------------
-  void start(const Mesh_arrays& m, Index s, const Propagation_options& options, std::vector<double>& dist)
+  void start(const Mesh_arrays& m, Index s, const Propagation_options& options, std::vector<double>& dist,
+             std::size_t pools)
   {
     m_mesh = &m;
     m_dist = &dist;
@@ -115,12 +116,13 @@ private:
     m_swept.assign(static_cast<std::size_t>(m.nf), 0);
     m_queued.assign(nh, 0);
     m_processed.assign(static_cast<std::size_t>(m.nv), -1.);
-    m_store.reset(nh);
+    m_store.reset(nh, pools);
     m_heap.clear();
     m_fifo.clear();
     m_fifo_head = 0;
     m_created = m_propagated = m_vertices_processed = m_pseudo_sources = m_resets = 0;
     m_rounds = m_parallel_rounds = 0;
+    m_selection_seconds = m_propagation_seconds = m_merge_seconds = 0.;
     m_use_buckets = false;
 
     // reset policy
@@ -152,6 +154,9 @@ private:
     st.resets = m_resets;
     st.rounds = m_rounds;
     st.parallel_rounds = m_parallel_rounds;
+    st.selection_seconds = m_selection_seconds;
+    st.propagation_seconds = m_propagation_seconds;
+    st.merge_seconds = m_merge_seconds;
     for(double d : *m_dist)
       if(d < std::numeric_limits<double>::infinity())
       {
@@ -285,12 +290,30 @@ private:
       enqueue(h);
   }
 
+  // The same from a thread of the parallel merge: pool p, and the lists to queue are collected
+  // in `to_queue` (the caller owns every list it writes, see propagate_rounds()).
+  std::size_t store_children(Index h, const Window* begin, const Window* end, std::size_t p,
+                             std::vector<Index>& to_queue)
+  {
+    if(begin == end)
+      return 0;
+    for(const Window* w = begin; w != end; ++w)
+      m_store.push(h, *w, p);
+    if(m_swept[Mesh_arrays::face(h)] && !m_queued[h])
+    {
+      m_queued[h] = 1;
+      to_queue.push_back(h);
+    }
+    return static_cast<std::size_t>(end - begin);
+  }
+
   // Thread-independent work on one list: filter it, propagate it across its face.
   struct Scratch
   {
     std::vector<Window> in, out_ac, out_cb;
     std::vector<double> xc, reach;
-    std::size_t propagated = 0;
+    std::vector<Index> to_queue;
+    std::size_t propagated = 0, created = 0;
   };
 
   // Returns the distance offered to the opposite vertex; children are left in s.out_ac / s.out_cb.
@@ -349,6 +372,7 @@ private:
       light(m.source[Mesh_arrays::prev(h)], dc);
       store_children(m.opposite[Mesh_arrays::prev(h)], s.out_ac.data(), s.out_ac.data() + s.out_ac.size());
       store_children(m.opposite[Mesh_arrays::next(h)], s.out_cb.data(), s.out_cb.data() + s.out_cb.size());
+      m_store.update_peaks();
     }
     m_propagated += s.propagated;
     s.propagated = 0;
@@ -428,6 +452,7 @@ private:
       long long popped = 0;
       Entry e;
       double last = 0.;
+      const auto ts = std::chrono::steady_clock::now();
       while(popped < k_ad && m_fifo.size() < max_lists && bucket_pop(e))
       {
         if(take_vertex(e.second, e.first))
@@ -438,6 +463,7 @@ private:
       }
       // distances are compared with the end of the last bucket popped from (Eq. 5)
       m_round_limit = (std::floor(last * m_inv_bucket_width) + 1.) / m_inv_bucket_width;
+      m_selection_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count();
       propagate_rounds(threads);
       k_ad = k_ad + static_cast<long long>(m_updated_large) - static_cast<long long>(m_updated_small);
       k_ad = (std::max)(k_ad, static_cast<long long>(threads));
@@ -460,6 +486,14 @@ private:
 
   // Propagates the queued lists in parallel, merges, and repeats while lists are fed inside the
   // swept region (the dual arrays A_from / A_to).
+  //
+  // Phase 1 (parallel over lists): each list is copied out of the storage and freed, filtered
+  // and propagated; its children and the distance it offers go to its own slot.
+  // Phase 2 (parallel over faces): the children of the lists of face f only go to the lists of
+  // the half-edges opposite to the edges of f, which no other face writes to. So each thread
+  // merges the slots of the faces it owns (f mod T), in list order (Rule 3), with blocks of its
+  // own pool. Phase 3 (serial, one step per list): distances lowered and lists queued in a fixed
+  // order. The result does not depend on thread timing.
   void propagate_rounds(int threads)
   {
     const Mesh_arrays& m = *m_mesh;
@@ -471,56 +505,71 @@ private:
         m_queued[h] = 0;
       const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_from.size());
       m_slots.resize(m_from.size());
-      for(Scratch& s : m_scratch)
-        s.out_ac.clear();
-
-      // parallel propagation: reads the window storage and the distances, writes only to the
-      // thread's own scratch and to the list's own slot
+      const auto tp = std::chrono::steady_clock::now();
       // small arrays are not worth waking the threads: same work, same result, one thread
       const int team = (n >= 4 * static_cast<std::ptrdiff_t>(threads)) ? threads : 1;
       ++m_rounds;
       if(team > 1)
         ++m_parallel_rounds;
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 2) num_threads(team) if(team > 1)
+#pragma omp parallel num_threads(team) if(team > 1)
 #endif
-      for(std::ptrdiff_t i = 0; i < n; ++i)
       {
         int t = 0;
 #ifdef _OPENMP
         t = omp_get_thread_num();
 #endif
         Scratch& s = m_scratch[static_cast<std::size_t>(t)];
-        const Index h = m_from[static_cast<std::size_t>(i)];
-        s.in.clear();
-        m_store.copy(h, s.in);
-        s.out_cb.clear();
-        const std::size_t begin = s.out_ac.size();
-        Slot& slot = m_slots[static_cast<std::size_t>(i)];
-        slot.thread = t;
-        slot.begin = begin;
-        // children on A-C are appended to out_ac directly, those on C-B after them
-        const std::size_t before = s.out_ac.size();
-        slot.distance_to_C = propagate_one(h, s);
-        slot.n_ac = static_cast<std::uint32_t>(s.out_ac.size() - before);
-        slot.n_cb = static_cast<std::uint32_t>(s.out_cb.size());
-        s.out_ac.insert(s.out_ac.end(), s.out_cb.begin(), s.out_cb.end());
+        s.out_ac.clear();
+        s.to_queue.clear();
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 2)
+#endif
+        for(std::ptrdiff_t i = 0; i < n; ++i)
+        {
+          const Index h = m_from[static_cast<std::size_t>(i)];
+          s.in.clear();
+          m_store.take(h, s.in, static_cast<std::size_t>(t));
+          s.out_cb.clear();
+          Slot& slot = m_slots[static_cast<std::size_t>(i)];
+          slot.thread = t;
+          // children on A-C are appended to out_ac directly, those on C-B after them
+          const std::size_t before = s.out_ac.size();
+          slot.begin = before;
+          slot.distance_to_C = propagate_one(h, s);
+          slot.n_ac = static_cast<std::uint32_t>(s.out_ac.size() - before);
+          slot.n_cb = static_cast<std::uint32_t>(s.out_cb.size());
+          s.out_ac.insert(s.out_ac.end(), s.out_cb.begin(), s.out_cb.end());
+        }
+        // (implicit barrier: all slots are written, all propagated lists are empty)
+        for(std::size_t i = 0; i < m_from.size(); ++i)
+        {
+          const Index h = m_from[i];
+          if(Mesh_arrays::face(h) % team != t)
+            continue;
+          const Slot& slot = m_slots[i];
+          const Window* w = m_scratch[static_cast<std::size_t>(slot.thread)].out_ac.data() + slot.begin;
+          s.created += store_children(m.opposite[Mesh_arrays::prev(h)], w, w + slot.n_ac,
+                                      static_cast<std::size_t>(t), s.to_queue);
+          s.created += store_children(m.opposite[Mesh_arrays::next(h)], w + slot.n_ac,
+                                      w + slot.n_ac + slot.n_cb, static_cast<std::size_t>(t), s.to_queue);
+        }
       }
-      (void)team;
+      const auto tm = std::chrono::steady_clock::now();
+      m_propagation_seconds += std::chrono::duration<double>(tm - tp).count();
 
-      // delayed writes, in list order (deterministic): free the propagated lists, then merge
-      for(Index h : m_from)
-        m_store.clear(h);
       for(std::size_t i = 0; i < m_from.size(); ++i)
+        light(m.source[Mesh_arrays::prev(m_from[i])], m_slots[i].distance_to_C);
+      for(int t = 0; t < team; ++t)
       {
-        const Index h = m_from[i];
-        const Slot& slot = m_slots[i];
-        light(m.source[Mesh_arrays::prev(h)], slot.distance_to_C);
-        const Window* w = m_scratch[static_cast<std::size_t>(slot.thread)].out_ac.data() + slot.begin;
-        store_children(m.opposite[Mesh_arrays::prev(h)], w, w + slot.n_ac);
-        store_children(m.opposite[Mesh_arrays::next(h)], w + slot.n_ac, w + slot.n_ac + slot.n_cb);
+        Scratch& s = m_scratch[static_cast<std::size_t>(t)];
+        m_fifo.insert(m_fifo.end(), s.to_queue.begin(), s.to_queue.end());
+        m_created += s.created;
+        s.created = 0;
       }
+      m_store.update_peaks();
       m_from.clear();
+      m_merge_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tm).count();
     }
   }
 
@@ -617,6 +666,7 @@ private:
 
   std::size_t m_created = 0, m_propagated = 0, m_vertices_processed = 0, m_pseudo_sources = 0, m_resets = 0;
   std::size_t m_rounds = 0, m_parallel_rounds = 0;
+  double m_selection_seconds = 0., m_propagation_seconds = 0., m_merge_seconds = 0.;
 };
 
 } // namespace internal

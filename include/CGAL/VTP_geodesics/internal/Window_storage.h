@@ -39,10 +39,13 @@ struct Window
   double sigma;
 };
 
-// Window lists, one per half-edge, stored in fixed-size blocks taken from one pool (slabs of
-// blocks linked by indices, with a free list): windows of a list are contiguous inside a block,
-// there is no allocation per window, and memory is recycled as soon as a list is propagated.
-// The pool grows slab by slab (never copied) and is released by reset().
+// Window lists, one per half-edge, stored in fixed-size blocks linked by indices: windows of a
+// list are contiguous inside a block, there is no allocation per window, and memory is recycled
+// as soon as a list is propagated. Blocks come from pools (one per thread of the parallel
+// scheduling; the sequential scheduling uses pool 0): a pool grows slab by slab (never copied)
+// and keeps a free list, so that threads touching different lists never share allocator state.
+// A freed block goes to the free list of the pool of the thread that frees it. Everything is
+// released by reset().
 class Window_storage
 {
 public:
@@ -55,25 +58,28 @@ public:
     Index count;
   };
 
-  void reset(std::size_t number_of_halfedges)
+  void reset(std::size_t number_of_halfedges, std::size_t number_of_pools = 1)
   {
+    CGAL_precondition(number_of_pools >= 1 && number_of_pools <= MAX_POOLS);
     m_head.assign(number_of_halfedges, NO_INDEX);
     m_tail.assign(number_of_halfedges, NO_INDEX);
-    m_slabs.clear();
-    m_number_of_blocks = 0;
-    m_free = NO_INDEX;
-    m_live = m_peak_live = 0;
-    m_blocks_in_use = m_peak_blocks = 0;
+    m_pools.clear();
+    m_pools.resize(number_of_pools);
+    m_peak_live = 0;
+    m_peak_blocks = 0;
   }
+
+  std::size_t number_of_pools() const { return m_pools.size(); }
 
   bool empty(Index h) const { return m_head[h] == NO_INDEX; }
 
-  void push(Index h, const Window& w)
+  // Appends w to the list of h, with blocks from pool p.
+  void push(Index h, const Window& w, std::size_t p = 0)
   {
     Index t = m_tail[h];
     if(t == NO_INDEX || block(t).count == BLOCK)
     {
-      const Index b = allocate();
+      const Index b = allocate(p);
       if(t == NO_INDEX)
         m_head[h] = b;
       else
@@ -83,24 +89,14 @@ public:
     }
     Block& blk = block(t);
     blk.w[blk.count++] = w;
-    if(++m_live > m_peak_live)
-      m_peak_live = m_live;
+    ++m_pools[p].live;
   }
 
   // Moves the windows of the list of h to the end of `out` and empties the list.
-  void take(Index h, std::vector<Window>& out)
+  void take(Index h, std::vector<Window>& out, std::size_t p = 0)
   {
-    Index b = m_head[h];
-    while(b != NO_INDEX)
-    {
-      Block& blk = block(b);
-      out.insert(out.end(), blk.w, blk.w + blk.count);
-      m_live -= static_cast<std::size_t>(blk.count);
-      const Index nb = blk.next;
-      release(b);
-      b = nb;
-    }
-    m_head[h] = m_tail[h] = NO_INDEX;
+    copy(h, out);
+    clear(h, p);
   }
 
   // Appends the windows of the list of h to `out`, leaving the list as it is. Only reads the
@@ -114,65 +110,105 @@ public:
     }
   }
 
-  // Deletes the windows of the list of h.
-  void clear(Index h)
+  // Deletes the windows of the list of h; the blocks go to pool p.
+  void clear(Index h, std::size_t p = 0)
   {
+    Pool& pool = m_pools[p];
     Index b = m_head[h];
     while(b != NO_INDEX)
     {
-      m_live -= static_cast<std::size_t>(block(b).count);
-      const Index nb = block(b).next;
-      release(b);
+      Block& blk = block(b);
+      pool.live -= static_cast<long long>(blk.count);
+      const Index nb = blk.next;
+      blk.next = pool.free;
+      pool.free = b;
+      --pool.in_use;
       b = nb;
     }
     m_head[h] = m_tail[h] = NO_INDEX;
   }
 
-  std::size_t live_windows() const { return m_live; }
+  // Number of windows alive; records the peaks. The sequential scheduling calls it after every
+  // list, the parallel one after every round (its peaks are sampled at round boundaries).
+  std::size_t update_peaks()
+  {
+    long long live = 0, blocks = 0;
+    for(const Pool& p : m_pools)
+    {
+      live += p.live;
+      blocks += p.in_use;
+    }
+    if(live > static_cast<long long>(m_peak_live))
+      m_peak_live = static_cast<std::size_t>(live);
+    if(blocks > static_cast<long long>(m_peak_blocks))
+      m_peak_blocks = static_cast<std::size_t>(blocks);
+    return static_cast<std::size_t>(live);
+  }
+
   std::size_t peak_live_windows() const { return m_peak_live; }
-  // bytes held by the pool (whole slabs), i.e. the peak of this run since the pool never shrinks
-  std::size_t peak_bytes() const { return m_slabs.size() * SLAB * sizeof(Block); }
   std::size_t peak_blocks() const { return m_peak_blocks; }
+  // bytes held by the pools (whole slabs), i.e. the peak of this run since pools never shrink
+  std::size_t peak_bytes() const
+  {
+    std::size_t slabs = 0;
+    for(const Pool& p : m_pools)
+      slabs += p.slabs.size();
+    return slabs * SLAB * sizeof(Block);
+  }
 
 private:
-  Index allocate()
+  static const std::size_t SLAB = 512;
+  static const std::size_t POOL_SHIFT = 24;  // 16M blocks (2.7 GB) per pool
+  static const std::size_t MAX_POOLS = 127;
+
+  struct Pool
   {
+    std::vector<std::unique_ptr<Block[]> > slabs;
+    std::size_t number_of_blocks = 0;
+    Index free = NO_INDEX;
+    long long live = 0;    // may be negative in one pool: blocks can be freed into another pool
+    long long in_use = 0;
+  };
+
+  Block& block(Index b)
+  {
+    const std::size_t u = static_cast<std::size_t>(b);
+    const std::size_t local = u & ((std::size_t(1) << POOL_SHIFT) - 1);
+    return m_pools[u >> POOL_SHIFT].slabs[local / SLAB][local % SLAB];
+  }
+  const Block& block(Index b) const
+  {
+    const std::size_t u = static_cast<std::size_t>(b);
+    const std::size_t local = u & ((std::size_t(1) << POOL_SHIFT) - 1);
+    return m_pools[u >> POOL_SHIFT].slabs[local / SLAB][local % SLAB];
+  }
+
+  Index allocate(std::size_t p)
+  {
+    Pool& pool = m_pools[p];
     Index b;
-    if(m_free != NO_INDEX)
+    if(pool.free != NO_INDEX)
     {
-      b = m_free;
-      m_free = block(b).next;
+      b = pool.free;
+      pool.free = block(b).next;
     }
     else
     {
-      if(m_number_of_blocks == m_slabs.size() * SLAB)
-        m_slabs.emplace_back(new Block[SLAB]);
-      b = static_cast<Index>(m_number_of_blocks++);
+      CGAL_assertion(pool.number_of_blocks < (std::size_t(1) << POOL_SHIFT));
+      if(pool.number_of_blocks == pool.slabs.size() * SLAB)
+        pool.slabs.emplace_back(new Block[SLAB]);
+      b = static_cast<Index>((p << POOL_SHIFT) | pool.number_of_blocks++);
     }
-    block(b).next = NO_INDEX;
-    block(b).count = 0;
-    if(++m_blocks_in_use > m_peak_blocks)
-      m_peak_blocks = m_blocks_in_use;
+    Block& blk = block(b);
+    blk.next = NO_INDEX;
+    blk.count = 0;
+    ++pool.in_use;
     return b;
   }
 
-  void release(Index b)
-  {
-    block(b).next = m_free;
-    m_free = b;
-    --m_blocks_in_use;
-  }
-
-  static const std::size_t SLAB = 512;
-  Block& block(Index b) { return m_slabs[static_cast<std::size_t>(b) / SLAB][static_cast<std::size_t>(b) % SLAB]; }
-  const Block& block(Index b) const { return m_slabs[static_cast<std::size_t>(b) / SLAB][static_cast<std::size_t>(b) % SLAB]; }
-
-  std::vector<std::unique_ptr<Block[]> > m_slabs;
-  std::size_t m_number_of_blocks = 0;
+  std::vector<Pool> m_pools;
   std::vector<Index> m_head, m_tail;
-  Index m_free = NO_INDEX;
-  std::size_t m_live = 0, m_peak_live = 0;
-  std::size_t m_blocks_in_use = 0, m_peak_blocks = 0;
+  std::size_t m_peak_live = 0, m_peak_blocks = 0;
 };
 
 } // namespace internal

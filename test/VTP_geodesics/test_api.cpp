@@ -1,0 +1,519 @@
+// The public interface: genericity (Surface_mesh / Polyhedron_3 / exact-kernel points, property maps,
+// named parameters, free function / solver, solver reuse), statistics, rejected input, and the parallel
+// and approximate variants.
+
+#include "vtp_test_meshes.h"
+#include "vtp_test_utils.h"
+
+#include <CGAL/VTP_geodesics.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+#include <CGAL/boost/graph/properties_Polyhedron_3.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+using namespace vtp_test;
+using CGAL::VTP_geodesics::Geodesic_distance_solver;
+using CGAL::VTP_geodesics::Invalid_input_error;
+using CGAL::VTP_geodesics::Propagation_options;
+using CGAL::VTP_geodesics::Propagation_statistics;
+using CGAL::VTP_geodesics::compute_geodesic_distances;
+
+typedef CGAL::Polyhedron_3<Kernel> Polyhedron;
+typedef CGAL::Exact_predicates_exact_constructions_kernel Exact_kernel;
+typedef CGAL::Surface_mesh<Exact_kernel::Point_3> Exact_surface_mesh;
+
+namespace {
+
+// Distances from vertex number `source` (in the order of vertices(mesh)) written through an associative
+// property map (no vertex ids needed), returned in the order of vertices(mesh); NaN where nothing was written.
+template <class Mesh, class Map = std::unordered_map<typename boost::graph_traits<Mesh>::vertex_descriptor, double> >
+std::vector<double> distances_through_assoc_map(const Mesh& mesh, std::size_t source)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  const std::vector<vertex_descriptor> vs(vertices(mesh).begin(), vertices(mesh).end());
+  Map map;
+  Geodesic_distance_solver<Mesh> solver(mesh);
+  solver.compute(vs[source], boost::make_assoc_property_map(map));
+  std::vector<double> d;
+  for(vertex_descriptor v : vs)
+  {
+    auto it = map.find(v);
+    d.push_back(it == map.end() ? NOT_A_VERTEX : it->second);
+  }
+  return d;
+}
+
+// Compares two results for exact equality (+infinity included), reporting the first difference.
+::testing::AssertionResult identical(const std::vector<double>& a, const std::vector<double>& b)
+{
+  if(a.size() != b.size())
+    return ::testing::AssertionFailure() << "sizes differ: " << a.size() << " and " << b.size();
+  for(std::size_t i = 0; i < a.size(); ++i)
+    if(!(a[i] == b[i]))
+      return ::testing::AssertionFailure() << "first difference at vertex " << i << ": " << a[i] << " and " << b[i];
+  return ::testing::AssertionSuccess();
+}
+
+const Surface_mesh& elephant()
+{
+  static const Surface_mesh mesh = load_mesh("elephant.off");
+  return mesh;
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------------------
+// Genericity
+// ---------------------------------------------------------------------------------------------------
+
+TEST(Genericity, surface_mesh_and_polyhedron_give_identical_distances)
+{
+  const std::vector<std::pair<std::string, Polygon_soup> > soups = {
+    {"mushroom", to_soup(load_mesh("mushroom.off"))},
+    {"jittered grid", planar_grid(20, 20, 1., 1., 0.3, 99u)}};
+  for(const auto& named : soups)
+  {
+    const Polygon_soup& soup = named.second;
+    const Surface_mesh sm = to_mesh<Surface_mesh>(soup);
+    const Polyhedron poly = to_mesh<Polyhedron>(soup);
+    std::size_t i = 0;
+    for(Polyhedron::Vertex_const_handle v : vertices(poly))
+      ASSERT_EQ(v->point(), soup.points[i++]) << "vertices must follow the soup order";
+
+    for(std::size_t source : {std::size_t(0), soup.points.size() / 3})
+    {
+      const std::vector<double> d_sm = distances_through_assoc_map(sm, source);
+      const std::vector<double> d_poly = distances_through_assoc_map(poly, source);
+      const std::vector<double> d_poly_map =
+        distances_through_assoc_map<Polyhedron, std::map<Polyhedron::Vertex_const_handle, double> >(poly, source);
+      EXPECT_EQ(std::count_if(d_sm.begin(), d_sm.end(), [](double x) { return std::isnan(x); }), 0)
+        << "every vertex must be written";
+      EXPECT_TRUE(identical(d_sm, d_poly)) << named.first << ", source " << source;
+      EXPECT_TRUE(identical(d_sm, d_poly_map)) << named.first << ", source " << source;
+
+      // and through a Surface_mesh property map
+      Surface_mesh sm_copy = sm;
+      auto pmap = sm_copy.add_property_map<Vertex_index, double>("v:distance", -1.).first;
+      Geodesic_distance_solver<Surface_mesh> solver(sm_copy);
+      solver.compute(Vertex_index(static_cast<Surface_mesh::size_type>(source)), pmap);
+      std::vector<double> d_pmap;
+      for(Vertex_index v : vertices(sm_copy))
+        d_pmap.push_back(pmap[v]);
+      EXPECT_TRUE(identical(d_sm, d_pmap)) << named.first << ", source " << source;
+    }
+  }
+}
+
+TEST(Genericity, exact_kernel_points)
+{
+  const Polygon_soup soup = to_soup(load_mesh("three_peaks.off"));
+  const Surface_mesh sm = to_mesh<Surface_mesh>(soup);
+  Exact_surface_mesh esm;
+  for(const Point_3& p : soup.points)
+    esm.add_vertex(Exact_kernel::Point_3(p.x(), p.y(), p.z()));
+  for(const std::vector<std::size_t>& t : soup.polygons)
+    ASSERT_NE(esm.add_face(Exact_surface_mesh::Vertex_index(static_cast<Surface_mesh::size_type>(t[0])),
+                           Exact_surface_mesh::Vertex_index(static_cast<Surface_mesh::size_type>(t[1])),
+                           Exact_surface_mesh::Vertex_index(static_cast<Surface_mesh::size_type>(t[2]))),
+              Exact_surface_mesh::null_face());
+
+  const std::vector<double> d = distances_through_assoc_map(sm, 100);
+  const std::vector<double> d_exact_points = distances_through_assoc_map(esm, 100);
+  // The squared edge lengths are rounded once from exact values instead of computed in double:
+  // the results agree to the accuracy of the algorithm, not bit for bit.
+  EXPECT_TRUE(distances_near(d_exact_points, d, EXACT_TOLERANCE, "Epeck points vs Epick points"));
+}
+
+TEST(Genericity, vertex_point_map_named_parameter)
+{
+  // Points scaled by 2 through a custom vertex point map: all distances double.
+  const Surface_mesh& mesh = elephant();
+  std::vector<Point_3> scaled(num_vertices(mesh));
+  for(Vertex_index v : vertices(mesh))
+    scaled[v] = CGAL::ORIGIN + 2. * (mesh.point(v) - CGAL::ORIGIN);
+  auto vpm = boost::make_iterator_property_map(scaled.begin(), get(boost::vertex_index, mesh));
+
+  const Vertex_index s(42);
+  std::vector<double> expected = vtp_distances(mesh, s);
+  for(double& x : expected)
+    x *= 2.;
+  std::vector<double> d(num_vertices(mesh), NOT_A_VERTEX);
+  compute_geodesic_distances(mesh, boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), s,
+                             Propagation_options(), CGAL::parameters::vertex_point_map(vpm));
+  EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE, "free function, scaled vertex point map"));
+
+  std::vector<double> d_solver(num_vertices(mesh), NOT_A_VERTEX);
+  Geodesic_distance_solver<Surface_mesh, CGAL::Default, decltype(vpm)> solver(mesh, vpm);
+  solver.compute(s, boost::make_iterator_property_map(d_solver.begin(), get(boost::vertex_index, mesh)));
+  EXPECT_TRUE(identical(d, d_solver));
+}
+
+TEST(Genericity, free_function_and_solver_agree)
+{
+  const Surface_mesh& mesh = elephant();
+  for(Vertex_index s : {Vertex_index(10), Vertex_index(2000)})
+  {
+    std::vector<double> d_free(num_vertices(mesh), NOT_A_VERTEX);
+    const Propagation_statistics st =
+      compute_geodesic_distances(mesh, boost::make_iterator_property_map(d_free.begin(), get(boost::vertex_index, mesh)), s);
+    Propagation_statistics st_solver;
+    const std::vector<double> d_solver = vtp_distances(mesh, s, Propagation_options(), &st_solver);
+    EXPECT_TRUE(identical(d_free, d_solver));
+    EXPECT_EQ(st.reached_vertices, st_solver.reached_vertices);
+    EXPECT_EQ(st.max_distance, st_solver.max_distance);
+    EXPECT_EQ(st.windows_created, st_solver.windows_created);
+  }
+}
+
+TEST(Genericity, reused_solver_equals_fresh_solvers)
+{
+  const Surface_mesh& mesh = elephant();
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  EXPECT_EQ(solver.number_of_vertices(), num_vertices(mesh));
+  EXPECT_EQ(solver.number_of_faces(), num_faces(mesh));
+  for(Vertex_index s : {Vertex_index(0), Vertex_index(1234), Vertex_index(2774), Vertex_index(0)})
+  {
+    std::vector<double> d(num_vertices(mesh), NOT_A_VERTEX);
+    solver.compute(s, boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)));
+    EXPECT_TRUE(identical(d, vtp_distances(mesh, s))) << "source " << std::size_t(s);
+
+    // the dense accessors report the same distances
+    for(Vertex_index v : vertices(mesh))
+    {
+      ASSERT_EQ(solver.distance(v), d[v]);
+      ASSERT_EQ(solver.distances()[solver.vertex_id(v)], d[v]);
+    }
+    solver.compute_dense(s);
+    std::vector<double> dense(num_vertices(mesh));
+    for(Vertex_index v : vertices(mesh))
+      dense[v] = solver.distance(v);
+    EXPECT_TRUE(identical(d, dense));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Statistics: only relations that any correct window-propagation engine satisfies.
+// ---------------------------------------------------------------------------------------------------
+
+TEST(Statistics, consistent_with_the_output)
+{
+  const Surface_mesh& mesh = elephant();
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  std::vector<double> d(num_vertices(mesh), NOT_A_VERTEX);
+  const Propagation_statistics st =
+    solver.compute(Vertex_index(77), boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)));
+
+  EXPECT_EQ(st.vertices, num_vertices(mesh));
+  EXPECT_EQ(st.faces, num_faces(mesh));
+  EXPECT_EQ(st.method, "vtp");
+  EXPECT_EQ(st.threads, 1);
+  EXPECT_GT(st.windows_created, 0u);
+  EXPECT_GT(st.windows_propagated, 0u);
+  EXPECT_GT(st.peak_live_windows, 0u);
+  EXPECT_GE(st.peak_window_bytes, st.peak_live_windows * 5 * sizeof(double)) << "a window holds at least 5 doubles";
+  EXPECT_GT(st.vertices_processed, 0u);
+  EXPECT_GE(st.seconds, 0.);
+  EXPECT_GE(st.output_seconds, 0.);
+  EXPECT_EQ(st.resets, 0u) << "the exact algorithm never resets windows";
+
+  std::size_t finite = 0;
+  double largest = 0.;
+  for(double x : d)
+    if(std::isfinite(x))
+    {
+      ++finite;
+      largest = (std::max)(largest, x);
+    }
+  EXPECT_EQ(finite, num_vertices(mesh)) << "elephant.off is connected";
+  EXPECT_EQ(st.reached_vertices, finite);
+  EXPECT_EQ(st.max_distance, largest);
+
+  // statistics() reports the last computation
+  EXPECT_EQ(solver.statistics().reached_vertices, st.reached_vertices);
+  EXPECT_EQ(solver.statistics().max_distance, st.max_distance);
+  EXPECT_EQ(solver.statistics().windows_created, st.windows_created);
+}
+
+TEST(Statistics, mesh_quantities)
+{
+  // a regular grid of right isosceles triangles: 2n(n+1) axis-parallel edges of length 1/n and n^2 diagonals
+  const int n = 10;
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(planar_grid(n, n, 1., 1.));
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  const double expected_mean = (2. * n * (n + 1) / n + n * n * std::sqrt(2.) / n) / (2. * n * (n + 1) + n * n);
+  EXPECT_NEAR(solver.mean_edge_length(), expected_mean, 1e-14);
+  EXPECT_GE(solver.anisotropy(), 1.);
+  EXPECT_EQ(solver.number_of_pseudo_source_vertices(), std::size_t(4 * n)) << "the boundary vertices; no saddle";
+  EXPECT_GE(solver.preprocessing_seconds(), 0.);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Rejected input
+// ---------------------------------------------------------------------------------------------------
+
+TEST(Bad_input, quad_mesh_is_rejected)
+{
+  const Surface_mesh quads = to_mesh<Surface_mesh>(quad_grid(3));
+  EXPECT_THROW(Geodesic_distance_solver<Surface_mesh>{quads}, Invalid_input_error);
+  std::vector<double> d(num_vertices(quads));
+  EXPECT_THROW(compute_geodesic_distances(quads, boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, quads)),
+                                          Vertex_index(0)),
+               Invalid_input_error);
+
+  const Polyhedron quad_polyhedron = to_mesh<Polyhedron>(quad_grid(3));
+  EXPECT_THROW(Geodesic_distance_solver<Polyhedron>{quad_polyhedron}, Invalid_input_error);
+
+  // a single quad among triangles
+  Polygon_soup mixed = planar_grid(3, 3, 1., 1.);
+  mixed.polygons.erase(mixed.polygons.begin(), mixed.polygons.begin() + 2); // the two triangles of cell (0,0)
+  mixed.polygons.push_back({grid_vertex(3, 0, 0), grid_vertex(3, 1, 0), grid_vertex(3, 1, 1), grid_vertex(3, 0, 1)});
+  const Surface_mesh mixed_mesh = to_mesh<Surface_mesh>(mixed);
+  EXPECT_THROW(Geodesic_distance_solver<Surface_mesh>{mixed_mesh}, Invalid_input_error);
+}
+
+TEST(Bad_input, source_not_in_the_mesh_is_rejected)
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(regular_tetrahedron());
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  std::vector<double> d(num_vertices(mesh));
+  auto map = boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh));
+  const Vertex_index outside(static_cast<Surface_mesh::size_type>(num_vertices(mesh) + 10));
+  EXPECT_THROW(solver.compute(outside, map), Invalid_input_error);
+  EXPECT_THROW(solver.compute_dense(outside), Invalid_input_error);
+  EXPECT_THROW(solver.compute(Surface_mesh::null_vertex(), map), Invalid_input_error);
+  EXPECT_THROW(compute_geodesic_distances(mesh, map, outside), Invalid_input_error);
+
+  // the solver is still usable after a rejected call
+  EXPECT_NO_THROW(solver.compute(Vertex_index(1), map));
+  EXPECT_EQ(d[1], 0.);
+}
+
+TEST(Bad_input, removed_source_vertex_is_rejected)
+{
+  Surface_mesh mesh = to_mesh<Surface_mesh>(planar_grid(4, 4, 1., 1.));
+  const Vertex_index corner(static_cast<Surface_mesh::size_type>(grid_vertex(4, 4, 4)));
+  std::vector<Surface_mesh::Face_index> around;
+  for(Surface_mesh::Face_index f : CGAL::faces_around_target(mesh.halfedge(corner), mesh))
+    if(f != Surface_mesh::null_face())
+      around.push_back(f);
+  for(Surface_mesh::Face_index f : around)
+    CGAL::Euler::remove_face(mesh.halfedge(f), mesh);
+  ASSERT_TRUE(mesh.is_removed(corner));
+
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  std::vector<double> d(index_range(mesh));
+  auto map = boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh));
+  EXPECT_THROW(solver.compute(corner, map), Invalid_input_error);
+  EXPECT_NO_THROW(solver.compute(Vertex_index(0), map));
+}
+
+TEST(Bad_input, invalid_options_are_rejected)
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(planar_grid(4, 4, 1., 1.));
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  std::vector<double> d(num_vertices(mesh));
+  auto map = boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh));
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+
+  for(double lambda : {0., -0., -1., -INF, nan})
+  {
+    Propagation_options o;
+    o.lambda = lambda;
+    EXPECT_THROW(solver.compute(Vertex_index(0), map, o), Invalid_input_error) << "lambda = " << lambda;
+    EXPECT_THROW(solver.compute_dense(Vertex_index(0), o), Invalid_input_error) << "lambda = " << lambda;
+    EXPECT_THROW(compute_geodesic_distances(mesh, map, Vertex_index(0), o), Invalid_input_error)
+      << "lambda = " << lambda;
+  }
+  for(double lambda_g : {-1., -1e-300, nan})
+  {
+    Propagation_options o;
+    o.lambda = 2.;
+    o.lambda_g = lambda_g;
+    EXPECT_THROW(solver.compute(Vertex_index(0), map, o), Invalid_input_error) << "lambda_g = " << lambda_g;
+  }
+
+  // valid options
+  Propagation_options o;
+  EXPECT_NO_THROW(solver.compute(Vertex_index(0), map, o));
+  o.lambda = 2.5;
+  o.lambda_g = 0.;
+  EXPECT_NO_THROW(solver.compute(Vertex_index(0), map, o));
+}
+
+TEST(Bad_input, non_finite_or_huge_coordinates_are_rejected)
+{
+  for(double bad : {std::numeric_limits<double>::quiet_NaN(), 1e300, -1e300, INF})
+  {
+    Polygon_soup soup = planar_grid(3, 3, 1., 1.);
+    soup.points[grid_vertex(3, 1, 2)] = Point_3(0.3, bad, 0.);
+    const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+    EXPECT_THROW(Geodesic_distance_solver<Surface_mesh>{mesh}, Invalid_input_error) << "coordinate " << bad;
+    std::vector<double> d(num_vertices(mesh));
+    EXPECT_THROW(compute_geodesic_distances(mesh, boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
+                                            Vertex_index(0)),
+                 Invalid_input_error)
+      << "coordinate " << bad;
+  }
+}
+
+TEST(Bad_input, error_type_and_message)
+{
+  const Surface_mesh quads = to_mesh<Surface_mesh>(quad_grid(2));
+  try
+  {
+    Geodesic_distance_solver<Surface_mesh> solver(quads);
+    FAIL() << "a quad mesh must be rejected";
+  }
+  catch(const std::invalid_argument& e) // Invalid_input_error is an std::invalid_argument
+  {
+    EXPECT_NE(dynamic_cast<const Invalid_input_error*>(&e), nullptr);
+    EXPECT_FALSE(std::string(e.what()).empty());
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Parallel (PVTP) and approximate (AVTP) variants
+// ---------------------------------------------------------------------------------------------------
+
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+
+TEST(Parallel, matches_the_analytic_distances)
+{
+  const int n = 24;
+  const Polygon_soup soup = planar_grid(n, n, 1., 1., 0.3, 5u);
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  for(int threads : {0, 1, 2})
+  {
+    Propagation_options o;
+    o.number_of_threads = threads;
+    const std::size_t s = grid_vertex(n, 7, 11);
+    std::vector<double> expected(soup.points.size()), d(soup.points.size(), NOT_A_VERTEX);
+    for(std::size_t i = 0; i < soup.points.size(); ++i)
+      expected[i] = distance(soup.points[s], soup.points[i]);
+    const Propagation_statistics& st = solver.compute<CGAL::Parallel_tag>(
+      Vertex_index(static_cast<Surface_mesh::size_type>(s)),
+      boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), o);
+    EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE, "parallel, " + std::to_string(threads) + " threads"));
+    EXPECT_EQ(st.method, "pvtp");
+    EXPECT_GE(st.threads, 1);
+    if(threads > 0)
+    {
+      EXPECT_LE(st.threads, threads);
+    }
+  }
+}
+
+TEST(Parallel, matches_sequential_on_real_meshes)
+{
+  for(const char* name : {"elephant-with-holes.off", "knot1.off"})
+  {
+    const Surface_mesh mesh = load_mesh(name);
+    Geodesic_distance_solver<Surface_mesh> solver(mesh);
+    for(Vertex_index s : {Vertex_index(0), Vertex_index(static_cast<Surface_mesh::size_type>(num_vertices(mesh) / 2))})
+    {
+      const std::vector<double> sequential = vtp_distances(mesh, s);
+      std::vector<double> parallel(num_vertices(mesh), NOT_A_VERTEX);
+      solver.compute<CGAL::Parallel_tag>(s, boost::make_iterator_property_map(parallel.begin(), get(boost::vertex_index, mesh)));
+      EXPECT_TRUE(distances_near(parallel, sequential, EXACT_TOLERANCE,
+                                 std::string(name) + ", parallel vs sequential, source " + std::to_string(std::size_t(s))));
+    }
+  }
+}
+
+TEST(Parallel, unreachable_vertices)
+{
+  Polygon_soup soup = planar_grid(6, 6, 1., 1.);
+  soup.append(regular_tetrahedron(), Vector_3(10, 0, 0));
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  std::vector<double> d(num_vertices(mesh), NOT_A_VERTEX);
+  const Propagation_statistics st = compute_geodesic_distances<CGAL::Parallel_tag>(
+    mesh, boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), Vertex_index(0));
+  for(std::size_t i = 0; i < 49; ++i)
+    EXPECT_NEAR(d[i], distance(soup.points[0], soup.points[i]), EXACT_TOLERANCE * std::sqrt(2.));
+  for(std::size_t i = 49; i < 53; ++i)
+    EXPECT_EQ(d[i], INF);
+  EXPECT_EQ(st.reached_vertices, 49u);
+}
+
+// PAVTP: same lower bound as AVTP below (every distance is the length of a real path).
+TEST(Parallel, approximate_never_below_the_exact_distance)
+{
+  const int n = 24;
+  const Polygon_soup soup = planar_grid(n, n, 1., 1., 0.3, 12u);
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  const std::size_t s = grid_vertex(n, 20, 5);
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  Propagation_options o;
+  o.lambda = 1.;
+  std::vector<double> d(soup.points.size(), NOT_A_VERTEX);
+  const Propagation_statistics& st = solver.compute<CGAL::Parallel_tag>(
+    Vertex_index(static_cast<Surface_mesh::size_type>(s)),
+    boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), o);
+  EXPECT_EQ(st.method, "pavtp");
+  EXPECT_EQ(st.reached_vertices, soup.points.size());
+  double below = 0.;
+  for(std::size_t i = 0; i < soup.points.size(); ++i)
+  {
+    ASSERT_TRUE(std::isfinite(d[i])) << "vertex " << i;
+    below = (std::max)(below, distance(soup.points[s], soup.points[i]) - d[i]);
+  }
+  EXPECT_LE(below, EXACT_TOLERANCE * std::sqrt(2.));
+  ASSERT_GT(st.max_distance, 5. * o.lambda * solver.mean_edge_length());
+  EXPECT_GT(st.resets, 0u);
+}
+
+#else
+
+TEST(Parallel, requires_openmp)
+{
+  GTEST_SKIP() << "CGAL::VTP_geodesics_OpenMP_support is not available: the parallel variant is not tested";
+}
+
+#endif // CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+
+// The approximate variant drops windows, so each of its distances is the length of some path on the
+// surface: never below the exact geodesic distance. On a convex planar domain that is the Euclidean one.
+TEST(Approximate, never_below_the_exact_distance)
+{
+  const int n = 24;
+  const Polygon_soup soup = planar_grid(n, n, 1., 1., 0.3, 11u);
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  const std::size_t s = grid_vertex(n, 2, 3);
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  for(double lambda : {0.5, 1., 3.})
+  {
+    Propagation_options o;
+    o.lambda = lambda;
+    std::vector<double> d(soup.points.size(), NOT_A_VERTEX);
+    const Propagation_statistics& st = solver.compute(
+      Vertex_index(static_cast<Surface_mesh::size_type>(s)),
+      boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), o);
+    EXPECT_EQ(st.method, "avtp");
+    EXPECT_EQ(st.reached_vertices, soup.points.size());
+    EXPECT_EQ(d[s], 0.);
+    double below = 0.;
+    for(std::size_t i = 0; i < soup.points.size(); ++i)
+    {
+      ASSERT_TRUE(std::isfinite(d[i])) << "vertex " << i;
+      below = (std::max)(below, distance(soup.points[s], soup.points[i]) - d[i]);
+    }
+    EXPECT_LE(below, EXACT_TOLERANCE * std::sqrt(2.)) << "lambda = " << lambda;
+    // the propagation radius (about 1.3) is many times lambda * h (h is about 0.05): windows were reset
+    ASSERT_GT(st.max_distance, 5. * lambda * solver.mean_edge_length());
+    EXPECT_GT(st.resets, 0u) << "lambda = " << lambda;
+  }
+}
