@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -94,8 +95,9 @@ struct Mesh_arrays
       if(l > 0.)
       {
         g.cx = (l * l + la * la - lb * lb) / (2. * l);
-        const double s = la * la - g.cx * g.cx;
-        g.cy = s > 0. ? std::sqrt(s) : 0.;
+        // height from the area (Kahan's stable Heron formula): sqrt(la^2 - cx^2) loses
+        // accuracy for needle triangles
+        g.cy = 2. * triangle_area(l, la, lb) / l;
       }
       else
       {
@@ -149,6 +151,16 @@ struct Mesh_arrays
     for(Index v = 0; v < nv; ++v)
       is_pseudo_source[v] = (is_boundary[v] || angle_sum[v] > two_pi + 1e-9) ? 1 : 0;
     compute_anisotropy();
+  }
+
+  // area of a triangle from its side lengths, accurate for needles (Kahan); 0 if degenerate
+  static double triangle_area(double a, double b, double c)
+  {
+    if(a < b) std::swap(a, b);
+    if(b < c) std::swap(b, c);
+    if(a < b) std::swap(a, b);
+    const double p = (a + (b + c)) * (c - (a - b)) * (c + (a - b)) * (a + (b - c));
+    return p > 0. ? 0.25 * std::sqrt(p) : 0.;
   }
 
   // angle opposite to side c in a triangle of sides a, b, c (robust for degenerate triangles)
