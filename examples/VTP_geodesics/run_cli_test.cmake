@@ -2,11 +2,15 @@
 #
 #   cmake -DEXE=<program> -DARGS="a|b|c" -DEXPECTED_EXIT=<n>
 #         [-DOUTPUT=<file>] [-DJSON=<file>] [-DEXPECTED_LINES=<n>] [-DSOURCE=<n>] [-DJSON_KEYS="k1|k2"]
+#         [-DEXPECTED_VALUES="line=text|line=text"] [-DEXPECTED_NOTE=<regex>]
 #         -P run_cli_test.cmake
 #
-# ARGS, JSON_KEYS: lists separated by '|'. OUTPUT / JSON are removed before the run.
+# ARGS, JSON_KEYS, EXPECTED_VALUES: lists separated by '|'. OUTPUT / JSON are removed before the run.
 # Exit code 0 expected: OUTPUT (if given) must exist, with EXPECTED_LINES lines if given, and
-# line SOURCE (default 0) of OUTPUT must be "0", and JSON (if given) must exist and contain every key of JSON_KEYS.
+# line SOURCE (default 0) of OUTPUT must be "0", and each listed line (0-based) must be exactly the
+# given text; JSON (if given) must exist and contain every key of JSON_KEYS. If EXPECTED_NOTE is
+# defined, stderr must be empty when it is empty, and else one line "vtp_geodesics: note: ..." whose
+# text matches the regular expression EXPECTED_NOTE.
 # Non-zero exit code expected: stderr must be one line "vtp_geodesics: error: ...", and neither
 # OUTPUT nor JSON nor any of their temporary files may exist.
 
@@ -51,6 +55,34 @@ if(EXPECTED_EXIT EQUAL 0)
       list(GET lines ${SOURCE} source_line)
       if(NOT source_line STREQUAL "0")
         message(FATAL_ERROR "distance of the source is '${source_line}', expected 0")
+      endif()
+      string(REPLACE "|" ";" values "${EXPECTED_VALUES}")
+      foreach(value IN LISTS values)
+        string(REGEX MATCH "^([0-9]+)=(.*)$" pair "${value}")
+        if(NOT pair)
+          message(FATAL_ERROR "bad EXPECTED_VALUES entry '${value}'")
+        endif()
+        set(line_number "${CMAKE_MATCH_1}")
+        set(expected_text "${CMAKE_MATCH_2}")
+        list(GET lines ${line_number} actual_text)
+        if(NOT actual_text STREQUAL expected_text)
+          message(FATAL_ERROR "line ${line_number} of the output is '${actual_text}', expected '${expected_text}'")
+        endif()
+      endforeach()
+    endif()
+  endif()
+  if(DEFINED EXPECTED_NOTE)
+    if(EXPECTED_NOTE STREQUAL "")
+      if(NOT err STREQUAL "")
+        message(FATAL_ERROR "expected nothing on stderr, got '${err}'")
+      endif()
+    else()
+      if(NOT err MATCHES "^vtp_geodesics: note: ([^\n]+)\n$")
+        message(FATAL_ERROR "stderr is not one line 'vtp_geodesics: note: ...': '${err}'")
+      endif()
+      set(note "${CMAKE_MATCH_1}")
+      if(NOT note MATCHES "${EXPECTED_NOTE}")
+        message(FATAL_ERROR "the note '${note}' does not match '${EXPECTED_NOTE}'")
       endif()
     endif()
   endif()

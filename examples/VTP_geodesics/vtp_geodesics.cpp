@@ -5,18 +5,22 @@
 //
 // Computes the exact geodesic distances from one source vertex to all vertices of a triangle mesh
 // (OFF, OBJ or PLY) by vertex-oriented triangle propagation. Run `vtp_geodesics --help` for details.
+// Polygon meshes are triangulated and invalid polygon soups repaired (one line "vtp_geodesics: note: ..."
+// on stderr says what was done); the distances are always reported in the vertex order of the file.
 // On any error, it prints one line "vtp_geodesics: error: ..." on stderr, creates no output file
 // and exits with code 2.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/IO/PLY.h>
 #include <CGAL/assertions_behaviour.h>
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
 #include <CGAL/VTP_geodesics/options_and_statistics.h>
 #include <CGAL/VTP_geodesics/internal/tools/shortest_path_reference.h>
+#include <CGAL/VTP_geodesics/internal/tools/triangle_mesh_from_soup.h>
 
 #include <algorithm>
 #include <cctype>
@@ -67,11 +71,11 @@ void print_usage(std::ostream& os)
         "Computes exact geodesic distances from one source vertex to all vertices of a triangle mesh\n"
         "by vertex-oriented triangle propagation (VTP).\n"
         "\n"
-        "  MESH                 triangle mesh in OFF, OBJ or PLY format\n"
+        "  MESH                 mesh in OFF, OBJ or PLY format (.off, .obj, .ply)\n"
         "                       (default: " VTP_GEODESICS_DEFAULT_MESH ")\n"
         "  --source V           index of the source vertex, in file order (default: 0)\n"
-        "  --output FILE        write one distance per line, in the vertex order of MESH\n"
-        "                       (\"%.17g\", \"inf\" for unreachable vertices)\n"
+        "  --output FILE        write one distance per line, one line per vertex of MESH, in\n"
+        "                       the vertex order of MESH (\"%.17g\", \"inf\" for unreachable vertices)\n"
         "  --stats-json FILE|-  write statistics as one JSON object to FILE, or to stdout with \"-\"\n"
         "  --check-cgal         also run CGAL::Surface_mesh_shortest_path from the same source and\n"
         "                       report the largest absolute and relative differences\n"
@@ -83,6 +87,23 @@ void print_usage(std::ostream& os)
         "                       default 8)\n"
         "  --lambda-g G         guard band of avtp / pavtp, in mean edge lengths (>= 0, default 1)\n"
         "  --help               print this help and exit\n"
+        "\n"
+        "Input that is not a triangle mesh is repaired, and one line \"vtp_geodesics: note: ...\"\n"
+        "on stderr says what was done:\n"
+        "  - faces with more than three vertices (quads, polygons) are triangulated, without\n"
+        "    adding vertices;\n"
+        "  - a polygon soup that is not a valid mesh (non-manifold vertices or edges, faces with\n"
+        "    repeated or coincident points, duplicate faces, inconsistent orientation) is repaired\n"
+        "    with CGAL::Polygon_mesh_processing::repair_polygon_soup and orient_polygon_soup:\n"
+        "    coincident points are merged, degenerate and duplicate faces removed, and the surface\n"
+        "    is cut at non-manifold vertices and edges, which duplicates their vertices.\n"
+        "The distances are then computed on the repaired surface (a shortest path does not go from\n"
+        "one side of a cut to the other) and mapped back to the vertices of the file: a duplicated\n"
+        "vertex gets the smallest distance over its copies (and, as the source, all its copies are\n"
+        "sources), merged points share their distance, and a vertex left in no face is unreachable\n"
+        "(\"inf\"). --output always has one line per vertex of the file, in file order.\n"
+        "Input that cannot be repaired (no face left, faces that cannot be triangulated, bad\n"
+        "indices, non-finite coordinates) is refused.\n"
         "\n"
         "Without --output and --stats-json, a short summary is printed. On error, one line\n"
         "\"vtp_geodesics: error: ...\" is printed on stderr, no output file is written, and the\n"
@@ -286,7 +307,18 @@ std::string lower_extension(const std::string& file)
   return ext;
 }
 
-void read_mesh(const std::string& file, Mesh& mesh)
+// The mesh of the computation, and which of its vertices stand for each vertex of the file.
+struct Input_mesh
+{
+  Mesh mesh;
+  std::size_t file_vertices = 0, file_faces = 0;
+  std::vector<std::size_t> copy_begin;  // copies of file vertex i: copies[copy_begin[i] .. copy_begin[i+1])
+  std::vector<Vertex_index> copies;
+  CGAL::VTP_geodesics::internal::Soup_repair_report repairs;
+};
+
+// Reads `file` as a polygon soup and makes a triangle mesh of it (see triangle_mesh_from_soup.h).
+void read_mesh(const std::string& file, Input_mesh& input)
 {
   const std::string ext = lower_extension(file);
   if(ext != "off" && ext != "obj" && ext != "ply")
@@ -301,12 +333,19 @@ void read_mesh(const std::string& file, Mesh& mesh)
   }
 
   // CGAL's readers may print diagnostics on std::cerr: keep them out of the one-line error.
+  std::vector<Point_3> points;
+  std::vector<std::vector<std::size_t> > polygons;
   std::ostringstream diagnostics;
   std::streambuf* const cerr_buffer = std::cerr.rdbuf(diagnostics.rdbuf());
   bool ok = false;
   try
   {
-    ok = CGAL::IO::read_polygon_mesh(file, mesh);
+    if(ext == "off")
+      ok = CGAL::IO::read_OFF(file, points, polygons);
+    else if(ext == "obj")
+      ok = CGAL::IO::read_OBJ(file, points, polygons);
+    else
+      ok = CGAL::IO::read_PLY(file, points, polygons);
   }
   catch(...)
   {
@@ -314,18 +353,19 @@ void read_mesh(const std::string& file, Mesh& mesh)
     throw Usage_error("cannot read '" + file + "': invalid or unsupported mesh data");
   }
   std::cerr.rdbuf(cerr_buffer);
-
   if(!ok)
-    throw Usage_error("cannot read '" + file + "': invalid mesh data, or not a 2-manifold polygon mesh");
-  if(mesh.number_of_vertices() == 0 || mesh.number_of_faces() == 0)
-    throw Usage_error("the mesh '" + file + "' is empty (no vertices or no faces)");
-  if(!CGAL::is_triangle_mesh(mesh))
-    throw Usage_error("the mesh '" + file + "' is not a triangle mesh (some face is not a triangle)");
-  for(Vertex_index v : mesh.vertices())
+    throw Usage_error("cannot read '" + file + "': invalid or unsupported mesh data");
+
+  input.file_vertices = points.size();
+  input.file_faces = polygons.size();
+  try
   {
-    const Point_3& p = mesh.point(v);
-    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      throw Usage_error("the mesh '" + file + "' has a vertex with non-finite coordinates");
+    input.repairs = CGAL::VTP_geodesics::internal::triangle_mesh_from_soup(
+      std::move(points), std::move(polygons), input.mesh, input.copy_begin, input.copies);
+  }
+  catch(const CGAL::VTP_geodesics::Invalid_input_error& e)
+  {
+    throw Usage_error("cannot use '" + file + "': " + e.what());
   }
 }
 
@@ -436,7 +476,9 @@ std::string json_number(double x)
 struct Report
 {
   std::string mesh;
-  std::size_t vertices = 0, faces = 0, source = 0, reached_vertices = 0;
+  std::size_t vertices = 0, faces = 0, source = 0, reached_vertices = 0; // vertices and faces of the file
+  std::size_t mesh_vertices = 0, mesh_faces = 0;                         // of the (repaired) triangle mesh
+  std::string repairs;                                                   // empty if none
   double max_distance = 0.;
   double preprocessing_seconds = 0., mean_edge_length = 0., anisotropy = 0.;
   CGAL::VTP_geodesics::Propagation_statistics stats;
@@ -452,6 +494,9 @@ std::string stats_json(const Report& r)
      << "\"mesh\": " << json_string(r.mesh)
      << ", \"vertices\": " << r.vertices
      << ", \"faces\": " << r.faces
+     << ", \"mesh_vertices\": " << r.mesh_vertices
+     << ", \"mesh_faces\": " << r.mesh_faces
+     << ", \"repairs\": " << json_string(r.repairs)
      << ", \"source\": " << r.source
      << ", \"method\": " << json_string(r.stats.method)
      << ", \"threads\": " << r.stats.threads
@@ -490,12 +535,17 @@ int run(int argc, char** argv)
   if(!method.available)
     throw Usage_error(std::string("method ") + method.name + " needs OpenMP, and this program was built without it");
 
-  Mesh mesh;
-  read_mesh(args.mesh, mesh);
-  if(args.source >= mesh.number_of_vertices())
+  Input_mesh input;
+  read_mesh(args.mesh, input);
+  const Mesh& mesh = input.mesh;
+  if(args.source >= input.file_vertices)
     throw Usage_error("source vertex " + std::to_string(args.source) + " is out of range (the mesh has "
-                      + std::to_string(mesh.number_of_vertices()) + " vertices)");
-  const Vertex_index source(static_cast<Mesh::size_type>(args.source));
+                      + std::to_string(input.file_vertices) + " vertices)");
+  // The vertices of the mesh standing for the source: one, several if the repair duplicated it (then
+  // all are sources: the distances are the minimum over them), none if the repair removed it (a vertex
+  // in no face: only the source itself is reachable).
+  const std::vector<Vertex_index> sources(input.copies.begin() + std::ptrdiff_t(input.copy_begin[args.source]),
+                                          input.copies.begin() + std::ptrdiff_t(input.copy_begin[args.source + 1]));
 
   CGAL::VTP_geodesics::Propagation_options options;
   options.number_of_threads = args.threads;
@@ -508,18 +558,48 @@ int run(int argc, char** argv)
   Solver solver(mesh);
   Report report;
   report.mesh = args.mesh;
-  report.vertices = solver.number_of_vertices();
-  report.faces = solver.number_of_faces();
+  report.vertices = input.file_vertices;
+  report.faces = input.file_faces;
+  report.mesh_vertices = solver.number_of_vertices();
+  report.mesh_faces = solver.number_of_faces();
+  report.repairs = input.repairs.summary();
   report.source = args.source;
   report.preprocessing_seconds = solver.preprocessing_seconds();
   report.mean_edge_length = solver.mean_edge_length();
   report.anisotropy = solver.anisotropy();
-  report.stats = run_method(method, solver, source, options);
-  if(report.stats.method.empty())
-    report.stats.method = method.name;
+  report.stats.method = method.name;
 
-  // The solver numbers the vertices in the order of vertices(mesh), which is the file order.
-  const std::vector<double>& distances = solver.distances();
+  // Distances per mesh vertex (the solver numbers them in the order of vertices(mesh)), the minimum
+  // over the source copies; then per vertex of the file.
+  const double infinity = std::numeric_limits<double>::infinity();
+  std::vector<double> mesh_distances(solver.number_of_vertices(), infinity);
+  for(std::size_t k = 0; k < sources.size(); ++k)
+  {
+    const CGAL::VTP_geodesics::Propagation_statistics& st = run_method(method, solver, sources[k], options);
+    if(k == 0)
+      report.stats = st;
+    else
+    {
+      report.stats.seconds += st.seconds;
+      report.stats.windows_created += st.windows_created;
+      report.stats.windows_propagated += st.windows_propagated;
+      report.stats.peak_live_windows = (std::max)(report.stats.peak_live_windows, st.peak_live_windows);
+      report.stats.peak_window_bytes = (std::max)(report.stats.peak_window_bytes, st.peak_window_bytes);
+      report.stats.vertices_processed += st.vertices_processed;
+      report.stats.pseudo_sources += st.pseudo_sources;
+      report.stats.resets += st.resets;
+    }
+    const std::vector<double>& d = solver.distances();
+    for(std::size_t j = 0; j < mesh_distances.size(); ++j)
+      mesh_distances[j] = (std::min)(mesh_distances[j], d[j]);
+  }
+  auto on_file_vertices = [&](const std::vector<double>& per_mesh_vertex) {
+    std::vector<double> r = CGAL::VTP_geodesics::internal::values_on_soup_points(
+      input.copy_begin, input.copies, [&](Vertex_index v) { return per_mesh_vertex[std::size_t(v)]; });
+    r[args.source] = 0.;
+    return r;
+  };
+  const std::vector<double> distances = on_file_vertices(mesh_distances);
   for(double d : distances)
     if(std::isfinite(d))
     {
@@ -530,10 +610,15 @@ int run(int argc, char** argv)
   if(args.check_cgal)
   {
     const auto t0 = std::chrono::steady_clock::now();
-    const std::vector<double> reference =
-      CGAL::VTP_geodesics::internal::shortest_path_reference_distances(mesh, source);
+    std::vector<double> reference(mesh.number_of_vertices(), infinity);
+    for(Vertex_index s : sources)
+    {
+      const std::vector<double> r = CGAL::VTP_geodesics::internal::shortest_path_reference_distances(mesh, s);
+      for(std::size_t j = 0; j < reference.size(); ++j)
+        reference[j] = (std::min)(reference[j], r[j]);
+    }
     report.cgal_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    report.comparison = CGAL::VTP_geodesics::internal::compare_distances(distances, reference);
+    report.comparison = CGAL::VTP_geodesics::internal::compare_distances(distances, on_file_vertices(reference));
     report.checked = true;
   }
 
@@ -580,6 +665,8 @@ int run(int argc, char** argv)
               << "windows: " << report.stats.windows_created << " created, " << report.stats.windows_propagated
               << " propagated, peak " << report.stats.peak_live_windows << " alive ("
               << report.stats.peak_window_bytes << " bytes)\n";
+    if(!report.repairs.empty())
+      std::cout << "triangle mesh: " << report.mesh_vertices << " vertices, " << report.mesh_faces << " faces\n";
   }
   if(report.checked && !json_on_stdout)
   {
@@ -592,6 +679,8 @@ int run(int argc, char** argv)
   std::cout.flush();
   if(!std::cout)
     throw Usage_error("cannot write to stdout");
+  if(!report.repairs.empty())
+    std::cerr << program_name << ": note: " << report.repairs << std::endl;
   return 0;
 }
 
