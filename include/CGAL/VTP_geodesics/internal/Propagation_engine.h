@@ -312,7 +312,6 @@ private:
   {
     std::vector<Window> in, out_ac, out_cb;
     std::vector<double> xc, reach;
-    std::vector<Index> to_queue;
     std::size_t propagated = 0, created = 0;
   };
 
@@ -489,11 +488,11 @@ private:
   //
   // Phase 1 (parallel over lists): each list is copied out of the storage and freed, filtered
   // and propagated; its children and the distance it offers go to its own slot.
-  // Phase 2 (parallel over faces): the children of the lists of face f only go to the lists of
-  // the half-edges opposite to the edges of f, which no other face writes to. So each thread
-  // merges the slots of the faces it owns (f mod T), in list order (Rule 3), with blocks of its
-  // own pool. Phase 3 (serial, one step per list): distances lowered and lists queued in a fixed
-  // order. The result does not depend on thread timing.
+  // Phase 2 (parallel over groups of faces): the children of the lists of face f only go to the
+  // lists of the half-edges opposite to the edges of f, which no other face writes to. So the
+  // slots are grouped by face (f mod G), and a thread merges a whole group, in list order
+  // (Rule 3), with blocks of its own pool. Phase 3 (serial, one step per list): distances
+  // lowered and lists queued in a fixed order. The result does not depend on thread timing.
   void propagate_rounds(int threads)
   {
     const Mesh_arrays& m = *m_mesh;
@@ -511,6 +510,22 @@ private:
       ++m_rounds;
       if(team > 1)
         ++m_parallel_rounds;
+      // merge groups: the slots of the lists of a face all fall in the same group (face mod G),
+      // kept in list order (a stable counting sort)
+      const std::ptrdiff_t groups = (team > 1) ? 8 * team : 1;
+      m_group_begin.assign(static_cast<std::size_t>(groups) + 1, 0);
+      for(Index h : m_from)
+        ++m_group_begin[static_cast<std::size_t>(Mesh_arrays::face(h) % groups) + 1];
+      for(std::ptrdiff_t g = 0; g < groups; ++g)
+        m_group_begin[static_cast<std::size_t>(g) + 1] += m_group_begin[static_cast<std::size_t>(g)];
+      m_group_slots.resize(m_from.size());
+      {
+        m_group_fill.assign(m_group_begin.begin(), m_group_begin.end() - 1);
+        for(std::size_t i = 0; i < m_from.size(); ++i)
+          m_group_slots[m_group_fill[static_cast<std::size_t>(Mesh_arrays::face(m_from[i]) % groups)]++] = i;
+      }
+      if(m_group_queue.size() < static_cast<std::size_t>(groups))
+        m_group_queue.resize(static_cast<std::size_t>(groups));
 #ifdef _OPENMP
 #pragma omp parallel num_threads(team) if(team > 1)
 #endif
@@ -521,7 +536,6 @@ private:
 #endif
         Scratch& s = m_scratch[static_cast<std::size_t>(t)];
         s.out_ac.clear();
-        s.to_queue.clear();
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 2)
 #endif
@@ -542,17 +556,25 @@ private:
           s.out_ac.insert(s.out_ac.end(), s.out_cb.begin(), s.out_cb.end());
         }
         // (implicit barrier: all slots are written, all propagated lists are empty)
-        for(std::size_t i = 0; i < m_from.size(); ++i)
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1)
+#endif
+        for(std::ptrdiff_t g = 0; g < groups; ++g)
         {
-          const Index h = m_from[i];
-          if(Mesh_arrays::face(h) % team != t)
-            continue;
-          const Slot& slot = m_slots[i];
-          const Window* w = m_scratch[static_cast<std::size_t>(slot.thread)].out_ac.data() + slot.begin;
-          s.created += store_children(m.opposite[Mesh_arrays::prev(h)], w, w + slot.n_ac,
-                                      static_cast<std::size_t>(t), s.to_queue);
-          s.created += store_children(m.opposite[Mesh_arrays::next(h)], w + slot.n_ac,
-                                      w + slot.n_ac + slot.n_cb, static_cast<std::size_t>(t), s.to_queue);
+          std::vector<Index>& to_queue = m_group_queue[static_cast<std::size_t>(g)];
+          to_queue.clear();
+          for(std::size_t k = m_group_begin[static_cast<std::size_t>(g)];
+              k < m_group_begin[static_cast<std::size_t>(g) + 1]; ++k)
+          {
+            const std::size_t i = m_group_slots[k];
+            const Index h = m_from[i];
+            const Slot& slot = m_slots[i];
+            const Window* w = m_scratch[static_cast<std::size_t>(slot.thread)].out_ac.data() + slot.begin;
+            s.created += store_children(m.opposite[Mesh_arrays::prev(h)], w, w + slot.n_ac,
+                                        static_cast<std::size_t>(t), to_queue);
+            s.created += store_children(m.opposite[Mesh_arrays::next(h)], w + slot.n_ac,
+                                        w + slot.n_ac + slot.n_cb, static_cast<std::size_t>(t), to_queue);
+          }
         }
       }
       const auto tm = std::chrono::steady_clock::now();
@@ -560,12 +582,15 @@ private:
 
       for(std::size_t i = 0; i < m_from.size(); ++i)
         light(m.source[Mesh_arrays::prev(m_from[i])], m_slots[i].distance_to_C);
+      for(std::ptrdiff_t g = 0; g < groups; ++g)
+      {
+        const std::vector<Index>& q = m_group_queue[static_cast<std::size_t>(g)];
+        m_fifo.insert(m_fifo.end(), q.begin(), q.end());
+      }
       for(int t = 0; t < team; ++t)
       {
-        Scratch& s = m_scratch[static_cast<std::size_t>(t)];
-        m_fifo.insert(m_fifo.end(), s.to_queue.begin(), s.to_queue.end());
-        m_created += s.created;
-        s.created = 0;
+        m_created += m_scratch[static_cast<std::size_t>(t)].created;
+        m_scratch[static_cast<std::size_t>(t)].created = 0;
       }
       m_store.update_peaks();
       m_from.clear();
@@ -656,6 +681,8 @@ private:
   std::vector<Scratch> m_scratch;
   std::vector<Index> m_from;
   std::vector<Slot> m_slots;
+  std::vector<std::size_t> m_group_begin, m_group_fill, m_group_slots;
+  std::vector<std::vector<Index> > m_group_queue;
 
   // reset policy
   double m_reset_step = std::numeric_limits<double>::infinity();

@@ -152,7 +152,7 @@ public:
   {
     std::size_t slabs = 0;
     for(const Pool& p : m_pools)
-      slabs += p.slabs.size();
+      slabs += p.number_of_slabs;
     return slabs * SLAB * sizeof(Block);
   }
 
@@ -161,9 +161,14 @@ private:
   static const std::size_t POOL_SHIFT = 24;  // 16M blocks (2.7 GB) per pool
   static const std::size_t MAX_POOLS = 127;
 
+  static const std::size_t MAX_SLABS = (std::size_t(1) << POOL_SHIFT) / SLAB;
+
+  // The table of slabs of a pool has a fixed size, so that adding a slab never moves the
+  // pointers that other threads read to reach blocks of this pool.
   struct Pool
   {
-    std::vector<std::unique_ptr<Block[]> > slabs;
+    std::unique_ptr<std::unique_ptr<Block[]>[]> slabs{ new std::unique_ptr<Block[]>[MAX_SLABS] };
+    std::size_t number_of_slabs = 0;
     std::size_t number_of_blocks = 0;
     Index free = NO_INDEX;
     long long live = 0;    // may be negative in one pool: blocks can be freed into another pool
@@ -195,8 +200,8 @@ private:
     else
     {
       CGAL_assertion(pool.number_of_blocks < (std::size_t(1) << POOL_SHIFT));
-      if(pool.number_of_blocks == pool.slabs.size() * SLAB)
-        pool.slabs.emplace_back(new Block[SLAB]);
+      if(pool.number_of_blocks == pool.number_of_slabs * SLAB)
+        pool.slabs[pool.number_of_slabs++].reset(new Block[SLAB]);
       b = static_cast<Index>((p << POOL_SHIFT) | pool.number_of_blocks++);
     }
     Block& blk = block(b);
