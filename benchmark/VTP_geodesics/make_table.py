@@ -27,10 +27,16 @@ COLUMNS = [
     ("max_rel_err_vs_vtp", "Max rel. err.", "{:.2e}"),
     ("mean_rel_err_vs_vtp", "Mean rel. err.", "{:.2e}"),
     ("speedup_vs_cgal", "Speedup vs CGAL", "{:.2f}"),
+    ("mean_pointwise_rel_err_vs_vtp", "Mean rel. err. (%)", "{:.4f}"),
+    ("max_pointwise_rel_err_vs_vtp", "Max rel. err. (%)", "{:.3f}"),
+    ("speedup_vs_vtp", "Speedup vs VTP", "{:.2f}"),
+    ("peak_live_windows", "Peak windows", "{:.0f}"),
 ]
+PERCENT_COLUMNS = {"mean_pointwise_rel_err_vs_vtp", "max_pointwise_rel_err_vs_vtp"}
 DEFAULT_COLUMNS = ["seconds", "preprocessing_seconds", "peak_rss_mb", "windows_created",
                    "max_rel_err_vs_vtp", "speedup_vs_cgal"]
-ERROR_COLUMNS = {"max_abs_err_vs_vtp", "max_rel_err_vs_vtp", "mean_rel_err_vs_vtp"}
+ERROR_COLUMNS = {"max_abs_err_vs_vtp", "max_rel_err_vs_vtp", "mean_rel_err_vs_vtp",
+                 "mean_pointwise_rel_err_vs_vtp", "max_pointwise_rel_err_vs_vtp"}
 
 
 def to_float(text):
@@ -88,6 +94,8 @@ def main(argv):
                 cells.append("–")
                 continue
             value = max(values) if (args.max_errors and c in ERROR_COLUMNS) else statistics.median(values)
+            if c in PERCENT_COLUMNS:
+                value *= 100.
             cells.append(known[c][1].format(value))
         lines.append("| " + " | ".join(cells) + " |")
     text = "\n".join(lines) + "\n"

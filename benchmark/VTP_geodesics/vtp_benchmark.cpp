@@ -469,6 +469,7 @@ struct Run_result
   std::vector<double> distances;
   // Filled after all methods of the source ran.
   double max_abs_err = nan_value, max_rel_err = nan_value, mean_rel_err = nan_value, speedup_vs_cgal = nan_value;
+  double mean_pointwise_rel_err = nan_value, max_pointwise_rel_err = nan_value, speedup_vs_vtp = nan_value;
   std::size_t mismatched_infinities = 0;
 };
 
@@ -576,7 +577,8 @@ std::string csv_field(const std::string& s)
 const char* const csv_columns =
   "mesh,vertices,faces,source,method,threads,seconds,preprocessing_seconds,peak_rss_mb,windows_created,"
   "windows_propagated,peak_window_bytes,max_abs_err_vs_vtp,max_rel_err_vs_vtp,mean_rel_err_vs_vtp,speedup_vs_cgal,"
-  "total_seconds,rss_at_start_mb,status";
+  "total_seconds,rss_at_start_mb,mean_pointwise_rel_err_vs_vtp,max_pointwise_rel_err_vs_vtp,speedup_vs_vtp,"
+  "peak_live_windows,status";
 
 struct Mesh_info
 {
@@ -599,6 +601,9 @@ void write_csv_row(std::ostream& os, const Mesh_info& mesh, std::size_t source, 
      << number(r.speedup_vs_cgal, 6) << ','
      << (r.ok ? number(total_seconds(r), 9) : "") << ','
      << (r.ok ? number(h.rss_at_start_kb / 1024., 6) : "") << ','
+     << number(r.mean_pointwise_rel_err, 6) << ',' << number(r.max_pointwise_rel_err, 6) << ','
+     << number(r.speedup_vs_vtp, 6) << ','
+     << (w ? std::to_string(h.peak_live_windows) : "") << ','
      << csv_field(r.status) << '\n';
 }
 
@@ -721,6 +726,10 @@ int run(int argc, char** argv)
           r.max_abs_err = c.max_abs_diff;
           r.max_rel_err = c.max_rel_diff;
           r.mean_rel_err = c.mean_rel_diff;
+          r.mean_pointwise_rel_err = c.mean_pointwise_rel_diff;
+          r.max_pointwise_rel_err = c.max_pointwise_rel_diff;
+          if(r.header.seconds > 0.)
+            r.speedup_vs_vtp = vtp.header.seconds / r.header.seconds;
           r.mismatched_infinities = c.mismatched_infinities;
           if(c.mismatched_infinities > 0 && r.status == "ok")
             r.status = "ok (" + std::to_string(c.mismatched_infinities) + " reachability mismatches)";

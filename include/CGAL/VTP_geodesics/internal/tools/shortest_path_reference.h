@@ -106,6 +106,10 @@ struct Distance_comparison
   double max_rel_diff = 0.;
   // Mean of |a[i] - b[i]| over the entries finite in both, divided by the same scale.
   double mean_rel_diff = 0.;
+  // Pointwise relative differences |a[i] - b[i]| / b[i] over the entries finite in both with b[i] > 0
+  // (b is the reference): the largest and the mean.
+  double max_pointwise_rel_diff = 0.;
+  double mean_pointwise_rel_diff = 0.;
   // Number of entries where exactly one of a[i], b[i] is infinite, or where one of them is NaN,
   // plus the difference of the sizes if the sizes differ.
   std::size_t mismatched_infinities = 0;
@@ -122,8 +126,8 @@ inline Distance_comparison compare_distances(const std::vector<double>& a, const
   for(double x : a) if(std::isfinite(x)) scale = (std::max)(scale, std::abs(x));
   for(double x : b) if(std::isfinite(x)) scale = (std::max)(scale, std::abs(x));
 
-  double sum = 0.;
-  std::size_t count = 0;
+  double sum = 0., sum_pointwise = 0.;
+  std::size_t count = 0, count_pointwise = 0;
   for(std::size_t i = 0; i < n; ++i)
   {
     const double x = a[i], y = b[i];
@@ -135,7 +139,15 @@ inline Distance_comparison compare_distances(const std::vector<double>& a, const
     result.max_abs_diff = (std::max)(result.max_abs_diff, d);
     sum += d;
     ++count;
+    if(y > 0.)
+    {
+      const double r = d / y;
+      result.max_pointwise_rel_diff = (std::max)(result.max_pointwise_rel_diff, r);
+      sum_pointwise += r;
+      ++count_pointwise;
+    }
   }
+  result.mean_pointwise_rel_diff = count_pointwise > 0 ? sum_pointwise / static_cast<double>(count_pointwise) : 0.;
   const double divisor = scale > 0. ? scale : 1.;
   result.max_rel_diff = result.max_abs_diff / divisor;
   result.mean_rel_diff = count > 0 ? sum / static_cast<double>(count) / divisor : 0.;
