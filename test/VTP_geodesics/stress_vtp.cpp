@@ -1,0 +1,504 @@
+// vtp_stress: randomized cross-check of VTP (and PVTP) against CGAL::Surface_mesh_shortest_path.
+//
+//   vtp_stress [--seed S] [--cases N] [--case K] [--min-vertices v] [--max-vertices V]
+//              [--sources P] [--methods vtp,pvtp] [--timeout T] [--dump DIR] [--verbose]
+//
+// Case k of a run seeded with S draws its own mesh and sources from case_seed(S, k), so any case can be
+// replayed alone with `--seed S --case k`. The meshes (see vtp_random_meshes.h) are closed surfaces
+// (convex hulls of random points on ellipsoids, with radial bumps), open surfaces (the same with a patch
+// or scattered faces removed, possibly leaving several components and isolated vertices), and height
+// fields over stretched, jittered grids, with or without removed faces. The sources are random vertices,
+// boundary vertices, saddle vertices and isolated vertices.
+//
+// For every source, each method must give the distances of CGAL's exact algorithm (Epick):
+//   max |d - d_cgal| <= 1e-12 * (largest finite d_cgal), with the same unreachable (+infinity) vertices,
+// no NaN, no negative value, and 0 at the source; PVTP must also equal VTP within the same tolerance.
+// Any failure is printed with its seed and case; the exit code is then 1. A case that runs longer than
+// --timeout seconds (default 120) is reported and ends the program with exit code 3. A crash prints the
+// case being run before the signal is handled as usual.
+//
+// The ctest test `stress_short` runs a few hundred small cases; the long run is
+//   vtp_stress --seed 1 --cases 10000 --max-vertices 300
+
+#include "vtp_random_meshes.h"
+
+#include <CGAL/VTP_geodesics.h>
+#include <CGAL/VTP_geodesics/internal/tools/shortest_path_reference.h>
+
+#include <CGAL/IO/OFF.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+using namespace vtp_test;
+using CGAL::VTP_geodesics::Geodesic_distance_solver;
+using CGAL::VTP_geodesics::Propagation_options;
+
+namespace {
+
+const double TOLERANCE = 1e-12;
+
+struct Settings
+{
+  std::uint64_t seed = 1;
+  std::size_t cases = 100;
+  bool single_case = false;
+  std::size_t the_case = 0;
+  std::size_t min_vertices = 4;
+  std::size_t max_vertices = 200;
+  std::size_t sources = 2;
+  bool vtp = true;
+  bool pvtp = false;
+  unsigned timeout = 120;
+  std::string dump;
+  bool verbose = false;
+};
+
+// ------------------------------------------------------------------------------------------------
+// What is running, for the crash and timeout handlers (async-signal-safe: a fixed buffer and write()).
+// ------------------------------------------------------------------------------------------------
+char current_case[512] = "vtp_stress: (no case running)\n";
+struct sigaction previous_actions[NSIG];
+
+void set_current_case(const std::string& s)
+{
+  const std::size_t n = (std::min)(s.size(), sizeof(current_case) - 2);
+  std::memcpy(current_case, s.data(), n);
+  current_case[n] = '\n';
+  current_case[n + 1] = '\0';
+}
+
+void write_current_case(const char* what)
+{
+  ssize_t ignored = write(2, what, std::strlen(what));
+  ignored = write(2, current_case, std::strlen(current_case));
+  (void)ignored;
+}
+
+void crash_handler(int sig)
+{
+  write_current_case("vtp_stress: CRASH (signal) while running: ");
+  // hand the signal to the previous handler (the default one, or a sanitizer's)
+  sigaction(sig, &previous_actions[sig], nullptr);
+  raise(sig);
+}
+
+void timeout_handler(int)
+{
+  write_current_case("vtp_stress: TIMEOUT while running: ");
+  _exit(3);
+}
+
+void install_handlers()
+{
+  for(int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT})
+  {
+    struct sigaction action;
+    std::memset(&action, 0, sizeof(action));
+    action.sa_handler = crash_handler;
+    sigemptyset(&action.sa_mask);
+    sigaction(sig, &action, &previous_actions[sig]);
+  }
+  std::signal(SIGALRM, timeout_handler);
+}
+
+// ------------------------------------------------------------------------------------------------
+// Cases
+// ------------------------------------------------------------------------------------------------
+struct Case
+{
+  std::string description;
+  Surface_mesh mesh;
+  std::vector<std::pair<Vertex_index, std::string> > sources; // vertex and why it was chosen
+};
+
+double angle_sum(const Surface_mesh& mesh, Vertex_index v)
+{
+  double sum = 0.;
+  for(Surface_mesh::Halfedge_index h : CGAL::halfedges_around_target(mesh.halfedge(v), mesh))
+  {
+    if(mesh.is_border(h))
+      continue;
+    const Vector_3 a = mesh.point(mesh.source(h)) - mesh.point(v);
+    const Vector_3 b = mesh.point(mesh.target(mesh.next(h))) - mesh.point(v);
+    const double c = (a * b) / std::sqrt(a.squared_length() * b.squared_length());
+    sum += std::acos((std::max)(-1., (std::min)(1., c)));
+  }
+  return sum;
+}
+
+Case make_case(const Settings& settings, std::size_t index)
+{
+  Random random(case_seed(settings.seed, index));
+  const std::size_t n = random.integer(settings.min_vertices, settings.max_vertices);
+  const std::size_t family = random.integer(0, 3);
+  Case c;
+  std::string what;
+  Polygon_soup soup = (family < 2) ? random_closed_surface(n, random, &what) : random_grid(n, random, &what);
+  if(family == 1 || family == 3)
+  {
+    const std::size_t removed = remove_random_faces(soup, random.uniform(0.02, 0.5), random);
+    what += ", " + std::to_string(removed) + " faces removed";
+  }
+  c.mesh = to_mesh<Surface_mesh>(soup);
+  c.description = what + " (" + std::to_string(c.mesh.number_of_vertices()) + " vertices, "
+                  + std::to_string(c.mesh.number_of_faces()) + " faces)";
+
+  std::vector<Vertex_index> boundary, isolated;
+  Vertex_index saddle = Surface_mesh::null_vertex();
+  double largest_angle_sum = 2. * PI + 1e-6;
+  for(Vertex_index v : c.mesh.vertices())
+  {
+    if(c.mesh.is_isolated(v))
+      isolated.push_back(v);
+    else if(c.mesh.is_border(v))
+      boundary.push_back(v);
+    else
+    {
+      const double s = angle_sum(c.mesh, v);
+      if(s > largest_angle_sum)
+      {
+        largest_angle_sum = s;
+        saddle = v;
+      }
+    }
+  }
+  const std::size_t nv = c.mesh.number_of_vertices();
+  const std::size_t number_of_sources = random.integer(1, (std::max)(std::size_t(1), settings.sources));
+  for(std::size_t k = 0; k < number_of_sources; ++k)
+  {
+    const double kind = random.uniform();
+    if(kind < 0.25 && !boundary.empty())
+      c.sources.emplace_back(boundary[random.integer(0, boundary.size() - 1)], "boundary");
+    else if(kind < 0.45 && saddle != Surface_mesh::null_vertex())
+      c.sources.emplace_back(saddle, "saddle");
+    else if(kind < 0.5 && !isolated.empty())
+      c.sources.emplace_back(isolated[random.integer(0, isolated.size() - 1)], "isolated");
+    else
+      c.sources.emplace_back(Vertex_index(static_cast<Surface_mesh::size_type>(random.integer(0, nv - 1))), "random");
+  }
+  return c;
+}
+
+// ------------------------------------------------------------------------------------------------
+// Comparison
+// ------------------------------------------------------------------------------------------------
+struct Difference
+{
+  double max_abs = 0.;     // over vertices finite in both
+  double scale = 0.;       // largest finite expected distance
+  std::size_t reachability = 0, invalid = 0, worst = 0;
+  bool source_not_zero = false;
+  bool ok() const
+  {
+    return reachability == 0 && invalid == 0 && !source_not_zero && max_abs <= TOLERANCE * scale;
+  }
+};
+
+Difference compare(const std::vector<double>& d, const std::vector<double>& expected, std::size_t source)
+{
+  Difference r;
+  for(double x : expected)
+    if(std::isfinite(x))
+      r.scale = (std::max)(r.scale, x);
+  for(std::size_t i = 0; i < d.size(); ++i)
+  {
+    if(std::isnan(d[i]) || d[i] < 0.)
+    {
+      ++r.invalid;
+      continue;
+    }
+    if(std::isfinite(d[i]) != std::isfinite(expected[i]))
+    {
+      ++r.reachability;
+      r.worst = i;
+      continue;
+    }
+    if(std::isfinite(d[i]) && std::abs(d[i] - expected[i]) > r.max_abs)
+    {
+      r.max_abs = std::abs(d[i] - expected[i]);
+      if(r.reachability == 0)
+        r.worst = i;
+    }
+  }
+  r.source_not_zero = !(d[source] == 0.);
+  return r;
+}
+
+void dump_mesh(const Settings& settings, std::size_t index, const Surface_mesh& mesh)
+{
+  if(settings.dump.empty())
+    return;
+  const std::string file =
+    settings.dump + "/vtp_stress_" + std::to_string(settings.seed) + "_" + std::to_string(index) + ".off";
+  std::ofstream out(file);
+  out.precision(17);
+  if(CGAL::IO::write_OFF(out, mesh))
+    std::cout << "  mesh written to " << file << std::endl;
+}
+
+struct Totals
+{
+  std::size_t cases = 0, sources = 0, comparisons = 0, failures = 0, vertices = 0;
+  double worst_vs_cgal = 0., worst_parallel = 0.;
+  double cgal_seconds = 0., vtp_seconds = 0., pvtp_seconds = 0.;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Runs one case; returns false on a failure (printed).
+bool run_case(const Settings& settings, std::size_t index, Totals& totals)
+{
+  std::ostringstream head;
+  head << "seed " << settings.seed << " case " << index;
+  set_current_case(head.str() + " (generating the mesh); reproduce with: vtp_stress --seed "
+                   + std::to_string(settings.seed) + " --case " + std::to_string(index));
+  const Case c = make_case(settings, index);
+  const std::string reproduce =
+    "reproduce with: vtp_stress --seed " + std::to_string(settings.seed) + " --case " + std::to_string(index);
+  if(settings.verbose)
+    std::cout << head.str() << ": " << c.description << std::endl;
+  const double cgal_before = totals.cgal_seconds, vtp_before = totals.vtp_seconds;
+  ++totals.cases;
+  totals.vertices += c.mesh.number_of_vertices();
+
+  bool ok = true;
+  Geodesic_distance_solver<Surface_mesh> solver(c.mesh);
+  for(const auto& source : c.sources)
+  {
+    const Vertex_index s = source.first;
+    const std::string where = head.str() + ", " + c.description + ", source " + std::to_string(std::size_t(s))
+                              + " (" + source.second + ")";
+    ++totals.sources;
+    set_current_case(where + ", CGAL shortest path; " + reproduce);
+    auto t0 = std::chrono::steady_clock::now();
+    const std::vector<double> reference = CGAL::VTP_geodesics::internal::shortest_path_reference_distances(c.mesh, s);
+    const double cgal_seconds = seconds_since(t0);
+    totals.cgal_seconds += cgal_seconds;
+
+    std::vector<double> sequential;
+    auto check = [&](const char* method, const std::vector<double>& d, const std::vector<double>& expected,
+                     const char* against) {
+      ++totals.comparisons;
+      const Difference diff = compare(d, expected, std::size_t(s));
+      const double relative = diff.scale > 0. ? diff.max_abs / diff.scale : diff.max_abs;
+      if(std::string(against) == "CGAL")
+        totals.worst_vs_cgal = (std::max)(totals.worst_vs_cgal, relative);
+      else
+        totals.worst_parallel = (std::max)(totals.worst_parallel, relative);
+      if(diff.ok())
+        return;
+      ok = false;
+      std::cout.precision(17);
+      std::cout << "vtp_stress: MISMATCH " << where << ": " << method << " vs " << against
+                << ": max |d - d_ref| = " << diff.max_abs << " = " << relative << " * max distance "
+                << diff.scale << " (tolerance " << TOLERANCE << "), " << diff.reachability
+                << " reachability mismatches, " << diff.invalid << " NaN or negative values"
+                << (diff.source_not_zero ? ", source distance not 0" : "") << "; worst vertex " << diff.worst
+                << ": d = " << d[diff.worst] << ", d_ref = " << expected[diff.worst] << "; " << reproduce
+                << std::endl;
+    };
+
+    if(settings.vtp || settings.pvtp)
+    {
+      set_current_case(where + ", vtp; " + reproduce);
+      t0 = std::chrono::steady_clock::now();
+      solver.compute_dense<CGAL::Sequential_tag>(s);
+      totals.vtp_seconds += seconds_since(t0);
+      sequential = solver.distances();
+      if(settings.vtp)
+        check("vtp", sequential, reference, "CGAL");
+    }
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+    if(settings.pvtp)
+    {
+      set_current_case(where + ", pvtp; " + reproduce);
+      Propagation_options options;
+      options.number_of_threads = 2;
+      t0 = std::chrono::steady_clock::now();
+      solver.compute_dense<CGAL::Parallel_tag>(s, options);
+      totals.pvtp_seconds += seconds_since(t0);
+      const std::vector<double> parallel = solver.distances();
+      check("pvtp", parallel, reference, "CGAL");
+      check("pvtp", parallel, sequential, "vtp");
+    }
+#endif
+  }
+  if(settings.verbose)
+    std::cout << "  " << c.sources.size() << " sources: CGAL " << totals.cgal_seconds - cgal_before << " s, vtp "
+              << totals.vtp_seconds - vtp_before << " s" << std::endl;
+  if(!ok)
+  {
+    ++totals.failures;
+    dump_mesh(settings, index, c.mesh);
+  }
+  set_current_case("(between cases)");
+  return ok;
+}
+
+// ------------------------------------------------------------------------------------------------
+// Command line
+// ------------------------------------------------------------------------------------------------
+void usage(std::ostream& os)
+{
+  os << "usage: vtp_stress [--seed S] [--cases N] [--case K] [--min-vertices v] [--max-vertices V]\n"
+        "                  [--sources P] [--methods vtp,pvtp] [--timeout T] [--dump DIR] [--verbose]\n"
+        "\n"
+        "Compares VTP (and PVTP) with CGAL::Surface_mesh_shortest_path on random meshes.\n"
+        "  --seed S          seed of the run (default 1)\n"
+        "  --cases N         number of cases, 0 .. N-1 (default 100)\n"
+        "  --case K          run case K only (to replay a failure)\n"
+        "  --min-vertices v  smallest number of vertices drawn (default 4)\n"
+        "  --max-vertices V  largest number of vertices drawn (default 200)\n"
+        "  --sources P       at most P sources per mesh (default 2)\n"
+        "  --methods M       comma-separated among vtp, pvtp (default: vtp, and pvtp if built with OpenMP)\n"
+        "  --timeout T       seconds allowed per case (default 120; 0: none)\n"
+        "  --dump DIR        write the mesh of each failing case to DIR/vtp_stress_<seed>_<case>.off\n"
+        "  --verbose         print every case\n"
+        "Exit code: 0 if every case agrees, 1 on a mismatch, 2 on a usage error, 3 on a timeout.\n";
+}
+
+std::uint64_t parse_number(const std::string& option, const char* value)
+{
+  if(value == nullptr)
+    throw std::invalid_argument("missing value for " + option);
+  const std::string s(value);
+  if(s.empty() || s.find_first_not_of("0123456789") != std::string::npos)
+    throw std::invalid_argument("invalid value '" + s + "' for " + option);
+  return std::strtoull(value, nullptr, 10);
+}
+
+Settings parse(int argc, char** argv)
+{
+  Settings s;
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+  s.pvtp = true;
+#endif
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    const char* value = (i + 1 < argc) ? argv[i + 1] : nullptr;
+    if(a == "--help" || a == "-h")
+    {
+      usage(std::cout);
+      std::exit(0);
+    }
+    else if(a == "--seed") { s.seed = parse_number(a, value); ++i; }
+    else if(a == "--cases") { s.cases = parse_number(a, value); ++i; }
+    else if(a == "--case") { s.the_case = parse_number(a, value); s.single_case = true; ++i; }
+    else if(a == "--min-vertices") { s.min_vertices = parse_number(a, value); ++i; }
+    else if(a == "--max-vertices") { s.max_vertices = parse_number(a, value); ++i; }
+    else if(a == "--sources") { s.sources = parse_number(a, value); ++i; }
+    else if(a == "--timeout") { s.timeout = static_cast<unsigned>(parse_number(a, value)); ++i; }
+    else if(a == "--dump")
+    {
+      if(value == nullptr)
+        throw std::invalid_argument("missing value for --dump");
+      s.dump = value;
+      ++i;
+    }
+    else if(a == "--verbose") s.verbose = true;
+    else if(a == "--methods")
+    {
+      if(value == nullptr)
+        throw std::invalid_argument("missing value for --methods");
+      s.vtp = s.pvtp = false;
+      std::stringstream list(value);
+      std::string m;
+      while(std::getline(list, m, ','))
+      {
+        if(m == "vtp") s.vtp = true;
+        else if(m == "pvtp")
+        {
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+          s.pvtp = true;
+#else
+          throw std::invalid_argument("pvtp needs OpenMP, and this program was built without it");
+#endif
+        }
+        else
+          throw std::invalid_argument("unknown method '" + m + "' (expected vtp or pvtp)");
+      }
+      ++i;
+    }
+    else
+      throw std::invalid_argument("unknown argument '" + a + "' (see --help)");
+  }
+  if(s.min_vertices < 4)
+    s.min_vertices = 4;
+  if(s.max_vertices < s.min_vertices)
+    throw std::invalid_argument("--max-vertices must be >= --min-vertices (and >= 4)");
+  if(!s.vtp && !s.pvtp)
+    throw std::invalid_argument("no method selected");
+  return s;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Settings settings;
+  try
+  {
+    settings = parse(argc, argv);
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "vtp_stress: error: " << e.what() << std::endl;
+    return 2;
+  }
+  install_handlers();
+
+  const auto t0 = std::chrono::steady_clock::now();
+  Totals totals;
+  const std::size_t first = settings.single_case ? settings.the_case : 0;
+  const std::size_t last = settings.single_case ? settings.the_case + 1 : settings.cases;
+  for(std::size_t k = first; k < last; ++k)
+  {
+    alarm(settings.timeout);
+    try
+    {
+      run_case(settings, k, totals);
+    }
+    catch(const std::exception& e)
+    {
+      ++totals.failures;
+      std::cout << "vtp_stress: EXCEPTION seed " << settings.seed << " case " << k << ": " << e.what()
+                << "; reproduce with: vtp_stress --seed " << settings.seed << " --case " << k << std::endl;
+    }
+    alarm(0);
+    if(!settings.verbose && (k + 1 - first) % 1000 == 0)
+      std::cout << "vtp_stress: " << (k + 1 - first) << " cases, " << totals.failures << " failing" << std::endl;
+  }
+  const double seconds = seconds_since(t0);
+
+  std::cout << "vtp_stress: seed " << settings.seed << ", " << totals.cases << " cases (" << totals.vertices
+            << " vertices), " << totals.sources << " sources, " << totals.comparisons << " comparisons, methods"
+            << (settings.vtp ? " vtp" : "") << (settings.pvtp ? " pvtp" : "") << ": " << totals.failures
+            << " failing cases; largest |d - d_cgal| / max distance " << totals.worst_vs_cgal;
+  if(settings.pvtp)
+    std::cout << ", largest |d_pvtp - d_vtp| / max distance " << totals.worst_parallel;
+  std::cout << "; " << seconds << " s (CGAL " << totals.cgal_seconds << " s, vtp " << totals.vtp_seconds << " s";
+  if(settings.pvtp)
+    std::cout << ", pvtp " << totals.pvtp_seconds << " s";
+  std::cout << ")" << std::endl;
+  return totals.failures == 0 ? 0 : 1;
+}
