@@ -260,9 +260,19 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
     const double den = cy - w.sy;
     const double xc = den > 0. ? w.sx + (cx - w.sx) * (-w.sy / den) : cx;
     scratch_xc[i] = xc;
-    const double sp = (std::min)((std::max)(xc, w.b0), w.b1);
-    const double d1x = sp - w.sx, d2x = cx - sp;
-    const double dist = w.sigma + std::sqrt(d1x * d1x + w.sy * w.sy) + std::sqrt(d2x * d2x + cy * cy);
+    // straight to C when C is seen through the window; otherwise bent at the end point, which
+    // is longer than the straight line (a lower bound that often spares the two square roots)
+    const double ex = cx - w.sx, ey = cy - w.sy;
+    double dist = w.sigma + std::sqrt(ex * ex + ey * ey);
+    double sp = xc;
+    if(!(xc >= w.b0 && xc <= w.b1))
+    {
+      if(!(dist < best))
+        continue;
+      sp = (std::min)((std::max)(xc, w.b0), w.b1);
+      const double d1x = sp - w.sx, d2x = cx - sp;
+      dist = w.sigma + std::sqrt(d1x * d1x + w.sy * w.sy) + std::sqrt(d2x * d2x + cy * cy);
+    }
     if(dist < best)
     {
       best = dist;
