@@ -426,6 +426,25 @@ TEST(Degenerate, zero_length_edges_and_collinear_vertices_planar)
     check(mesh, vertex(s), euclidean_distances(soup, s), "degenerate flat grid, source " + std::to_string(s));
 }
 
+// Triangles that are collinear up to rounding (decimal coordinates such as 0.05, 0.075, 0.15 on one line),
+// found by the fuzzer. On the flat convex hexagon the distances are Euclidean; on the height field,
+// CGAL's exact algorithm gives them (the same on the mesh subdivided twice).
+TEST(Degenerate, nearly_collinear_triangle_flat)
+{
+  const Surface_mesh mesh = load_mesh("nearly_collinear_flat.off");
+  const Polygon_soup soup = to_soup(mesh);
+  for(std::size_t s = 0; s < soup.points.size(); ++s)
+    check(mesh, vertex(s), euclidean_distances(soup, s), "nearly collinear triangle, flat, source " + std::to_string(s));
+}
+
+TEST(Degenerate, nearly_collinear_triangle_height_field)
+{
+  const Surface_mesh mesh = load_mesh("nearly_collinear_height_field.off");
+  for(std::size_t s : {0, 5, 6, 11, 17, 24})
+    check(mesh, vertex(s), shortest_path_reference_distances(mesh, vertex(s)),
+          "nearly collinear triangle, height field, source " + std::to_string(s));
+}
+
 namespace {
 
 // Splits the edge (a, b) of the two faces (a, b, c) and (b, a, d) of `soup` at a new vertex m placed at
@@ -688,6 +707,24 @@ TEST(Needle_and_cap, height_field_with_needles_and_caps_matches_cgal)
   for(std::size_t s : {grid_vertex(nx, 0, 0), grid_vertex(nx, 7, 5), grid_vertex(nx, 6, 3), grid_vertex(nx, 14, 10)})
     check(mesh, vertex(s), shortest_path_reference_distances(mesh, vertex(s)),
           "height field with needles and caps, source " + std::to_string(s));
+}
+
+// A flat 5 x 3 grid of squares of side 10 whose diagonals are all parallel (found by the fuzzer): the
+// domain is a rectangle, so the distances are Euclidean. (CGAL 5.5's Surface_mesh_shortest_path gets
+// 58.416 instead of sqrt(3400) = 58.3095 between the corners (-5,-5) and (45,25): its path bends at
+// the vertex (15,5).)
+TEST(Flat_domain, grid_with_parallel_diagonals)
+{
+  Polygon_soup soup;
+  for(int j = 0; j < 4; ++j)
+    for(int i = 0; i < 6; ++i)
+      soup.points.push_back(Point_3(-5 + 10 * i, -5 + 10 * j, -1));
+  for(std::size_t j = 0; j < 3; ++j)
+    for(std::size_t i = 0; i < 5; ++i)
+      add_cell(soup, j * 6 + i, j * 6 + i + 1, j * 6 + i + 7, j * 6 + i + 6, false);
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  for(std::size_t s = 0; s < soup.points.size(); ++s)
+    check(mesh, vertex(s), euclidean_distances(soup, s), "flat grid with parallel diagonals, source " + std::to_string(s));
 }
 
 // ---------------------------------------------------------------------------------------------------
