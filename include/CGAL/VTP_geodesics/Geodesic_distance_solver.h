@@ -85,13 +85,15 @@ private:
 
 public:
   /// builds the per-mesh data of `tm`, with the vertex point map `get(CGAL::vertex_point, tm)`.
-  /// \throws Invalid_input_error if `tm` is not a triangle mesh or an edge length is not finite.
+  /// \throws Invalid_input_error if `tm` is not a triangle mesh, an edge length is not finite, or `tm` has
+  /// more than 2^31 - 1 vertices or (2^31 - 1) / 3 faces.
   explicit Geodesic_distance_solver(const TriangleMesh& tm)
     : Geodesic_distance_solver(tm, get(CGAL::vertex_point, tm))
   {}
 
   /// builds the per-mesh data of `tm` with the vertex point map `vpm` and the traits `traits`.
-  /// \throws Invalid_input_error if `tm` is not a triangle mesh or an edge length is not finite.
+  /// \throws Invalid_input_error if `tm` is not a triangle mesh, an edge length is not finite, or `tm` has
+  /// more than 2^31 - 1 vertices or (2^31 - 1) / 3 faces.
   Geodesic_distance_solver(const TriangleMesh& tm, Vertex_point_map vpm, const Geom_traits& traits = Geom_traits())
     : m_tm(tm), m_vpm(vpm), m_traits(traits),
       m_vertex_id(get(CGAL::dynamic_vertex_property_t<Index>(), tm))
@@ -177,6 +179,12 @@ private:
     const auto t0 = std::chrono::steady_clock::now();
     if(!CGAL::is_triangle_mesh(m_tm))
       throw Invalid_input_error("the mesh is not a triangle mesh (some face is not a triangle)");
+    // The per-mesh arrays number vertices and half-edges with 32-bit integers.
+    const std::size_t max_index = static_cast<std::size_t>((std::numeric_limits<Index>::max)());
+    if(static_cast<std::size_t>(num_vertices(m_tm)) > max_index
+       || static_cast<std::size_t>(num_faces(m_tm)) > max_index / 3)
+      throw Invalid_input_error("the mesh is too large (more than " + std::to_string(max_index) + " vertices or "
+                                + std::to_string(max_index / 3) + " faces)");
 
     typename Geom_traits::Compute_squared_distance_3 sqd = m_traits.compute_squared_distance_3_object();
 
