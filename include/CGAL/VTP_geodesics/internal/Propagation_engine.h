@@ -23,12 +23,14 @@
 #include <CGAL/tags.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
 #include <type_traits>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -39,6 +41,40 @@
 namespace CGAL {
 namespace VTP_geodesics {
 namespace internal {
+
+// A barrier for the threads of the parallel scheduling. A waiting thread spins briefly, then
+// yields the processor at each check: on an idle machine it reacts at once, and on a busy one the
+// thread it waits for gets its core back instead of competing with a spinning neighbour.
+class Yielding_barrier
+{
+public:
+  void reset(int n)
+  {
+    m_n = n;
+    m_count.store(0, std::memory_order_relaxed);
+    m_generation.store(0, std::memory_order_relaxed);
+  }
+
+  void wait()
+  {
+    const unsigned generation = m_generation.load(std::memory_order_acquire);
+    if(m_count.fetch_add(1, std::memory_order_acq_rel) + 1 == m_n)
+    {
+      m_count.store(0, std::memory_order_relaxed);
+      m_generation.fetch_add(1, std::memory_order_acq_rel);
+      return;
+    }
+    int spins = 0;
+    while(m_generation.load(std::memory_order_acquire) == generation)
+      if(++spins > 100)
+        std::this_thread::yield();
+  }
+
+private:
+  int m_n = 1;
+  std::atomic<int> m_count{ 0 };
+  std::atomic<unsigned> m_generation{ 0 };
+};
 
 // The propagation engine: one loop, two orthogonal policies.
 //
@@ -90,7 +126,10 @@ public:
     }
     start(m, s, options, dist, static_cast<std::size_t>(threads));
     if(parallel)
+    {
       run_parallel(threads);
+      threads = m_threads;
+    }
     else
       run_sequential();
     const bool approximate = m_reset_step < std::numeric_limits<double>::infinity();
@@ -291,7 +330,7 @@ private:
   }
 
   // The same from a thread of the parallel merge: pool p, and the lists to queue are collected
-  // in `to_queue` (the caller owns every list it writes, see propagate_rounds()).
+  // in `to_queue` (the caller owns every list it writes, see merge_phase()).
   std::size_t store_children(Index h, const Window* begin, const Window* end, std::size_t p,
                              std::vector<Index>& to_queue)
   {
@@ -437,41 +476,105 @@ private:
     m_updated_large = m_updated_small = 0;
     m_scratch.resize(static_cast<std::size_t>(threads));
     for(Scratch& s : m_scratch)
-      s.propagated = 0;
-
-    const std::size_t max_lists = 100 * static_cast<std::size_t>(threads);
-    long long k_ad = threads;
+      s.propagated = s.created = 0;
+    m_threads = threads;
+    m_in_selection = false;
+    m_k_ad = 0;
 
     seed();
-    propagate_rounds(threads);
-    while(m_bucket_pending > 0)
+
+    // One team for the whole propagation. Thread 0 does the sequential steps (selection, the
+    // short tail of each round, and the rounds too small to share); the team meets only for the
+    // two parallel phases of the large rounds, at a barrier that yields the processor while it
+    // waits (so that a thread descheduled by other work on the machine gets its core back).
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads) if(threads > 1)
+#endif
     {
-      // K-window-list selection: up to k_ad vertices, and at most 100 T lists
-      m_updated_large = m_updated_small = 0;
-      long long popped = 0;
-      Entry e;
-      double last = 0.;
-      const auto ts = std::chrono::steady_clock::now();
-      while(popped < k_ad && m_fifo.size() < max_lists && bucket_pop(e))
+      int t = 0;
+#ifdef _OPENMP
+      t = omp_get_thread_num();
+      // the runtime may give fewer threads than asked for: the team is what we got
+#pragma omp single
       {
-        if(take_vertex(e.second, e.first))
-        {
-          ++popped;
-          last = e.first;
-        }
+        m_threads = omp_get_num_threads();
+        m_barrier.reset(m_threads);
       }
-      // distances are compared with the end of the last bucket popped from (Eq. 5)
-      m_round_limit = (std::floor(last * m_inv_bucket_width) + 1.) / m_inv_bucket_width;
-      m_selection_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count();
-      propagate_rounds(threads);
-      k_ad = k_ad + static_cast<long long>(m_updated_large) - static_cast<long long>(m_updated_small);
-      k_ad = (std::max)(k_ad, static_cast<long long>(threads));
-      k_ad = (std::min)(k_ad, static_cast<long long>(m.nv) + 1);
+#else
+      m_barrier.reset(1);
+#endif
+      const bool team = m_threads > 1;
+      for(;;)
+      {
+        if(t == 0)
+          m_team_has_round = next_parallel_round();
+        if(team)
+          m_barrier.wait();
+        if(!m_team_has_round)
+          break;
+        propagation_phase(t);
+        if(team)
+          m_barrier.wait();
+        merge_phase(t);
+        if(team)
+          m_barrier.wait();
+        if(t == 0)
+          finish_round();
+      }
     }
     for(Scratch& s : m_scratch)
     {
       m_propagated += s.propagated;
       s.propagated = 0;
+    }
+  }
+
+  // Thread 0: runs the sequential steps until a round large enough for the team is ready
+  // (returns true), or the propagation is over (returns false).
+  bool next_parallel_round()
+  {
+    const Mesh_arrays& m = *m_mesh;
+    if(m_k_ad < m_threads)
+      m_k_ad = m_threads;
+    const std::size_t max_lists = 100 * static_cast<std::size_t>(m_threads);
+    for(;;)
+    {
+      if(m_fifo.empty())
+      {
+        if(m_in_selection)
+        {
+          // Eq. 5: more vertices next time if the wavefront moved ahead, fewer if it fell back
+          m_k_ad += static_cast<long long>(m_updated_large) - static_cast<long long>(m_updated_small);
+          m_k_ad = (std::max)(m_k_ad, static_cast<long long>(m_threads));
+          m_k_ad = (std::min)(m_k_ad, static_cast<long long>(m.nv) + 1);
+          m_in_selection = false;
+        }
+        if(m_bucket_pending == 0)
+          return false;
+        // K-window-list selection: up to k_ad vertices, and at most 100 T lists
+        const auto ts = std::chrono::steady_clock::now();
+        m_updated_large = m_updated_small = 0;
+        long long popped = 0;
+        Entry e;
+        double last = 0.;
+        while(popped < m_k_ad && m_fifo.size() < max_lists && bucket_pop(e))
+          if(take_vertex(e.second, e.first))
+          {
+            ++popped;
+            last = e.first;
+          }
+        // distances are compared with the end of the last bucket popped from (Eq. 5)
+        m_round_limit = (std::floor(last * m_inv_bucket_width) + 1.) / m_inv_bucket_width;
+        m_in_selection = true;
+        m_selection_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count();
+        continue;
+      }
+      start_round();
+      if(m_team > 1)
+        return true;
+      propagation_phase(0);
+      merge_phase(0);
+      finish_round();
     }
   }
 
@@ -483,119 +586,129 @@ private:
     double distance_to_C;
   };
 
-  // Propagates the queued lists in parallel, merges, and repeats while lists are fed inside the
-  // swept region (the dual arrays A_from / A_to).
+  // A round propagates the queued lists (the array A_from) and merges their output; the lists it
+  // feeds inside the swept region make the next round (A_to), until none is left.
   //
-  // Phase 1 (parallel over lists): each list is copied out of the storage and freed, filtered
-  // and propagated; its children and the distance it offers go to its own slot.
-  // Phase 2 (parallel over groups of faces): the children of the lists of face f only go to the
-  // lists of the half-edges opposite to the edges of f, which no other face writes to. So the
+  // Propagation phase (parallel over lists): each list is copied out of the storage and freed,
+  // filtered and propagated; its children and the distance it offers go to its own slot.
+  // Merge phase (parallel over groups of faces): the children of the lists of face f only go to
+  // the lists of the half-edges opposite to the edges of f, which no other face writes to. So the
   // slots are grouped by face (f mod G), and a thread merges a whole group, in list order
-  // (Rule 3), with blocks of its own pool. Phase 3 (serial, one step per list): distances
-  // lowered and lists queued in a fixed order. The result does not depend on thread timing.
-  void propagate_rounds(int threads)
+  // (Rule 3), with blocks of its own pool. The tail (thread 0, one step per list) lowers the
+  // distances and queues the lists in a fixed order. The result does not depend on thread timing.
+  void start_round()
+  {
+    m_round_start = std::chrono::steady_clock::now();
+    m_from.swap(m_fifo);
+    m_fifo.clear();
+    for(Index h : m_from)
+      m_queued[h] = 0;
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_from.size());
+    m_slots.resize(m_from.size());
+    // small arrays are not worth waking the team: same work, same result, one thread
+    m_team = (n >= 4 * static_cast<std::ptrdiff_t>(m_threads)) ? m_threads : 1;
+    ++m_rounds;
+    if(m_team > 1)
+      ++m_parallel_rounds;
+    // merge groups: the slots of the lists of a face all fall in the same group (face mod G),
+    // kept in list order (a stable counting sort)
+    m_groups = (m_team > 1) ? 8 * static_cast<std::ptrdiff_t>(m_team) : 1;
+    const std::size_t groups = static_cast<std::size_t>(m_groups);
+    m_group_begin.assign(groups + 1, 0);
+    for(Index h : m_from)
+      ++m_group_begin[static_cast<std::size_t>(Mesh_arrays::face(h)) % groups + 1];
+    for(std::size_t g = 0; g < groups; ++g)
+      m_group_begin[g + 1] += m_group_begin[g];
+    m_group_slots.resize(m_from.size());
+    m_group_fill.assign(m_group_begin.begin(), m_group_begin.end() - 1);
+    for(std::size_t i = 0; i < m_from.size(); ++i)
+      m_group_slots[m_group_fill[static_cast<std::size_t>(Mesh_arrays::face(m_from[i])) % groups]++] = i;
+    if(m_group_queue.size() < groups)
+      m_group_queue.resize(groups);
+    for(Scratch& s : m_scratch)
+      s.out_ac.clear();
+    m_next_list.store(0, std::memory_order_relaxed);
+    m_next_group.store(0, std::memory_order_relaxed);
+  }
+
+  void propagation_phase(int t)
+  {
+    if(t >= m_team)
+      return;
+    Scratch& s = m_scratch[static_cast<std::size_t>(t)];
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_from.size());
+    for(;;)
+    {
+      const std::ptrdiff_t first = m_next_list.fetch_add(2, std::memory_order_relaxed);
+      if(first >= n)
+        break;
+      for(std::ptrdiff_t i = first; i < (std::min)(first + 2, n); ++i)
+      {
+        const Index h = m_from[static_cast<std::size_t>(i)];
+        s.in.clear();
+        m_store.take(h, s.in, static_cast<std::size_t>(t));
+        s.out_cb.clear();
+        Slot& slot = m_slots[static_cast<std::size_t>(i)];
+        slot.thread = t;
+        // children on A-C are appended to out_ac directly, those on C-B after them
+        const std::size_t before = s.out_ac.size();
+        slot.begin = before;
+        slot.distance_to_C = propagate_one(h, s);
+        slot.n_ac = static_cast<std::uint32_t>(s.out_ac.size() - before);
+        slot.n_cb = static_cast<std::uint32_t>(s.out_cb.size());
+        s.out_ac.insert(s.out_ac.end(), s.out_cb.begin(), s.out_cb.end());
+      }
+    }
+  }
+
+  void merge_phase(int t)
+  {
+    if(t >= m_team)
+      return;
+    const Mesh_arrays& m = *m_mesh;
+    Scratch& s = m_scratch[static_cast<std::size_t>(t)];
+    for(;;)
+    {
+      const std::ptrdiff_t g = m_next_group.fetch_add(1, std::memory_order_relaxed);
+      if(g >= m_groups)
+        break;
+      std::vector<Index>& to_queue = m_group_queue[static_cast<std::size_t>(g)];
+      to_queue.clear();
+      for(std::size_t k = m_group_begin[static_cast<std::size_t>(g)];
+          k < m_group_begin[static_cast<std::size_t>(g) + 1]; ++k)
+      {
+        const std::size_t i = m_group_slots[k];
+        const Index h = m_from[i];
+        const Slot& slot = m_slots[i];
+        const Window* w = m_scratch[static_cast<std::size_t>(slot.thread)].out_ac.data() + slot.begin;
+        s.created += store_children(m.opposite[Mesh_arrays::prev(h)], w, w + slot.n_ac,
+                                    static_cast<std::size_t>(t), to_queue);
+        s.created += store_children(m.opposite[Mesh_arrays::next(h)], w + slot.n_ac,
+                                    w + slot.n_ac + slot.n_cb, static_cast<std::size_t>(t), to_queue);
+      }
+    }
+  }
+
+  void finish_round()
   {
     const Mesh_arrays& m = *m_mesh;
-    while(!m_fifo.empty())
+    const auto tm = std::chrono::steady_clock::now();
+    m_propagation_seconds += std::chrono::duration<double>(tm - m_round_start).count();
+    for(std::size_t i = 0; i < m_from.size(); ++i)
+      light(m.source[Mesh_arrays::prev(m_from[i])], m_slots[i].distance_to_C);
+    for(std::ptrdiff_t g = 0; g < m_groups; ++g)
     {
-      m_from.swap(m_fifo);
-      m_fifo.clear();
-      for(Index h : m_from)
-        m_queued[h] = 0;
-      const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_from.size());
-      m_slots.resize(m_from.size());
-      const auto tp = std::chrono::steady_clock::now();
-      // small arrays are not worth waking the threads: same work, same result, one thread
-      const int team = (n >= 4 * static_cast<std::ptrdiff_t>(threads)) ? threads : 1;
-      ++m_rounds;
-      if(team > 1)
-        ++m_parallel_rounds;
-      // merge groups: the slots of the lists of a face all fall in the same group (face mod G),
-      // kept in list order (a stable counting sort)
-      const std::ptrdiff_t groups = (team > 1) ? 8 * team : 1;
-      m_group_begin.assign(static_cast<std::size_t>(groups) + 1, 0);
-      for(Index h : m_from)
-        ++m_group_begin[static_cast<std::size_t>(Mesh_arrays::face(h) % groups) + 1];
-      for(std::ptrdiff_t g = 0; g < groups; ++g)
-        m_group_begin[static_cast<std::size_t>(g) + 1] += m_group_begin[static_cast<std::size_t>(g)];
-      m_group_slots.resize(m_from.size());
-      {
-        m_group_fill.assign(m_group_begin.begin(), m_group_begin.end() - 1);
-        for(std::size_t i = 0; i < m_from.size(); ++i)
-          m_group_slots[m_group_fill[static_cast<std::size_t>(Mesh_arrays::face(m_from[i]) % groups)]++] = i;
-      }
-      if(m_group_queue.size() < static_cast<std::size_t>(groups))
-        m_group_queue.resize(static_cast<std::size_t>(groups));
-#ifdef _OPENMP
-#pragma omp parallel num_threads(team) if(team > 1)
-#endif
-      {
-        int t = 0;
-#ifdef _OPENMP
-        t = omp_get_thread_num();
-#endif
-        Scratch& s = m_scratch[static_cast<std::size_t>(t)];
-        s.out_ac.clear();
-#ifdef _OPENMP
-#pragma omp for schedule(dynamic, 2)
-#endif
-        for(std::ptrdiff_t i = 0; i < n; ++i)
-        {
-          const Index h = m_from[static_cast<std::size_t>(i)];
-          s.in.clear();
-          m_store.take(h, s.in, static_cast<std::size_t>(t));
-          s.out_cb.clear();
-          Slot& slot = m_slots[static_cast<std::size_t>(i)];
-          slot.thread = t;
-          // children on A-C are appended to out_ac directly, those on C-B after them
-          const std::size_t before = s.out_ac.size();
-          slot.begin = before;
-          slot.distance_to_C = propagate_one(h, s);
-          slot.n_ac = static_cast<std::uint32_t>(s.out_ac.size() - before);
-          slot.n_cb = static_cast<std::uint32_t>(s.out_cb.size());
-          s.out_ac.insert(s.out_ac.end(), s.out_cb.begin(), s.out_cb.end());
-        }
-        // (implicit barrier: all slots are written, all propagated lists are empty)
-#ifdef _OPENMP
-#pragma omp for schedule(dynamic, 1)
-#endif
-        for(std::ptrdiff_t g = 0; g < groups; ++g)
-        {
-          std::vector<Index>& to_queue = m_group_queue[static_cast<std::size_t>(g)];
-          to_queue.clear();
-          for(std::size_t k = m_group_begin[static_cast<std::size_t>(g)];
-              k < m_group_begin[static_cast<std::size_t>(g) + 1]; ++k)
-          {
-            const std::size_t i = m_group_slots[k];
-            const Index h = m_from[i];
-            const Slot& slot = m_slots[i];
-            const Window* w = m_scratch[static_cast<std::size_t>(slot.thread)].out_ac.data() + slot.begin;
-            s.created += store_children(m.opposite[Mesh_arrays::prev(h)], w, w + slot.n_ac,
-                                        static_cast<std::size_t>(t), to_queue);
-            s.created += store_children(m.opposite[Mesh_arrays::next(h)], w + slot.n_ac,
-                                        w + slot.n_ac + slot.n_cb, static_cast<std::size_t>(t), to_queue);
-          }
-        }
-      }
-      const auto tm = std::chrono::steady_clock::now();
-      m_propagation_seconds += std::chrono::duration<double>(tm - tp).count();
-
-      for(std::size_t i = 0; i < m_from.size(); ++i)
-        light(m.source[Mesh_arrays::prev(m_from[i])], m_slots[i].distance_to_C);
-      for(std::ptrdiff_t g = 0; g < groups; ++g)
-      {
-        const std::vector<Index>& q = m_group_queue[static_cast<std::size_t>(g)];
-        m_fifo.insert(m_fifo.end(), q.begin(), q.end());
-      }
-      for(int t = 0; t < team; ++t)
-      {
-        m_created += m_scratch[static_cast<std::size_t>(t)].created;
-        m_scratch[static_cast<std::size_t>(t)].created = 0;
-      }
-      m_store.update_peaks();
-      m_from.clear();
-      m_merge_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tm).count();
+      const std::vector<Index>& q = m_group_queue[static_cast<std::size_t>(g)];
+      m_fifo.insert(m_fifo.end(), q.begin(), q.end());
     }
+    for(int t = 0; t < m_team; ++t)
+    {
+      m_created += m_scratch[static_cast<std::size_t>(t)].created;
+      m_scratch[static_cast<std::size_t>(t)].created = 0;
+    }
+    m_store.update_peaks();
+    m_from.clear();
+    m_merge_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tm).count();
   }
 
   // ------------------------------------------------------------------------------------------
@@ -681,6 +794,14 @@ private:
   std::vector<Scratch> m_scratch;
   std::vector<Index> m_from;
   std::vector<Slot> m_slots;
+  int m_threads = 1, m_team = 1;
+  std::ptrdiff_t m_groups = 1;
+  long long m_k_ad = 1;
+  bool m_in_selection = false;
+  bool m_team_has_round = false;
+  std::chrono::steady_clock::time_point m_round_start;
+  std::atomic<std::ptrdiff_t> m_next_list{ 0 }, m_next_group{ 0 };
+  Yielding_barrier m_barrier;
   std::vector<std::size_t> m_group_begin, m_group_fill, m_group_slots;
   std::vector<std::vector<Index> > m_group_queue;
 
