@@ -163,16 +163,12 @@ inline Polygon_soup random_closed_surface(std::size_t n, Random& random, std::st
   const double axes[3] = {random.uniform(0.3, 3.), random.uniform(0.3, 3.), random.uniform(0.3, 3.)};
   const double bump = random.chance(0.3) ? 0. : random.uniform(0., 0.35);
   std::vector<Point_3> points;
-  for(std::size_t i = 0; i < (std::max)(n, std::size_t(4)); ++i)
+  while(points.size() < (std::max)(n, std::size_t(4)))
   {
-    double x = random.normal(), y = random.normal(), z = random.normal();
+    const double x = random.normal(), y = random.normal(), z = random.normal();
     const double r = std::sqrt(x * x + y * y + z * z);
-    if(!(r > 1e-6))
-    {
-      --i;
-      continue;
-    }
-    points.push_back(Point_3(axes[0] * x / r, axes[1] * y / r, axes[2] * z / r));
+    if(r > 1e-6) // a uniform direction
+      points.push_back(Point_3(axes[0] * x / r, axes[1] * y / r, axes[2] * z / r));
   }
   Surface_mesh hull;
   CGAL::convex_hull_3(points.begin(), points.end(), hull);

@@ -143,13 +143,8 @@ triangle_mesh_from_soup(std::vector<Point> points,
     report.repaired = true;
     const std::vector<Point> input_points = points;
     const std::size_t input_polygons = polygons.size();
-    std::size_t distinct_points = 0;
-    {
-      Point_index distinct;
-      for(const Point& p : points)
-        distinct.emplace(p, 0);
-      distinct_points = distinct.size();
-    }
+    const std::size_t distinct_points =
+      std::set<Point, typename Kernel::Less_xyz_3>(points.begin(), points.end()).size();
 
     PMP::repair_polygon_soup(points, polygons);
     report.merged_points = n - distinct_points;
