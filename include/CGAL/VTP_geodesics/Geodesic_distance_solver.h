@@ -135,6 +135,12 @@ public:
     const Index s = checked_vertex_id(source);
     check_options(options);
     m_engine.template run<ConcurrencyTag>(m_arrays, s, options, m_distances, m_statistics);
+    if(m_length_scale != 1.)
+    {
+      for(double& d : m_distances)
+        d *= m_length_scale;
+      m_statistics.max_distance *= m_length_scale;
+    }
     return m_statistics;
   }
 
@@ -155,7 +161,7 @@ public:
   std::size_t number_of_vertices() const { return m_vertices.size(); }
   std::size_t number_of_faces() const { return static_cast<std::size_t>(m_arrays.nf); }
   /// mean edge length `h` of the mesh.
-  double mean_edge_length() const { return m_arrays.mean_edge_length; }
+  double mean_edge_length() const { return m_arrays.mean_edge_length * m_length_scale; }
   /// anisotropy degree `tau` of the mesh (1 for equilateral triangles).
   double anisotropy() const { return m_arrays.anisotropy; }
   /// number of saddle or boundary vertices (pseudo-source candidates).
@@ -222,6 +228,18 @@ private:
         throw Invalid_input_error("the mesh has an edge of non-finite length (non-finite or too large coordinates)");
       len[i] = l;
     }
+    // The engine works on lengths scaled by a power of two (exact in floating point) that brings the
+    // longest edge into [0.5, 1): its squares and fourth powers can then neither overflow nor
+    // underflow, whatever the scale of the coordinates. Distances are scaled back on output.
+    double longest = 0.;
+    for(double l : len)
+      longest = (std::max)(longest, l);
+    int exponent = 0;
+    if(longest > 0.)
+      std::frexp(longest, &exponent);
+    m_length_scale = std::ldexp(1., exponent);
+    for(double& l : len)
+      l = std::ldexp(l, -exponent);
     m_arrays.build(nv, std::move(tri), std::move(opp), len);
     m_distances.assign(static_cast<std::size_t>(nv), std::numeric_limits<double>::infinity());
     m_preprocessing_seconds =
@@ -262,6 +280,7 @@ private:
   std::vector<double> m_distances;
   Propagation_statistics m_statistics;
   double m_preprocessing_seconds = 0.;
+  double m_length_scale = 1.; // the engine's unit of length (a power of two)
 };
 
 } // namespace VTP_geodesics

@@ -150,6 +150,19 @@ struct Mesh_arrays
     is_pseudo_source.assign(nv, 0);
     for(Index v = 0; v < nv; ++v)
       is_pseudo_source[v] = (is_boundary[v] || angle_sum[v] > two_pi + 1e-9) ? 1 : 0;
+    // Windows cannot cross a face of (almost) zero area or an edge of zero length, and the angles
+    // of such a face are meaningless: its vertices are made pseudo-sources, so that the paths
+    // through them are not lost.
+    for(Index f = 0; f < nf; ++f)
+    {
+      const Halfedge_geometry& g = geometry[3 * f];
+      const double lmax = (std::max)(g.length, (std::max)(g.l_next, g.l_prev));
+      const double lmin = (std::min)(g.length, (std::min)(g.l_next, g.l_prev));
+      if(lmin > 0. && g.cy * g.length > 1e-12 * lmax * lmax)
+        continue;
+      for(Index k = 0; k < 3; ++k)
+        is_pseudo_source[source[3 * f + k]] = 1;
+    }
     compute_anisotropy();
   }
 
