@@ -706,6 +706,7 @@ private:
       m_created += m_scratch[static_cast<std::size_t>(t)].created;
       m_scratch[static_cast<std::size_t>(t)].created = 0;
     }
+    m_store.flush_returns();
     m_store.update_peaks();
     m_from.clear();
     m_merge_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tm).count();

@@ -65,6 +65,8 @@ public:
     m_tail.assign(number_of_halfedges, NO_INDEX);
     m_pools.clear();
     m_pools.resize(number_of_pools);
+    for(Pool& pool : m_pools)
+      pool.returns.assign(number_of_pools, Bin());
     m_peak_live = 0;
     m_peak_blocks = 0;
   }
@@ -110,7 +112,10 @@ public:
     }
   }
 
-  // Deletes the windows of the list of h; the blocks go to pool p.
+  // Deletes the windows of the list of h, from the thread that owns pool p. A block goes back to
+  // the free list of the pool it came from: directly if that is pool p, otherwise through a
+  // return bin of pool p, emptied by flush_returns() at the next sequential step. So no pool
+  // keeps growing while another one hoards free blocks.
   void clear(Index h, std::size_t p = 0)
   {
     Pool& pool = m_pools[p];
@@ -119,13 +124,40 @@ public:
     {
       Block& blk = block(b);
       pool.live -= static_cast<long long>(blk.count);
-      const Index nb = blk.next;
-      blk.next = pool.free;
-      pool.free = b;
       --pool.in_use;
+      const Index nb = blk.next;
+      const std::size_t owner = static_cast<std::size_t>(b) >> POOL_SHIFT;
+      if(owner == p)
+      {
+        blk.next = pool.free;
+        pool.free = b;
+      }
+      else
+      {
+        Bin& bin = pool.returns[owner];
+        blk.next = bin.head;
+        if(bin.head == NO_INDEX)
+          bin.tail = b;
+        bin.head = b;
+      }
       b = nb;
     }
     m_head[h] = m_tail[h] = NO_INDEX;
+  }
+
+  // Gives the blocks in the return bins back to their pools (call when no other thread works).
+  void flush_returns()
+  {
+    for(Pool& pool : m_pools)
+      for(std::size_t owner = 0; owner < pool.returns.size(); ++owner)
+      {
+        Bin& bin = pool.returns[owner];
+        if(bin.head == NO_INDEX)
+          continue;
+        block(bin.tail).next = m_pools[owner].free;
+        m_pools[owner].free = bin.head;
+        bin.head = bin.tail = NO_INDEX;
+      }
   }
 
   // Number of windows alive; records the peaks. The sequential scheduling calls it after every
@@ -163,6 +195,11 @@ private:
 
   static const std::size_t MAX_SLABS = (std::size_t(1) << POOL_SHIFT) / SLAB;
 
+  struct Bin
+  {
+    Index head = NO_INDEX, tail = NO_INDEX;
+  };
+
   // The table of slabs of a pool has a fixed size, so that adding a slab never moves the
   // pointers that other threads read to reach blocks of this pool.
   struct Pool
@@ -171,8 +208,9 @@ private:
     std::size_t number_of_slabs = 0;
     std::size_t number_of_blocks = 0;
     Index free = NO_INDEX;
-    long long live = 0;    // may be negative in one pool: blocks can be freed into another pool
+    long long live = 0;    // may be negative in one pool: blocks can be freed by another thread
     long long in_use = 0;
+    std::vector<Bin> returns;  // blocks of other pools freed by this pool's thread
   };
 
   Block& block(Index b)
