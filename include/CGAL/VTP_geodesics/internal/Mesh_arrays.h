@@ -195,12 +195,11 @@ struct Mesh_arrays
     for(Index f = 0; f < nf; ++f)
     {
       const double a = geometry[3 * f].length, b = geometry[3 * f].l_next, c = geometry[3 * f].l_prev;
-      const double s = 0.5 * (a + b + c);
-      const double area2 = s * (s - a) * (s - b) * (s - c);
+      const double area = triangle_area(a, b, c);
       const double lmax = (std::max)(a, (std::max)(b, c));
-      if(!(area2 > 0.) || !(s > 0.))
+      if(!(area > 0.))
         continue;
-      const double inradius = std::sqrt(area2) / s;
+      const double inradius = 2. * area / (a + b + c);
       const double q = lmax / (2. * std::sqrt(3.) * inradius);
       acc += (std::min)(q, 1e3);
       ++n;

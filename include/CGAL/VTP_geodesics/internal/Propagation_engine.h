@@ -318,19 +318,9 @@ private:
     }
   }
 
-  void store_children(Index h, const Window* begin, const Window* end)
-  {
-    if(begin == end)
-      return;
-    for(const Window* w = begin; w != end; ++w)
-      m_store.push(h, *w);
-    m_created += static_cast<std::size_t>(end - begin);
-    if(m_swept[Mesh_arrays::face(h)])
-      enqueue(h);
-  }
-
-  // The same from a thread of the parallel merge: pool p, and the lists to queue are collected
-  // in `to_queue` (the caller owns every list it writes, see merge_phase()).
+  // Appends children to the list of h with blocks of pool p; if the face of h is swept, h is
+  // queued into `to_queue` (m_fifo, or a merge group's queue: the caller owns every list it
+  // writes, see merge_phase()). Returns the number of windows stored.
   std::size_t store_children(Index h, const Window* begin, const Window* end, std::size_t p,
                              std::vector<Index>& to_queue)
   {
@@ -408,8 +398,10 @@ private:
       s.out_cb.clear();
       const double dc = propagate_one(h, s);
       light(m.source[Mesh_arrays::prev(h)], dc);
-      store_children(m.opposite[Mesh_arrays::prev(h)], s.out_ac.data(), s.out_ac.data() + s.out_ac.size());
-      store_children(m.opposite[Mesh_arrays::next(h)], s.out_cb.data(), s.out_cb.data() + s.out_cb.size());
+      m_created += store_children(m.opposite[Mesh_arrays::prev(h)], s.out_ac.data(),
+                                  s.out_ac.data() + s.out_ac.size(), 0, m_fifo);
+      m_created += store_children(m.opposite[Mesh_arrays::next(h)], s.out_cb.data(),
+                                  s.out_cb.data() + s.out_cb.size(), 0, m_fifo);
       m_store.update_peaks();
     }
     m_propagated += s.propagated;
