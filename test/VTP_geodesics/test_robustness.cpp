@@ -360,10 +360,6 @@ TEST(Components, single_triangle)
 // the corner (2,0) or (5,0).
 TEST(Degenerate, zero_area_triangles_analytic)
 {
-  // Known engine limitation (issue 5 is open): a vertex lying inside an edge of a neighbouring face (through a zero-area face) does not yet emit windows into that face.
-  // The test keeps its expected values; run it with VTP_RUN_KNOWN_FAILURES=1.
-  if(std::getenv("VTP_RUN_KNOWN_FAILURES") == nullptr)
-    GTEST_SKIP() << "known engine limitation: a vertex lying inside an edge of a neighbouring face (through a zero-area face) does not yet emit windows into that face";
   Polygon_soup soup;
   soup.points = {Point_3(4, -2, 0), Point_3(6, 0, 0), Point_3(4, 0, 0), Point_3(2, 0, 0),
                  Point_3(1, 0, 0),  Point_3(3, 0, 0), Point_3(5, 0, 0), Point_3(3, 2, 0)};
@@ -410,10 +406,6 @@ TEST(Degenerate, coincident_vertices_in_a_flat_grid)
 // the distances are Euclidean.
 TEST(Degenerate, zero_length_edges_and_collinear_vertices_planar)
 {
-  // Known engine limitation (issue 5 is open): a vertex lying inside an edge of a neighbouring face (through a zero-area face) does not yet emit windows into that face.
-  // The test keeps its expected values; run it with VTP_RUN_KNOWN_FAILURES=1.
-  if(std::getenv("VTP_RUN_KNOWN_FAILURES") == nullptr)
-    GTEST_SKIP() << "known engine limitation: a vertex lying inside an edge of a neighbouring face (through a zero-area face) does not yet emit windows into that face";
   const int n = 8;
   Polygon_soup soup = planar_grid(n, n, double(n), double(n));
   auto at = [&](int i, int j) -> Point_3& { return soup.points[grid_vertex(n, i, j)]; };
@@ -440,10 +432,6 @@ TEST(Degenerate, zero_length_edges_and_collinear_vertices_planar)
 // CGAL's exact algorithm gives them (the same on the mesh subdivided twice).
 TEST(Degenerate, nearly_collinear_triangle_flat)
 {
-  // Known engine limitation (issue 5 is open): triangles collinear up to rounding (corner sine about 1e-17) still lose paths.
-  // The test keeps its expected values; run it with VTP_RUN_KNOWN_FAILURES=1.
-  if(std::getenv("VTP_RUN_KNOWN_FAILURES") == nullptr)
-    GTEST_SKIP() << "known engine limitation: triangles collinear up to rounding (corner sine about 1e-17) still lose paths";
   const Surface_mesh mesh = load_mesh("nearly_collinear_flat.off");
   const Polygon_soup soup = to_soup(mesh);
   for(std::size_t s = 0; s < soup.points.size(); ++s)
@@ -452,10 +440,6 @@ TEST(Degenerate, nearly_collinear_triangle_flat)
 
 TEST(Degenerate, nearly_collinear_triangle_height_field)
 {
-  // Known engine limitation (issue 5 is open): triangles collinear up to rounding (corner sine about 1e-17) still lose paths.
-  // The test keeps its expected values; run it with VTP_RUN_KNOWN_FAILURES=1.
-  if(std::getenv("VTP_RUN_KNOWN_FAILURES") == nullptr)
-    GTEST_SKIP() << "known engine limitation: triangles collinear up to rounding (corner sine about 1e-17) still lose paths";
   const Surface_mesh mesh = load_mesh("nearly_collinear_height_field.off");
   for(std::size_t s : {0, 5, 6, 11, 17, 24})
     check(mesh, vertex(s), shortest_path_reference_distances(mesh, vertex(s)),
@@ -554,10 +538,6 @@ TEST(Degenerate, zero_length_edges_on_closed_meshes)
 // at the vertices and at the midpoints (as face locations), also from a midpoint as the source.
 TEST(Degenerate, collinear_slivers_on_a_closed_cube)
 {
-  // Known engine limitation (issue 5 is open): a vertex lying inside an edge of a neighbouring face (through a zero-area face) does not yet emit windows into that face.
-  // The test keeps its expected values; run it with VTP_RUN_KNOWN_FAILURES=1.
-  if(std::getenv("VTP_RUN_KNOWN_FAILURES") == nullptr)
-    GTEST_SKIP() << "known engine limitation: a vertex lying inside an edge of a neighbouring face (through a zero-area face) does not yet emit windows into that face";
   const Polygon_soup cube = subdivided_cube(4);
   const Surface_mesh original = to_mesh<Surface_mesh>(cube);
   Polygon_soup soup = cube;

@@ -193,6 +193,7 @@ private:
                                 + std::to_string(max_index / 3) + " faces)");
 
     typename Geom_traits::Compute_squared_distance_3 sqd = m_traits.compute_squared_distance_3_object();
+    typename Geom_traits::Compute_squared_area_3 sqa = m_traits.compute_squared_area_3_object();
 
     Index nv = 0;
     for(vertex_descriptor v : vertices(m_tm))
@@ -240,7 +241,22 @@ private:
     m_length_scale = std::ldexp(1., exponent);
     for(double& l : len)
       l = std::ldexp(l, -exponent);
-    m_arrays.build(nv, std::move(tri), std::move(opp), len);
+    // face areas from the points (accurate for nearly flat triangles, see VTPGeodesicTraits_3);
+    // -1 where that overflows or underflows: the engine then uses the lengths
+    std::vector<double> area(nh / 3, -1.);
+    for(std::size_t f = 0; f < nh / 3; ++f)
+    {
+      const halfedge_descriptor h = hds[3 * f];
+      const double a2 = CGAL::to_double(sqa(get(m_vpm, source(h, m_tm)), get(m_vpm, target(h, m_tm)),
+                                            get(m_vpm, target(next(h, m_tm), m_tm))));
+      const double a = std::ldexp(std::sqrt(a2), -2 * exponent);
+      // a zero is trusted only where the squared area of a face of relative height 1e-12
+      // could not have underflowed (edges longer than 1e-60)
+      const double longest_edge = std::ldexp((std::max)(len[3 * f], (std::max)(len[3 * f + 1], len[3 * f + 2])), exponent);
+      if(std::isfinite(a2) && std::isfinite(a) && (a > 0. || (a2 == 0. && longest_edge > 1e-60)))
+        area[f] = a;
+    }
+    m_arrays.build(nv, std::move(tri), std::move(opp), len, &area);
     m_distances.assign(static_cast<std::size_t>(nv), std::numeric_limits<double>::infinity());
     m_preprocessing_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -55,6 +55,8 @@ struct Mesh_arrays
   std::vector<double> angle_sum;
   std::vector<unsigned char> is_pseudo_source; // saddle or boundary vertex
   std::vector<unsigned char> is_boundary;
+  // per face: (almost) zero area or a zero-length edge (see build())
+  std::vector<unsigned char> is_degenerate_face;
   double mean_edge_length = 0.;
   double min_edge_length = 0.;
   double max_edge_length = 0.;
@@ -67,11 +69,15 @@ struct Mesh_arrays
   Index target(Index h) const { return source[next(h)]; }
 
   // Builds the arrays from triangles (3 vertex indices each, counterclockwise), the opposite
-  // of each half-edge (NO_INDEX on the border) and the length of each half-edge.
+  // of each half-edge (NO_INDEX on the border), the length of each half-edge and, optionally, the
+  // area of each face (a negative value: unknown). A face's height is taken from its area when
+  // known: from the lengths alone, a nearly flat triangle's height is only accurate to about
+  // sqrt(epsilon) times its size.
   void build(Index number_of_vertices,
              std::vector<Index>&& triangle_vertices,
              std::vector<Index>&& opposite_halfedges,
-             const std::vector<double>& halfedge_lengths)
+             const std::vector<double>& halfedge_lengths,
+             const std::vector<double>* face_areas = nullptr)
   {
     nv = number_of_vertices;
     source = std::move(triangle_vertices);
@@ -80,6 +86,7 @@ struct Mesh_arrays
     CGAL_precondition(nh % 3 == 0);
     CGAL_precondition(opposite.size() == source.size());
     CGAL_precondition(halfedge_lengths.size() == source.size());
+    CGAL_precondition(face_areas == nullptr || 3 * face_areas->size() == source.size());
     nf = nh / 3;
 
     geometry.resize(nh);
@@ -97,7 +104,12 @@ struct Mesh_arrays
         g.cx = (l * l + la * la - lb * lb) / (2. * l);
         // height from the area (Kahan's stable Heron formula): sqrt(la^2 - cx^2) loses
         // accuracy for needle triangles
-        g.cy = 2. * triangle_area(l, la, lb) / l;
+        double area = -1.;
+        if(face_areas != nullptr)
+          area = (*face_areas)[static_cast<std::size_t>(face(h))];
+        if(!(area >= 0.))
+          area = triangle_area(l, la, lb);
+        g.cy = 2. * area / l;
       }
       else
       {
@@ -153,6 +165,7 @@ struct Mesh_arrays
     // Windows cannot cross a face of (almost) zero area or an edge of zero length, and the angles
     // of such a face are meaningless: its vertices are made pseudo-sources, so that the paths
     // through them are not lost.
+    is_degenerate_face.assign(nf, 0);
     for(Index f = 0; f < nf; ++f)
     {
       const Halfedge_geometry& g = geometry[3 * f];
@@ -160,6 +173,7 @@ struct Mesh_arrays
       const double lmin = (std::min)(g.length, (std::min)(g.l_next, g.l_prev));
       if(lmin > 0. && g.cy * g.length > 1e-12 * lmax * lmax)
         continue;
+      is_degenerate_face[f] = 1;
       for(Index k = 0; k < 3; ++k)
         is_pseudo_source[source[3 * f + k]] = 1;
     }

@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <type_traits>
 #include <thread>
 #include <utility>
@@ -45,7 +46,7 @@ namespace internal {
 // A barrier for the threads of the parallel scheduling. A waiting thread spins briefly, then
 // yields the processor at each check: on an idle machine it reacts at once, and on a busy one the
 // thread it waits for gets its core back instead of competing with a spinning neighbour.
-class Yielding_barrier
+class alignas(64) Yielding_barrier
 {
 public:
   void reset(int n)
@@ -261,7 +262,8 @@ private:
   }
 
   // A (pseudo-)source v: its neighbours are reached straight, and a window covering each edge
-  // opposite to v starts towards the face beyond that edge.
+  // opposite to v starts towards the face beyond that edge. Through a zero-area face, v reaches
+  // the face beyond as a point of its edge (emit_through_degenerate_faces()).
   void emit_pseudo_source(Index v)
   {
     const Mesh_arrays& m = *m_mesh;
@@ -283,6 +285,12 @@ private:
       if(o == NO_INDEX)
         continue;
       const Halfedge_geometry& ge = m.geometry[e];
+      if(m.is_degenerate_face[Mesh_arrays::face(h)])
+      {
+        // v lies on the line of B-C (up to rounding): no window can start from it
+        emit_through_degenerate_faces(dv, o, ge.length - ge.cx);
+        continue;
+      }
       Window w;
       w.b0 = 0.;
       w.b1 = ge.length;
@@ -290,16 +298,65 @@ private:
       w.sy = -ge.cy;
       w.sigma = dv;
       if(!(w.sy < 0.))
-        continue; // degenerate face: nothing crosses
-      if(!trim_by_vertices(w, ge.length, d[m.source[o]], d[m.target(o)]))
         continue;
-      if(!(w.b1 - w.b0 > m_min_ratio * ge.length))
-        continue;
-      m_store.push(o, w);
-      ++m_created;
-      if(m_swept[Mesh_arrays::face(o)])
-        enqueue(o);
+      store_emitted(o, w);
     }
+  }
+
+  // A pseudo-source at distance dv lying at abscissa t on the half-edge o (the other side of a
+  // zero-area face): if it is inside the edge, it is a point source for face(o). When face(o) is
+  // itself of zero area, the point is carried on through the edge of face(o) that contains it
+  // (lighting the third vertex, on the line), a bounded number of times.
+  void emit_through_degenerate_faces(double dv, Index o, double t)
+  {
+    const Mesh_arrays& m = *m_mesh;
+    for(int step = 0; step < 64 && o != NO_INDEX; ++step)
+    {
+      const Halfedge_geometry& g = m.geometry[o];
+      if(!(t > 0. && t < g.length))
+        return;
+      const Index c = m.source[Mesh_arrays::prev(o)];
+      const Index h_ac = m.opposite[Mesh_arrays::prev(o)];
+      const Index h_cb = m.opposite[Mesh_arrays::next(o)];
+      if(!m.is_degenerate_face[Mesh_arrays::face(o)])
+      {
+        m_emit_ac.clear();
+        m_emit_cb.clear();
+        light(c, propagate_edge_point(g, t, dv, h_ac != NO_INDEX, h_cb != NO_INDEX, m_emit_ac, m_emit_cb));
+        for(const Window& w : m_emit_ac)
+          store_emitted(h_ac, w);
+        for(const Window& w : m_emit_cb)
+          store_emitted(h_cb, w);
+        return;
+      }
+      const double dx = g.cx - t;
+      light(c, dv + std::sqrt(dx * dx + g.cy * g.cy));
+      if(t < g.cx)
+        o = h_ac;            // A -> C, same abscissa
+      else if(t > g.cx)
+      {
+        o = h_cb;            // C -> B, from C
+        t -= g.cx;
+      }
+      else
+        return;              // the point is C itself
+    }
+  }
+
+  // Stores a window started by a pseudo-source on the list of h (trimmed by the ends of h).
+  void store_emitted(Index h, Window w)
+  {
+    const Mesh_arrays& m = *m_mesh;
+    const std::vector<double>& d = *m_dist;
+    const double length = m.geometry[h].length;
+    if(!trim_by_vertices(w, length, d[m.source[h]], d[m.target(h)]))
+      return;
+    if(!(w.b1 - w.b0 > m_min_ratio * length))
+      return;
+    m_store.push(h, w);
+    ++m_created;
+    if(m_swept[Mesh_arrays::face(h)])
+      enqueue(h);
   }
 
   // Adds the one-ring of v to the swept region; waiting lists of newly swept faces are queued.
@@ -319,10 +376,11 @@ private:
   }
 
   // Appends children to the list of h with blocks of pool p; if the face of h is swept, h is
-  // queued into `to_queue` (m_fifo, or a merge group's queue: the caller owns every list it
-  // writes, see merge_phase()). Returns the number of windows stored.
+  // queued into `to_queue` (m_fifo, or the queue of a face unit: the caller owns every list it
+  // writes, see propagation_phase()). Returns the number of windows stored.
+  template <class Queue>
   std::size_t store_children(Index h, const Window* begin, const Window* end, std::size_t p,
-                             std::vector<Index>& to_queue)
+                             Queue& to_queue)
   {
     if(begin == end)
       return 0;
@@ -337,7 +395,7 @@ private:
   }
 
   // Thread-independent work on one list: filter it, propagate it across its face.
-  struct Scratch
+  struct alignas(64) Scratch
   {
     std::vector<Window> in, out_ac, out_cb;
     std::vector<double> xc, reach;
@@ -469,6 +527,8 @@ private:
     m_scratch.resize(static_cast<std::size_t>(threads));
     for(Scratch& s : m_scratch)
       s.propagated = s.created = 0;
+    m_unit_of_face.assign(static_cast<std::size_t>(m.nf), NO_INDEX);
+    m_ranges.reset(new Range[static_cast<std::size_t>(threads)]);
     m_threads = threads;
     m_in_selection = false;
     m_k_ad = 0;
@@ -477,7 +537,7 @@ private:
 
     // One team for the whole propagation. Thread 0 does the sequential steps (selection, the
     // short tail of each round, and the rounds too small to share); the team meets only for the
-    // two parallel phases of the large rounds, at a barrier that yields the processor while it
+    // parallel phase of the large rounds, at a barrier that yields the processor while it
     // waits (so that a thread descheduled by other work on the machine gets its core back).
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads) if(threads > 1)
@@ -505,9 +565,6 @@ private:
         if(!m_team_has_round)
           break;
         propagation_phase(t);
-        if(team)
-          m_barrier.wait();
-        merge_phase(t);
         if(team)
           m_barrier.wait();
         if(t == 0)
@@ -565,62 +622,99 @@ private:
       if(m_team > 1)
         return true;
       propagation_phase(0);
-      merge_phase(0);
       finish_round();
     }
   }
 
-  struct Slot
+  // The lists queued by one face unit: its children go to the (at most 3) lists across its edges.
+  struct Unit_queue
   {
-    int thread;
-    std::size_t begin;   // in the thread's output buffer
-    std::uint32_t n_ac, n_cb;
-    double distance_to_C;
+    Index lists[3];
+    int size = 0;
+    void push_back(Index h)
+    {
+      CGAL_assertion(size < 3);
+      lists[size++] = h;
+    }
   };
 
-  // A round propagates the queued lists (the array A_from) and merges their output; the lists it
-  // feeds inside the swept region make the next round (A_to), until none is left.
+  // A round propagates the queued lists (the array A_from) and stores their children; the lists
+  // it feeds inside the swept region make the next round (A_to), until none is left.
   //
-  // Propagation phase (parallel over lists): each list is copied out of the storage and freed,
-  // filtered and propagated; its children and the distance it offers go to its own slot.
-  // Merge phase (parallel over groups of faces): the children of the lists of face f only go to
-  // the lists of the half-edges opposite to the edges of f, which no other face writes to. So the
-  // slots are grouped by face (f mod G), and a thread merges a whole group, in list order
-  // (Rule 3), with blocks of its own pool. The tail (thread 0, one step per list) lowers the
-  // distances and queues the lists in a fixed order. The result does not depend on thread timing.
+  // The windows of the lists of the round are detached from their half-edges first (serially),
+  // so the children stored during the round go to fresh lists and the detached windows are read
+  // by one thread only. The children of the lists of face f only go to the lists of the
+  // half-edges across the edges of f, which no other face writes to: the lists are grouped by
+  // face into units, a thread takes a whole unit, propagates its lists in list order and stores
+  // their children at once (Rule 3, delayed writes: nothing else is written). The tail (thread 0,
+  // one step per list) lowers the distances and queues the next lists in unit order. The result
+  // does not depend on thread timing.
   void start_round()
   {
     m_round_start = std::chrono::steady_clock::now();
     m_from.swap(m_fifo);
     m_fifo.clear();
-    for(Index h : m_from)
-      m_queued[h] = 0;
-    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_from.size());
-    m_slots.resize(m_from.size());
+    const std::size_t n = m_from.size();
     // small arrays are not worth waking the team: same work, same result, one thread
-    m_team = (n >= 4 * static_cast<std::ptrdiff_t>(m_threads)) ? m_threads : 1;
+    m_team = (n >= 4 * static_cast<std::size_t>(m_threads)) ? m_threads : 1;
     ++m_rounds;
     if(m_team > 1)
       ++m_parallel_rounds;
-    // merge groups: the slots of the lists of a face all fall in the same group (face mod G),
-    // kept in list order (a stable counting sort)
-    m_groups = (m_team > 1) ? 8 * static_cast<std::ptrdiff_t>(m_team) : 1;
-    const std::size_t groups = static_cast<std::size_t>(m_groups);
-    m_group_begin.assign(groups + 1, 0);
+    // units: the lists of each face, faces in order of first appearance, lists in list order
+    m_unit_begin.assign(1, 0);
     for(Index h : m_from)
-      ++m_group_begin[static_cast<std::size_t>(Mesh_arrays::face(h)) % groups + 1];
-    for(std::size_t g = 0; g < groups; ++g)
-      m_group_begin[g + 1] += m_group_begin[g];
-    m_group_slots.resize(m_from.size());
-    m_group_fill.assign(m_group_begin.begin(), m_group_begin.end() - 1);
-    for(std::size_t i = 0; i < m_from.size(); ++i)
-      m_group_slots[m_group_fill[static_cast<std::size_t>(Mesh_arrays::face(m_from[i])) % groups]++] = i;
-    if(m_group_queue.size() < groups)
-      m_group_queue.resize(groups);
-    for(Scratch& s : m_scratch)
-      s.out_ac.clear();
-    m_next_list.store(0, std::memory_order_relaxed);
-    m_next_group.store(0, std::memory_order_relaxed);
+    {
+      Index& u = m_unit_of_face[static_cast<std::size_t>(Mesh_arrays::face(h))];
+      if(u == NO_INDEX)
+      {
+        u = static_cast<Index>(m_unit_begin.size() - 1);
+        m_unit_begin.push_back(0);
+      }
+      ++m_unit_begin[static_cast<std::size_t>(u) + 1];
+    }
+    const std::size_t units = m_unit_begin.size() - 1;
+    for(std::size_t u = 0; u < units; ++u)
+      m_unit_begin[u + 1] += m_unit_begin[u];
+    m_unit_fill.assign(m_unit_begin.begin(), m_unit_begin.end() - 1);
+    m_unit_lists.resize(n);
+    m_chain.resize(n);
+    m_distance_to_C.resize(n);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const Index h = m_from[i];
+      const std::size_t u = static_cast<std::size_t>(m_unit_of_face[static_cast<std::size_t>(Mesh_arrays::face(h))]);
+      m_unit_lists[m_unit_fill[u]++] = i;
+      m_queued[h] = 0;
+      m_chain[i] = m_store.detach(h);
+    }
+    for(Index h : m_from)
+      m_unit_of_face[static_cast<std::size_t>(Mesh_arrays::face(h))] = NO_INDEX;
+    m_unit_queue.resize(units);
+    // Affinity: a unit goes first to the thread that wrote its windows (the pool of the first
+    // list's blocks), so that most windows are read by the core that wrote them, and each
+    // thread keeps to its own parts of the wavefront. The units are sorted by thread into
+    // ranges; a thread takes units from the front of its range, then steals from the back of
+    // the others'. Which thread propagates a unit has no effect on the result.
+    const std::size_t team = static_cast<std::size_t>(m_team);
+    m_range_begin.assign(team + 1, 0);
+    m_unit_thread.resize(units);
+    for(std::size_t u = 0; u < units; ++u)
+    {
+      const std::size_t first_list = m_unit_lists[m_unit_begin[u]];
+      std::size_t t = Window_storage::pool_of_chain(m_chain[first_list], u % team);
+      if(t >= team)
+        t = u % team;
+      m_unit_thread[u] = t;
+      ++m_range_begin[t + 1];
+    }
+    for(std::size_t t = 0; t < team; ++t)
+      m_range_begin[t + 1] += m_range_begin[t];
+    m_unit_order.resize(units);
+    m_unit_fill.assign(m_range_begin.begin(), m_range_begin.end() - 1);
+    for(std::size_t u = 0; u < units; ++u)
+      m_unit_order[m_unit_fill[m_unit_thread[u]]++] = u;
+    for(std::size_t t = 0; t < team; ++t)
+      m_ranges[t].set(m_range_begin[t], m_range_begin[t + 1]);
   }
 
   void propagation_phase(int t)
@@ -628,56 +722,37 @@ private:
     if(t >= m_team)
       return;
     Scratch& s = m_scratch[static_cast<std::size_t>(t)];
-    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_from.size());
-    for(;;)
+    const std::size_t p = static_cast<std::size_t>(t);
+    const std::size_t team = static_cast<std::size_t>(m_team);
+    std::size_t i;
+    while(m_ranges[p].take_front(i))
+      propagate_unit(m_unit_order[i], s, p);
+    for(std::size_t k = 1; k < team; ++k)
     {
-      const std::ptrdiff_t first = m_next_list.fetch_add(2, std::memory_order_relaxed);
-      if(first >= n)
-        break;
-      for(std::ptrdiff_t i = first; i < (std::min)(first + 2, n); ++i)
-      {
-        const Index h = m_from[static_cast<std::size_t>(i)];
-        s.in.clear();
-        m_store.take(h, s.in, static_cast<std::size_t>(t));
-        s.out_cb.clear();
-        Slot& slot = m_slots[static_cast<std::size_t>(i)];
-        slot.thread = t;
-        // children on A-C are appended to out_ac directly, those on C-B after them
-        const std::size_t before = s.out_ac.size();
-        slot.begin = before;
-        slot.distance_to_C = propagate_one(h, s);
-        slot.n_ac = static_cast<std::uint32_t>(s.out_ac.size() - before);
-        slot.n_cb = static_cast<std::uint32_t>(s.out_cb.size());
-        s.out_ac.insert(s.out_ac.end(), s.out_cb.begin(), s.out_cb.end());
-      }
+      Range& r = m_ranges[(p + k) % team];
+      while(r.take_back(i))
+        propagate_unit(m_unit_order[i], s, p);
     }
   }
 
-  void merge_phase(int t)
+  void propagate_unit(std::size_t u, Scratch& s, std::size_t p)
   {
-    if(t >= m_team)
-      return;
     const Mesh_arrays& m = *m_mesh;
-    Scratch& s = m_scratch[static_cast<std::size_t>(t)];
-    for(;;)
+    Unit_queue& queue = m_unit_queue[u];
+    queue.size = 0;
+    for(std::size_t k = m_unit_begin[u]; k < m_unit_begin[u + 1]; ++k)
     {
-      const std::ptrdiff_t g = m_next_group.fetch_add(1, std::memory_order_relaxed);
-      if(g >= m_groups)
-        break;
-      std::vector<Index>& to_queue = m_group_queue[static_cast<std::size_t>(g)];
-      to_queue.clear();
-      for(std::size_t k = m_group_begin[static_cast<std::size_t>(g)];
-          k < m_group_begin[static_cast<std::size_t>(g) + 1]; ++k)
-      {
-        const std::size_t i = m_group_slots[k];
-        const Index h = m_from[i];
-        const Slot& slot = m_slots[i];
-        const Window* w = m_scratch[static_cast<std::size_t>(slot.thread)].out_ac.data() + slot.begin;
-        s.created += store_children(m.opposite[Mesh_arrays::prev(h)], w, w + slot.n_ac,
-                                    static_cast<std::size_t>(t), to_queue);
-        s.created += store_children(m.opposite[Mesh_arrays::next(h)], w + slot.n_ac,
-                                    w + slot.n_ac + slot.n_cb, static_cast<std::size_t>(t), to_queue);
-      }
+      const std::size_t i = m_unit_lists[k];
+      const Index h = m_from[i];
+      s.in.clear();
+      m_store.take_chain(m_chain[i], s.in, p);
+      s.out_ac.clear();
+      s.out_cb.clear();
+      m_distance_to_C[i] = propagate_one(h, s);
+      s.created += store_children(m.opposite[Mesh_arrays::prev(h)], s.out_ac.data(),
+                                  s.out_ac.data() + s.out_ac.size(), p, queue);
+      s.created += store_children(m.opposite[Mesh_arrays::next(h)], s.out_cb.data(),
+                                  s.out_cb.data() + s.out_cb.size(), p, queue);
     }
   }
 
@@ -687,12 +762,9 @@ private:
     const auto tm = std::chrono::steady_clock::now();
     m_propagation_seconds += std::chrono::duration<double>(tm - m_round_start).count();
     for(std::size_t i = 0; i < m_from.size(); ++i)
-      light(m.source[Mesh_arrays::prev(m_from[i])], m_slots[i].distance_to_C);
-    for(std::ptrdiff_t g = 0; g < m_groups; ++g)
-    {
-      const std::vector<Index>& q = m_group_queue[static_cast<std::size_t>(g)];
-      m_fifo.insert(m_fifo.end(), q.begin(), q.end());
-    }
+      light(m.source[Mesh_arrays::prev(m_from[i])], m_distance_to_C[i]);
+    for(const Unit_queue& q : m_unit_queue)
+      m_fifo.insert(m_fifo.end(), q.lists, q.lists + q.size);
     for(int t = 0; t < m_team; ++t)
     {
       m_created += m_scratch[static_cast<std::size_t>(t)].created;
@@ -771,6 +843,8 @@ private:
   std::vector<Index> m_fifo;
   std::size_t m_fifo_head = 0;
 
+  std::vector<Window> m_emit_ac, m_emit_cb;
+
   // sequential scheduling
   std::vector<Entry> m_heap;
   Scratch m_scratch_sequential;
@@ -786,17 +860,60 @@ private:
   std::size_t m_updated_large = 0, m_updated_small = 0;
   std::vector<Scratch> m_scratch;
   std::vector<Index> m_from;
-  std::vector<Slot> m_slots;
   int m_threads = 1, m_team = 1;
-  std::ptrdiff_t m_groups = 1;
   long long m_k_ad = 1;
   bool m_in_selection = false;
   bool m_team_has_round = false;
   std::chrono::steady_clock::time_point m_round_start;
-  std::atomic<std::ptrdiff_t> m_next_list{ 0 }, m_next_group{ 0 };
+  // face units of the current round (see start_round())
+  std::vector<Index> m_unit_of_face;                 // per face, NO_INDEX between rounds
+  std::vector<std::size_t> m_unit_begin, m_unit_fill, m_unit_lists;
+  std::vector<Index> m_chain;                        // per list: its detached windows
+  std::vector<double> m_distance_to_C;               // per list
+  std::vector<Unit_queue> m_unit_queue;              // per unit
+  // The units of one thread, [front, back) of m_unit_order, packed in one atomic word: the
+  // owner takes from the front, the other threads steal from the back.
+  struct alignas(64) Range
+  {
+    std::atomic<std::uint64_t> bounds{ 0 };
+    void set(std::size_t front, std::size_t back)
+    {
+      bounds.store((std::uint64_t(back) << 32) | std::uint64_t(front), std::memory_order_relaxed);
+    }
+    bool take_front(std::size_t& i)
+    {
+      std::uint64_t b = bounds.load(std::memory_order_relaxed);
+      for(;;)
+      {
+        const std::uint64_t front = b & 0xffffffffu, back = b >> 32;
+        if(front >= back)
+          return false;
+        if(bounds.compare_exchange_weak(b, (back << 32) | (front + 1), std::memory_order_relaxed))
+        {
+          i = static_cast<std::size_t>(front);
+          return true;
+        }
+      }
+    }
+    bool take_back(std::size_t& i)
+    {
+      std::uint64_t b = bounds.load(std::memory_order_relaxed);
+      for(;;)
+      {
+        const std::uint64_t front = b & 0xffffffffu, back = b >> 32;
+        if(front >= back)
+          return false;
+        if(bounds.compare_exchange_weak(b, ((back - 1) << 32) | front, std::memory_order_relaxed))
+        {
+          i = static_cast<std::size_t>(back - 1);
+          return true;
+        }
+      }
+    }
+  };
+  std::unique_ptr<Range[]> m_ranges;                 // one per thread
+  std::vector<std::size_t> m_range_begin, m_unit_thread, m_unit_order;
   Yielding_barrier m_barrier;
-  std::vector<std::size_t> m_group_begin, m_group_fill, m_group_slots;
-  std::vector<std::vector<Index> > m_group_queue;
 
   // reset policy
   double m_reset_step = std::numeric_limits<double>::infinity();

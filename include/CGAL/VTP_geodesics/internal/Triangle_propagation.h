@@ -308,6 +308,48 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
   return res;
 }
 
+// A point source lying on the edge h itself, at (t, 0) with 0 < t < L, at distance sigma: this is
+// how a vertex reaches the face beyond a zero-area face in which it lies inside the opposite edge
+// (a window cannot carry it: its source would be on the line of the edge). The whole triangle is
+// seen from the point, so each child covers its whole edge. Children are appended as in
+// propagate_list(); the distance to C is returned.
+inline double propagate_edge_point(const Halfedge_geometry& g, double t, double sigma,
+                                   bool want_ac, bool want_cb,
+                                   std::vector<Window>& out_ac, std::vector<Window>& out_cb)
+{
+  const double L = g.length, cx = g.cx, cy = g.cy;
+  const double lac = g.l_prev, lcb = g.l_next;
+  if(want_ac && lac > 0.)
+  {
+    // frame of A -> C: origin A, direction (cx, cy) / lac
+    const double ux = cx / lac, uy = cy / lac;
+    Window c;
+    c.sx = t * ux;
+    c.sy = -uy * t;
+    c.sigma = sigma;
+    c.b0 = 0.;
+    c.b1 = lac;
+    if(c.sy < 0.)
+      out_ac.push_back(c);
+  }
+  if(want_cb && lcb > 0.)
+  {
+    // frame of C -> B: origin C, direction (L - cx, -cy) / lcb
+    const double ux = (L - cx) / lcb, uy = -cy / lcb;
+    const double rx = t - cx, ry = -cy;
+    Window c;
+    c.sx = rx * ux + ry * uy;
+    c.sy = ux * ry - uy * rx;
+    c.sigma = sigma;
+    c.b0 = 0.;
+    c.b1 = lcb;
+    if(c.sy < 0.)
+      out_cb.push_back(c);
+  }
+  const double dx = cx - t;
+  return sigma + std::sqrt(dx * dx + cy * cy);
+}
+
 // Filters a list before propagation: vertex trimming (ICH), tiny windows, pairwise pruning.
 inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB, double min_length,
                         std::vector<double>& reach)

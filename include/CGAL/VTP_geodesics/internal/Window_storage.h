@@ -65,8 +65,6 @@ public:
     m_tail.assign(number_of_halfedges, NO_INDEX);
     m_pools.clear();
     m_pools.resize(number_of_pools);
-    for(Pool& pool : m_pools)
-      pool.returns.assign(number_of_pools, Bin());
     m_peak_live = 0;
     m_peak_blocks = 0;
   }
@@ -112,14 +110,46 @@ public:
     }
   }
 
-  // Deletes the windows of the list of h, from the thread that owns pool p. A block goes back to
+  // Deletes the windows of the list of h, from the thread that owns pool p.
+  void clear(Index h, std::size_t p = 0)
+  {
+    free_chain(m_head[h], p);
+    m_head[h] = m_tail[h] = NO_INDEX;
+  }
+
+  // Detaches the windows of the list of h (the list is empty afterwards) and returns the chain
+  // of blocks that holds them, to be read and freed by take_chain().
+  Index detach(Index h)
+  {
+    const Index b = m_head[h];
+    m_head[h] = m_tail[h] = NO_INDEX;
+    return b;
+  }
+
+  // The pool a chain's first block comes from (the thread that wrote it); `fallback` if empty.
+  static std::size_t pool_of_chain(Index chain, std::size_t fallback)
+  {
+    return chain == NO_INDEX ? fallback : static_cast<std::size_t>(chain) >> POOL_SHIFT;
+  }
+
+  // Appends the windows of a detached chain to `out` and frees its blocks (from pool p).
+  void take_chain(Index chain, std::vector<Window>& out, std::size_t p)
+  {
+    for(Index b = chain; b != NO_INDEX; b = block(b).next)
+    {
+      const Block& blk = block(b);
+      out.insert(out.end(), blk.w, blk.w + blk.count);
+    }
+    free_chain(chain, p);
+  }
+
+  // Gives the blocks of a chain back, from the thread that owns pool p. A block goes back to
   // the free list of the pool it came from: directly if that is pool p, otherwise through a
   // return bin of pool p, emptied by flush_returns() at the next sequential step. So no pool
   // keeps growing while another one hoards free blocks.
-  void clear(Index h, std::size_t p = 0)
+  void free_chain(Index b, std::size_t p)
   {
     Pool& pool = m_pools[p];
-    Index b = m_head[h];
     while(b != NO_INDEX)
     {
       Block& blk = block(b);
@@ -142,14 +172,13 @@ public:
       }
       b = nb;
     }
-    m_head[h] = m_tail[h] = NO_INDEX;
   }
 
   // Gives the blocks in the return bins back to their pools (call when no other thread works).
   void flush_returns()
   {
     for(Pool& pool : m_pools)
-      for(std::size_t owner = 0; owner < pool.returns.size(); ++owner)
+      for(std::size_t owner = 0; owner < m_pools.size(); ++owner)
       {
         Bin& bin = pool.returns[owner];
         if(bin.head == NO_INDEX)
@@ -202,15 +231,17 @@ private:
 
   // The table of slabs of a pool has a fixed size, so that adding a slab never moves the
   // pointers that other threads read to reach blocks of this pool.
-  struct Pool
+  struct alignas(64) Pool
   {
+    // read by every thread (block()); the counters below, written by the owner, are on other lines
     std::unique_ptr<std::unique_ptr<Block[]>[]> slabs{ new std::unique_ptr<Block[]>[MAX_SLABS] };
-    std::size_t number_of_slabs = 0;
+    alignas(64) std::size_t number_of_slabs = 0;
     std::size_t number_of_blocks = 0;
     Index free = NO_INDEX;
     long long live = 0;    // may be negative in one pool: blocks can be freed by another thread
     long long in_use = 0;
-    std::vector<Bin> returns;  // blocks of other pools freed by this pool's thread
+    Bin returns[MAX_POOLS];  // blocks of other pools freed by this pool's thread (kept in the pool:
+                             // a separate allocation could share a cache line with another pool's)
   };
 
   Block& block(Index b)
