@@ -21,7 +21,7 @@
 // - finite exactly on the connected component of the source;
 // - 1-Lipschitz along the edges: |d(u) - d(v)| <= |uv| + 1e-12 * scale, and d(v) >= |sv| - 1e-12 * scale,
 //   scale being the largest finite distance;
-// - on flat meshes of a convex polygon (no degenerate triangle, no fold): the Euclidean distance;
+// - on flat meshes of a convex polygon (no fold; degenerate triangles allowed): the Euclidean distance;
 // - on the other meshes without degenerate triangle (CGAL's algorithm fails on those), agreement with
 //   CGAL::Surface_mesh_shortest_path: max |d - d_cgal| <= 1e-12 * scale, same unreachable vertices;
 //   where CGAL disagrees, CGAL run on the mesh subdivided once or twice (the same surface) must agree,
@@ -216,7 +216,9 @@ bool is_flat_convex_disk(const Surface_mesh& mesh)
     const Point_2 p = project(mesh.point(mesh.source(h))), q = project(mesh.point(mesh.target(h))),
                   r = project(mesh.point(mesh.target(mesh.next(h))));
     const CGAL::Orientation o = CGAL::orientation(p, q, r);
-    if(o == CGAL::COLLINEAR || (orientation != CGAL::COLLINEAR && o != orientation))
+    if(o == CGAL::COLLINEAR)
+      continue; // a degenerate triangle: zero area, no fold by itself
+    if(orientation != CGAL::COLLINEAR && o != orientation)
       return false;
     orientation = o;
     area += std::abs(CGAL::area(p, q, r));
@@ -239,14 +241,32 @@ bool is_flat_convex_disk(const Surface_mesh& mesh)
   const long euler = long(points.size()) - long(num_edges(mesh)) + long(num_faces(mesh));
   if(border_loops != 1 || euler != 1)
     return false;
-  // the boundary loop is convex (collinear vertices allowed) and encloses the area of the triangles
+  // the boundary loop is convex (collinear vertices allowed, but no turning back: a slit would be
+  // boundary traversed both ways) and encloses the area of the triangles
+  {
+    std::vector<Point_2> distinct;
+    for(const Point_2& p : loop)
+      if(distinct.empty() || p != distinct.back())
+        distinct.push_back(p);
+    while(distinct.size() > 1 && distinct.back() == distinct.front())
+      distinct.pop_back();
+    loop.swap(distinct);
+  }
+  if(loop.size() < 3)
+    return false;
   CGAL::Orientation turn = CGAL::COLLINEAR;
   for(std::size_t i = 0; i < loop.size(); ++i)
   {
-    const CGAL::Orientation o =
-      CGAL::orientation(loop[i], loop[(i + 1) % loop.size()], loop[(i + 2) % loop.size()]);
+    const Point_2& p0 = loop[i];
+    const Point_2& p1 = loop[(i + 1) % loop.size()];
+    const Point_2& p2 = loop[(i + 2) % loop.size()];
+    const CGAL::Orientation o = CGAL::orientation(p0, p1, p2);
     if(o == CGAL::COLLINEAR)
+    {
+      if(!((p1 - p0) * (p2 - p1) > 0.))
+        return false;
       continue;
+    }
     if(turn != CGAL::COLLINEAR && o != turn)
       return false;
     turn = o;
@@ -376,7 +396,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
            "not 1-Lipschitz along the edge (" + std::to_string(std::size_t(u)) + ", " + std::to_string(std::size_t(v)) + ")");
   }
 
-  if(!degenerate && !mesh.is_isolated(s) && is_flat_convex_disk(mesh))
+  if(!mesh.is_isolated(s) && is_flat_convex_disk(mesh))
   {
     for(Vertex_index v : vertices(mesh))
       if(!mesh.is_isolated(v) && std::abs(d[v] - length(mesh, s, v)) > tolerance)

@@ -7,8 +7,13 @@
 // replayed alone with `--seed S --case k`. The meshes (see vtp_random_meshes.h) are closed surfaces
 // (convex hulls of random points on ellipsoids, with radial bumps), open surfaces (the same with a patch
 // or scattered faces removed, possibly leaving several components and isolated vertices), and height
-// fields over stretched, jittered grids, with or without removed faces. The sources are random vertices,
-// boundary vertices, saddle vertices and isolated vertices.
+// fields over stretched, jittered grids, with or without removed faces. A quarter of the meshes are then
+// made degenerate without changing the surface: some edges (a, b) get a new vertex m either on a (a
+// zero-length edge and two zero-area faces) or at the midpoint of ab with a zero-area "sliver" (a, b, m)
+// glued along ab; CGAL's algorithm (which fails on such meshes) then runs on the same surface without
+// the degeneracies (the midpoints split their edges on both sides), and a vertex inserted on a is
+// expected at the distance of a. The sources are random
+// vertices, boundary vertices, saddle vertices and isolated vertices (of the mesh before the change).
 //
 // For every source, each method must give the distances of CGAL's exact algorithm (Epick):
 //   max |d - d_cgal| <= 1e-12 * (largest finite d_cgal), with the same unreachable (+infinity) vertices,
@@ -122,12 +127,123 @@ void install_handlers()
 // ------------------------------------------------------------------------------------------------
 // Cases
 // ------------------------------------------------------------------------------------------------
+// A vertex m inserted into a mesh without changing its surface: at the position of vertex a (a
+// zero-length edge), or at the midpoint of the edge a -> b (the apex of a zero-area sliver).
+struct Inserted_vertex
+{
+  std::size_t m, a, b;
+  bool midpoint;
+};
+
 struct Case
 {
   std::string description;
   Surface_mesh mesh;
   std::vector<std::pair<Vertex_index, std::string> > sources; // vertex and why it was chosen
+  // degenerate cases: the mesh before the insertions (CGAL runs on it) and the inserted vertices
+  Surface_mesh reference_mesh;
+  std::vector<Inserted_vertex> inserted;
 };
+
+// Inserts zero-length edges and collinear slivers into `soup` (see the header comment), at edges of
+// faces that share no vertex, so that each change is the one described. `reference` (a copy of `soup`
+// on entry) gets the same vertices without degeneracy: a midpoint splits the edge on both sides, a vertex
+// on a vertex stays isolated (its distance is that of the vertex).
+std::vector<Inserted_vertex> insert_degeneracies(Polygon_soup& soup, Polygon_soup& reference, Random& random,
+                                                 std::string* what)
+{
+  std::vector<Inserted_vertex> inserted;
+  if(soup.polygons.empty())
+    return inserted;
+  const std::size_t wanted = random.integer(1, 6);
+  std::vector<unsigned char> used(soup.points.size(), 0);
+  std::size_t zero_length = 0, slivers = 0;
+  for(std::size_t attempt = 0; attempt < 20 * wanted && inserted.size() < wanted; ++attempt)
+  {
+    const std::vector<std::size_t> t = soup.polygons[random.integer(0, soup.polygons.size() - 1)];
+    if(used[t[0]] || used[t[1]] || used[t[2]])
+      continue;
+    // every face touching the chosen edge must be free too
+    const std::size_t k = random.integer(0, 2);
+    const std::size_t a = t[k], b = t[(k + 1) % 3];
+    bool free = true;
+    for(const std::vector<std::size_t>& q : soup.polygons)
+      for(int i = 0; i < 3; ++i)
+        if((q[i] == a && q[(i + 1) % 3] == b) || (q[i] == b && q[(i + 1) % 3] == a))
+          for(std::size_t v : q)
+            free = free && !used[v];
+    if(!free)
+      continue;
+    const bool midpoint = random.chance(0.5);
+    const std::size_t m = soup.points.size();
+    soup.points.push_back(midpoint ? CGAL::midpoint(soup.points[a], soup.points[b]) : soup.points[a]);
+    std::vector<std::vector<std::size_t> > out;
+    for(const std::vector<std::size_t>& q : soup.polygons)
+    {
+      int i = 0;
+      while(i < 3 && !((q[i] == a && q[(i + 1) % 3] == b) || (q[i] == b && q[(i + 1) % 3] == a)))
+        ++i;
+      if(i == 3)
+      {
+        out.push_back(q);
+        continue;
+      }
+      for(std::size_t v : q)
+        used[v] = 1;
+      const std::size_t u = q[i], v = q[(i + 1) % 3], w = q[(i + 2) % 3];
+      if(midpoint && u == b)
+      {
+        out.push_back(q); // (b, a, d) stays, glued to the sliver along ab
+        continue;
+      }
+      out.push_back({u, m, w});
+      out.push_back({m, v, w});
+      if(midpoint)
+        out.push_back({a, b, m}); // the sliver
+    }
+    soup.polygons = out;
+    reference.points.push_back(soup.points[m]);
+    if(midpoint)
+    {
+      std::vector<std::vector<std::size_t> > split;
+      for(const std::vector<std::size_t>& q : reference.polygons)
+      {
+        int i = 0;
+        while(i < 3 && !((q[i] == a && q[(i + 1) % 3] == b) || (q[i] == b && q[(i + 1) % 3] == a)))
+          ++i;
+        if(i == 3)
+        {
+          split.push_back(q);
+          continue;
+        }
+        split.push_back({q[i], m, q[(i + 2) % 3]});
+        split.push_back({m, q[(i + 1) % 3], q[(i + 2) % 3]});
+      }
+      reference.polygons = split;
+    }
+    used.push_back(1);
+    inserted.push_back({m, a, b, midpoint});
+    ++(midpoint ? slivers : zero_length);
+  }
+  *what += ", " + std::to_string(zero_length) + " zero-length edges and " + std::to_string(slivers)
+           + " slivers inserted";
+  return inserted;
+}
+
+// Distances of CGAL's exact algorithm for a case: on the mesh itself, or, for a degenerate case, on the
+// mesh without the degeneracies (midpoints are vertices of it; a vertex inserted on a vertex gets the
+// distance of that vertex).
+std::vector<double> reference_distances(const Case& c, Vertex_index s)
+{
+  using CGAL::VTP_geodesics::internal::shortest_path_reference_distances;
+  if(c.inserted.empty())
+    return shortest_path_reference_distances(c.mesh, s);
+  std::vector<double> d = shortest_path_reference_distances(c.reference_mesh, s);
+  for(const Inserted_vertex& iv : c.inserted)
+    if(!iv.midpoint)
+      d[iv.m] = d[iv.a];
+  return d;
+}
 
 double angle_sum(const Surface_mesh& mesh, Vertex_index v)
 {
@@ -157,6 +273,13 @@ Case make_case(const Settings& settings, std::size_t index)
     const std::size_t removed = remove_random_faces(soup, random.uniform(0.02, 0.5), random);
     what += ", " + std::to_string(removed) + " faces removed";
   }
+  const std::size_t original_vertices = soup.points.size();
+  if(random.chance(0.25))
+  {
+    Polygon_soup reference = soup;
+    c.inserted = insert_degeneracies(soup, reference, random, &what);
+    c.reference_mesh = to_mesh<Surface_mesh>(reference);
+  }
   c.mesh = to_mesh<Surface_mesh>(soup);
   c.description = what + " (" + std::to_string(c.mesh.number_of_vertices()) + " vertices, "
                   + std::to_string(c.mesh.number_of_faces()) + " faces)";
@@ -166,6 +289,8 @@ Case make_case(const Settings& settings, std::size_t index)
   double largest_angle_sum = 2. * PI + 1e-6;
   for(Vertex_index v : c.mesh.vertices())
   {
+    if(std::size_t(v) >= original_vertices)
+      continue; // inserted vertices are not sources (CGAL cannot start from them)
     if(c.mesh.is_isolated(v))
       isolated.push_back(v);
     else if(c.mesh.is_border(v))
@@ -180,7 +305,6 @@ Case make_case(const Settings& settings, std::size_t index)
       }
     }
   }
-  const std::size_t nv = c.mesh.number_of_vertices();
   const std::size_t number_of_sources = random.integer(1, (std::max)(std::size_t(1), settings.sources));
   for(std::size_t k = 0; k < number_of_sources; ++k)
   {
@@ -192,7 +316,7 @@ Case make_case(const Settings& settings, std::size_t index)
     else if(kind < 0.5 && !isolated.empty())
       c.sources.emplace_back(isolated[random.integer(0, isolated.size() - 1)], "isolated");
     else
-      c.sources.emplace_back(Vertex_index(static_cast<Surface_mesh::size_type>(random.integer(0, nv - 1))), "random");
+      c.sources.emplace_back(Vertex_index(static_cast<Surface_mesh::size_type>(random.integer(0, original_vertices - 1))), "random");
   }
   return c;
 }
@@ -266,16 +390,31 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The options that change the cases drawn, when not the defaults (for the "reproduce with" lines).
+std::string size_options(const Settings& settings)
+{
+  const Settings defaults;
+  std::string s;
+  if(settings.min_vertices != defaults.min_vertices)
+    s += " --min-vertices " + std::to_string(settings.min_vertices);
+  if(settings.max_vertices != defaults.max_vertices)
+    s += " --max-vertices " + std::to_string(settings.max_vertices);
+  if(settings.sources != defaults.sources)
+    s += " --sources " + std::to_string(settings.sources);
+  return s;
+}
+
 // Runs one case; returns false on a failure (printed).
 bool run_case(const Settings& settings, std::size_t index, Totals& totals)
 {
   std::ostringstream head;
   head << "seed " << settings.seed << " case " << index;
   set_current_case(head.str() + " (generating the mesh); reproduce with: vtp_stress --seed "
-                   + std::to_string(settings.seed) + " --case " + std::to_string(index));
+                   + std::to_string(settings.seed) + " --case " + std::to_string(index) + size_options(settings));
   const Case c = make_case(settings, index);
   const std::string reproduce =
-    "reproduce with: vtp_stress --seed " + std::to_string(settings.seed) + " --case " + std::to_string(index);
+    "reproduce with: vtp_stress --seed " + std::to_string(settings.seed) + " --case " + std::to_string(index)
+    + size_options(settings);
   if(settings.verbose)
     std::cout << head.str() << ": " << c.description << std::endl;
   const double cgal_before = totals.cgal_seconds, vtp_before = totals.vtp_seconds;
@@ -292,7 +431,7 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
     ++totals.sources;
     set_current_case(where + ", CGAL shortest path; " + reproduce);
     auto t0 = std::chrono::steady_clock::now();
-    const std::vector<double> reference = CGAL::VTP_geodesics::internal::shortest_path_reference_distances(c.mesh, s);
+    const std::vector<double> reference = reference_distances(c, s);
     totals.cgal_seconds += seconds_since(t0);
 
     std::vector<double> sequential;
@@ -316,7 +455,7 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
                 << (diff.source_not_zero ? ", source distance not 0" : "") << "; worst vertex " << diff.worst
                 << ": d = " << d[diff.worst] << ", d_ref = " << expected[diff.worst] << "; " << reproduce
                 << std::endl;
-      if(std::string(against) == "CGAL")
+      if(std::string(against) == "CGAL" && c.inserted.empty())
       {
         // CGAL itself errs on some meshes: tell whether it agrees on the subdivided mesh (same surface)
         Surface_mesh fine = c.mesh;
@@ -492,7 +631,8 @@ int main(int argc, char** argv)
     {
       ++totals.failures;
       std::cout << "vtp_stress: EXCEPTION seed " << settings.seed << " case " << k << ": " << e.what()
-                << "; reproduce with: vtp_stress --seed " << settings.seed << " --case " << k << std::endl;
+                << "; reproduce with: vtp_stress --seed " << settings.seed << " --case " << k << size_options(settings)
+                << std::endl;
     }
     alarm(0);
     if(!settings.verbose && (k + 1 - first) % 1000 == 0)
