@@ -271,6 +271,16 @@ bool is_flat_convex_disk(const Surface_mesh& mesh)
       return false;
     turn = o;
   }
+  if(turn == CGAL::COLLINEAR || !(area > 0.))
+    return false;
+  // every vertex lies in the polygon (a vertex reached only through zero-area faces may lie outside)
+  for(const Point_3& p : points)
+    for(std::size_t i = 0; i < loop.size(); ++i)
+    {
+      const CGAL::Orientation o = CGAL::orientation(loop[i], loop[(i + 1) % loop.size()], project(p));
+      if(o != CGAL::COLLINEAR && o != turn)
+        return false;
+    }
   double loop_area = 0.;
   for(std::size_t i = 1; i + 1 < loop.size(); ++i)
     loop_area += CGAL::area(loop[0], loop[i], loop[i + 1]);

@@ -52,6 +52,7 @@ double below_exact(const std::vector<double>& d, const std::vector<double>& exac
       EXPECT_TRUE(std::isinf(d[i])) << "vertex " << i << " is unreachable but got " << d[i];
       continue;
     }
+    EXPECT_TRUE(std::isfinite(d[i])) << "vertex " << i << " is reachable but got " << d[i];
     worst = (std::max)(worst, exact[i] - d[i]);
   }
   return worst / max_finite(exact);
@@ -225,6 +226,31 @@ TEST(Parallel_variants, pavtp_meets_the_avtp_invariants)
       EXPECT_TRUE(distances_near(d, exact, EXACT_TOLERANCE, std::string(name) + ", PAVTP with lambda h > max distance"));
     }
   }
+}
+
+// A reset deletes the windows waiting near the wavefront: in the parallel scheduling, the lists queued
+// by a selection must be propagated before it happens, or some vertices are never reached (found on a
+// mesh of 2.5M vertices, where a selection takes many vertices). Many resets (small lambda) on a mesh
+// large enough for big selections, several thread counts: every reachable vertex is reached.
+TEST(Parallel_variants, pavtp_reaches_every_reachable_vertex)
+{
+  Surface_mesh mesh = load_mesh("elephant.off");
+  CGAL::VTP_geodesics::internal::midpoint_subdivide(mesh, 2);
+  Solver solver(mesh);
+  Propagation_statistics vs;
+  const std::vector<double> exact = run<CGAL::Sequential_tag>(solver, 0, Propagation_options(), &vs);
+  for(int threads : { 2, 3, 4 })
+    for(double lambda : { 1., 2., 4. })
+    {
+      Propagation_options o;
+      o.lambda = lambda;
+      o.number_of_threads = threads;
+      Propagation_statistics st;
+      const std::vector<double> d = run<CGAL::Parallel_tag>(solver, 0, o, &st);
+      EXPECT_GT(st.resets, 10u);
+      EXPECT_EQ(st.reached_vertices, vs.reached_vertices) << threads << " threads, lambda " << lambda;
+      EXPECT_LE(below_exact(d, exact), EXACT_TOLERANCE) << threads << " threads, lambda " << lambda;
+    }
 }
 
 #endif // CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP

@@ -26,14 +26,19 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdint>
 #include <functional>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <type_traits>
-#include <thread>
 #include <utility>
 #include <vector>
+
+#if defined(_MSC_VER) && (defined(_M_X64) || defined(_M_IX86))
+#include <intrin.h>
+#endif
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -43,10 +48,12 @@ namespace CGAL {
 namespace VTP_geodesics {
 namespace internal {
 
-// A barrier for the threads of the parallel scheduling. A waiting thread spins briefly, then
-// yields the processor at each check: on an idle machine it reacts at once, and on a busy one the
-// thread it waits for gets its core back instead of competing with a spinning neighbour.
-class alignas(64) Yielding_barrier
+// A barrier for the threads of the parallel scheduling. Most waits are short (a few microseconds of
+// sequential work by thread 0), so a waiting thread first spins, with the processor's spin-wait hint
+// (which leaves the core's resources to a hardware sibling and lets a hypervisor see the spin); after
+// about a hundred microseconds it sleeps on a condition variable, so that a long wait, or a machine
+// busy with other work, does not cost a processor to the thread it waits for.
+class alignas(64) Team_barrier
 {
 public:
   void reset(int n)
@@ -54,6 +61,7 @@ public:
     m_n = n;
     m_count.store(0, std::memory_order_relaxed);
     m_generation.store(0, std::memory_order_relaxed);
+    m_sleepers.store(0, std::memory_order_relaxed);
   }
 
   void wait()
@@ -62,19 +70,43 @@ public:
     if(m_count.fetch_add(1, std::memory_order_acq_rel) + 1 == m_n)
     {
       m_count.store(0, std::memory_order_relaxed);
-      m_generation.fetch_add(1, std::memory_order_acq_rel);
+      m_generation.fetch_add(1, std::memory_order_seq_cst);
+      if(m_sleepers.load(std::memory_order_seq_cst) > 0)
+      {
+        { std::lock_guard<std::mutex> lock(m_mutex); }
+        m_wake.notify_all();
+      }
       return;
     }
-    int spins = 0;
-    while(m_generation.load(std::memory_order_acquire) == generation)
-      if(++spins > 100)
-        std::this_thread::yield();
+    for(int spins = 0; spins < 4096; ++spins)
+    {
+      if(m_generation.load(std::memory_order_acquire) != generation)
+        return;
+      spin_pause();
+    }
+    std::unique_lock<std::mutex> lock(m_mutex);
+    m_sleepers.fetch_add(1, std::memory_order_seq_cst);
+    while(m_generation.load(std::memory_order_seq_cst) == generation)
+      m_wake.wait(lock);
+    m_sleepers.fetch_sub(1, std::memory_order_relaxed);
   }
 
 private:
+  static void spin_pause()
+  {
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+    __builtin_ia32_pause();
+#elif defined(_MSC_VER) && (defined(_M_X64) || defined(_M_IX86))
+    _mm_pause();
+#endif
+  }
+
   int m_n = 1;
   std::atomic<int> m_count{ 0 };
   std::atomic<unsigned> m_generation{ 0 };
+  std::atomic<int> m_sleepers{ 0 };
+  std::mutex m_mutex;
+  std::condition_variable m_wake;
 };
 
 // The propagation engine: one loop, two orthogonal policies.
@@ -510,6 +542,14 @@ private:
     return false;
   }
 
+  // Puts back the entry that bucket_pop() just returned.
+  void bucket_unpop()
+  {
+    CGAL_assertion(m_bucket_current < m_buckets.size() && m_bucket_read[m_bucket_current] > 0);
+    --m_bucket_read[m_bucket_current];
+    ++m_bucket_pending;
+  }
+
   void run_parallel(int threads)
   {
     const Mesh_arrays& m = *m_mesh;
@@ -537,8 +577,8 @@ private:
 
     // One team for the whole propagation. Thread 0 does the sequential steps (selection, the
     // short tail of each round, and the rounds too small to share); the team meets only for the
-    // parallel phase of the large rounds, at a barrier that yields the processor while it
-    // waits (so that a thread descheduled by other work on the machine gets its core back).
+    // parallel phase of the large rounds, at a barrier that spins briefly, then sleeps (see
+    // Team_barrier).
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads) if(threads > 1)
 #endif
@@ -607,11 +647,22 @@ private:
         Entry e;
         double last = 0.;
         while(popped < m_k_ad && m_fifo.size() < max_lists && bucket_pop(e))
+        {
+          // A reset (AVTP) deletes the waiting windows near the wavefront: the lists queued by
+          // this selection must be propagated first (as the sequential scheduling does before
+          // each vertex), or the vertices they would reach could be left unreached. So the
+          // vertex that triggers a reset starts the next selection.
+          if(e.first > m_next_reset && (popped > 0 || !m_fifo.empty()))
+          {
+            bucket_unpop();
+            break;
+          }
           if(take_vertex(e.second, e.first))
           {
             ++popped;
             last = e.first;
           }
+        }
         // distances are compared with the end of the last bucket popped from (Eq. 5)
         m_round_limit = (std::floor(last * m_inv_bucket_width) + 1.) / m_inv_bucket_width;
         m_in_selection = true;
@@ -913,7 +964,7 @@ private:
   };
   std::unique_ptr<Range[]> m_ranges;                 // one per thread
   std::vector<std::size_t> m_range_begin, m_unit_thread, m_unit_order;
-  Yielding_barrier m_barrier;
+  Team_barrier m_barrier;
 
   // reset policy
   double m_reset_step = std::numeric_limits<double>::infinity();
