@@ -26,6 +26,7 @@
 #endif
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -39,6 +40,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <sys/resource.h> // getrusage, struct rusage
@@ -223,7 +225,11 @@ void print_usage(std::ostream& os)
         "  --help           print this help\n"
         "\n"
         "Each method runs in its own child process: peak_rss_mb is the peak resident memory of that\n"
-        "process (mesh included). Errors are measured against VTP, which is always run.\n";
+        "process (mesh included). Errors are measured against VTP, which is always run.\n"
+        "With a parallel method, the round-trip time of a cache line between two threads is printed\n"
+        "before and after the runs of each source: on a virtual machine it changes with where the host\n"
+        "places the virtual processors (about 50 ns or about 330 ns on the 2-vCPU machine this package\n"
+        "was developed on), and the parallel methods, which share data between cores, feel it.\n";
 }
 
 std::size_t parse_count(const std::string& option, const std::string& s, std::size_t min_value, std::size_t max_value)
@@ -649,6 +655,42 @@ void load_mesh(const std::string& file, int subdivide, Mesh& mesh)
   CGAL::VTP_geodesics::internal::midpoint_subdivide(mesh, subdivide);
 }
 
+// Round-trip time of a cache line between two threads (they bounce a counter), in nanoseconds; 0 with
+// fewer than 2 processors. On a virtual machine it tells where the host placed the virtual processors
+// at that moment (seen on the 2-vCPU machine of this project: about 50 ns, or about 330 ns at times),
+// which the parallel methods feel (they share data between cores) and the sequential ones do not.
+double core_to_core_round_trip_ns()
+{
+  if(std::thread::hardware_concurrency() < 2)
+    return 0.;
+  struct alignas(64) Line
+  {
+    std::atomic<long> value{ 0 };
+  } line;
+  const long n = 100000;
+  auto wait_for = [&line](long v) {
+    for(int spins = 0; line.value.load(std::memory_order_acquire) != v;)
+      if(++spins > 4096)
+        std::this_thread::yield();
+  };
+  std::thread other([&] {
+    for(long i = 0; i < n; ++i)
+    {
+      wait_for(2 * i + 1);
+      line.value.store(2 * i + 2, std::memory_order_release);
+    }
+  });
+  const double t0 = now_seconds();
+  for(long i = 0; i < n; ++i)
+  {
+    line.value.store(2 * i + 1, std::memory_order_release);
+    wait_for(2 * i + 2);
+  }
+  const double t = now_seconds() - t0;
+  other.join();
+  return t / double(n) * 1e9;
+}
+
 int run(int argc, char** argv)
 {
   const Arguments args = parse_arguments(argc, argv);
@@ -684,6 +726,9 @@ int run(int argc, char** argv)
 
   bool header_printed = false;
   int failures = 0;
+  const bool parallel = std::any_of(args.methods.begin(), args.methods.end(), [](const Method& m) {
+    return m.label.compare(0, 4, "pvtp") == 0 || m.label.compare(0, 5, "pavtp") == 0;
+  });
   for(const std::string& file : args.meshes)
   {
     Mesh mesh;
@@ -706,9 +751,13 @@ int run(int argc, char** argv)
         (static_cast<unsigned long long>(i) * info.vertices) / k);
       const Vertex_index source(static_cast<Mesh::size_type>(source_id));
 
+      const double round_trip_before = parallel ? core_to_core_round_trip_ns() : 0.;
       std::vector<Run_result> results;
       for(const Method& m : runs)
         results.push_back(run_forked(mesh, source, m, args.repeat));
+      if(parallel)
+        std::printf("# core-to-core round trip: %.0f ns before these runs, %.0f ns after (see --help)\n",
+                    round_trip_before, core_to_core_round_trip_ns());
 
       const Run_result& vtp = results.front();
       const Run_result* cgal = nullptr;

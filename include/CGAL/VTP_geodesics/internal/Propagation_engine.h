@@ -677,15 +677,20 @@ private:
     }
   }
 
-  // The lists queued by one face unit: its children go to the (at most 3) lists across its edges.
-  struct Unit_queue
+  // A face unit (at most 3 lists, see start_round()): the detached windows of its lists, the
+  // distances they offer to their opposite vertices, and the lists its children make ready (at most
+  // 3: those across the edges of the face). One cache line per unit: units taken by different
+  // threads share no line.
+  struct alignas(64) Unit
   {
-    Index lists[3];
-    int size = 0;
+    double distance_to_C[3];
+    Index chain[3];
+    Index queued[3];
+    int number_queued = 0;
     void push_back(Index h)
     {
-      CGAL_assertion(size < 3);
-      lists[size++] = h;
+      CGAL_assertion(number_queued < 3);
+      queued[number_queued++] = h;
     }
   };
 
@@ -728,19 +733,18 @@ private:
       m_unit_begin[u + 1] += m_unit_begin[u];
     m_unit_fill.assign(m_unit_begin.begin(), m_unit_begin.end() - 1);
     m_unit_lists.resize(n);
-    m_chain.resize(n);
-    m_distance_to_C.resize(n);
+    m_units.resize(units);
     for(std::size_t i = 0; i < n; ++i)
     {
       const Index h = m_from[i];
       const std::size_t u = static_cast<std::size_t>(m_unit_of_face[static_cast<std::size_t>(Mesh_arrays::face(h))]);
-      m_unit_lists[m_unit_fill[u]++] = i;
+      const std::size_t k = m_unit_fill[u]++;
+      m_unit_lists[k] = i;
       m_queued[h] = 0;
-      m_chain[i] = m_store.detach(h);
+      m_units[u].chain[k - m_unit_begin[u]] = m_store.detach(h);
     }
     for(Index h : m_from)
       m_unit_of_face[static_cast<std::size_t>(Mesh_arrays::face(h))] = NO_INDEX;
-    m_unit_queue.resize(units);
     // Affinity: a unit goes first to the thread that wrote its windows (the pool of the first
     // list's blocks), so that most windows are read by the core that wrote them, and each
     // thread keeps to its own parts of the wavefront. The units are sorted by thread into
@@ -751,8 +755,7 @@ private:
     m_unit_thread.resize(units);
     for(std::size_t u = 0; u < units; ++u)
     {
-      const std::size_t first_list = m_unit_lists[m_unit_begin[u]];
-      std::size_t t = Window_storage::pool_of_chain(m_chain[first_list], u % team);
+      std::size_t t = Window_storage::pool_of_chain(m_units[u].chain[0], u % team);
       if(t >= team)
         t = u % team;
       m_unit_thread[u] = t;
@@ -789,21 +792,21 @@ private:
   void propagate_unit(std::size_t u, Scratch& s, std::size_t p)
   {
     const Mesh_arrays& m = *m_mesh;
-    Unit_queue& queue = m_unit_queue[u];
-    queue.size = 0;
+    Unit& unit = m_units[u];
+    unit.number_queued = 0;
     for(std::size_t k = m_unit_begin[u]; k < m_unit_begin[u + 1]; ++k)
     {
-      const std::size_t i = m_unit_lists[k];
-      const Index h = m_from[i];
+      const std::size_t j = k - m_unit_begin[u];
+      const Index h = m_from[m_unit_lists[k]];
       s.in.clear();
-      m_store.take_chain(m_chain[i], s.in, p);
+      m_store.take_chain(unit.chain[j], s.in, p);
       s.out_ac.clear();
       s.out_cb.clear();
-      m_distance_to_C[i] = propagate_one(h, s);
+      unit.distance_to_C[j] = propagate_one(h, s);
       s.created += store_children(m.opposite[Mesh_arrays::prev(h)], s.out_ac.data(),
-                                  s.out_ac.data() + s.out_ac.size(), p, queue);
+                                  s.out_ac.data() + s.out_ac.size(), p, unit);
       s.created += store_children(m.opposite[Mesh_arrays::next(h)], s.out_cb.data(),
-                                  s.out_cb.data() + s.out_cb.size(), p, queue);
+                                  s.out_cb.data() + s.out_cb.size(), p, unit);
     }
   }
 
@@ -812,10 +815,13 @@ private:
     const Mesh_arrays& m = *m_mesh;
     const auto tm = std::chrono::steady_clock::now();
     m_propagation_seconds += std::chrono::duration<double>(tm - m_round_start).count();
-    for(std::size_t i = 0; i < m_from.size(); ++i)
-      light(m.source[Mesh_arrays::prev(m_from[i])], m_distance_to_C[i]);
-    for(const Unit_queue& q : m_unit_queue)
-      m_fifo.insert(m_fifo.end(), q.lists, q.lists + q.size);
+    for(std::size_t u = 0; u < m_units.size(); ++u)
+    {
+      const Unit& unit = m_units[u];
+      for(std::size_t k = m_unit_begin[u]; k < m_unit_begin[u + 1]; ++k)
+        light(m.source[Mesh_arrays::prev(m_from[m_unit_lists[k]])], unit.distance_to_C[k - m_unit_begin[u]]);
+      m_fifo.insert(m_fifo.end(), unit.queued, unit.queued + unit.number_queued);
+    }
     for(int t = 0; t < m_team; ++t)
     {
       m_created += m_scratch[static_cast<std::size_t>(t)].created;
@@ -919,9 +925,7 @@ private:
   // face units of the current round (see start_round())
   std::vector<Index> m_unit_of_face;                 // per face, NO_INDEX between rounds
   std::vector<std::size_t> m_unit_begin, m_unit_fill, m_unit_lists;
-  std::vector<Index> m_chain;                        // per list: its detached windows
-  std::vector<double> m_distance_to_C;               // per list
-  std::vector<Unit_queue> m_unit_queue;              // per unit
+  std::vector<Unit> m_units;
   // The units of one thread, [front, back) of m_unit_order, packed in one atomic word: the
   // owner takes from the front, the other threads steal from the back.
   struct alignas(64) Range
