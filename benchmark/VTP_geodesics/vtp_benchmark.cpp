@@ -221,7 +221,9 @@ void print_usage(std::ostream& os)
         "                     heat_idt  CGAL::Heat_method_3, Intrinsic_Delaunay (approximate, needs Eigen)\n"
         "                     pvtp:T, avtp:lambda, pavtp:T:lambda\n"
         "  --csv FILE       also write the results as CSV\n"
-        "  --repeat R       run each method R times per source and keep the fastest (default 1)\n"
+        "  --repeat R       run each method R times per source and keep the fastest (default 1); the\n"
+        "                   runs are interleaved (each method once, in turn, R times), so that every\n"
+        "                   method meets the same changes of the machine's state\n"
         "  --help           print this help\n"
         "\n"
         "Each method runs in its own child process: peak_rss_mb is the peak resident memory of that\n"
@@ -754,7 +756,23 @@ int run(int argc, char** argv)
       const double round_trip_before = parallel ? core_to_core_round_trip_ns() : 0.;
       std::vector<Run_result> results;
       for(const Method& m : runs)
-        results.push_back(run_forked(mesh, source, m, args.repeat));
+        results.push_back(run_forked(mesh, source, m, 1));
+      for(int r = 1; r < args.repeat; ++r)
+        for(std::size_t j = 0; j < runs.size(); ++j)
+        {
+          if(!results[j].ok)
+            continue;
+          const Run_result again = run_forked(mesh, source, runs[j], 1);
+          if(!again.ok)
+          {
+            results[j] = again;
+            continue;
+          }
+          Child_header& h = results[j].header;
+          h.seconds = (std::min)(h.seconds, again.header.seconds);
+          h.preprocessing_seconds = (std::min)(h.preprocessing_seconds, again.header.preprocessing_seconds);
+          results[j].peak_rss_mb = (std::max)(results[j].peak_rss_mb, again.peak_rss_mb);
+        }
       if(parallel)
         std::printf("# core-to-core round trip: %.0f ns before these runs, %.0f ns after (see --help)\n",
                     round_trip_before, core_to_core_round_trip_ns());
