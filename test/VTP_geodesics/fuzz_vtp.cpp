@@ -53,6 +53,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -136,8 +137,19 @@ bool make_mesh(Bytes& bytes, Surface_mesh& mesh)
   std::vector<Point_3> points = quantized_points(bytes, n);
   if(kind == 3)
   {
-    CGAL::convex_hull_3(points.begin(), points.end(), mesh);
-    return num_faces(mesh) > 0 && CGAL::is_triangle_mesh(mesh);
+    Surface_mesh hull;
+    CGAL::convex_hull_3(points.begin(), points.end(), hull);
+    if(num_faces(hull) == 0 || !CGAL::is_triangle_mesh(hull))
+      return false;
+    try
+    {
+      mesh = to_mesh<Surface_mesh>(canonical_soup(hull)); // the same mesh for the same input, every run
+    }
+    catch(const std::runtime_error&)
+    {
+      return false;
+    }
+    return true;
   }
   std::vector<std::vector<std::size_t> > triangles;
   const int nt = bytes.in(1, 24);

@@ -145,6 +145,15 @@ struct Case
   std::vector<Inserted_vertex> inserted;
 };
 
+// The side i of triangle q (from q[i] to q[i + 1]) that joins a and b, in either direction; 3 if none.
+int side_of_edge(const std::vector<std::size_t>& q, std::size_t a, std::size_t b)
+{
+  for(int i = 0; i < 3; ++i)
+    if((q[i] == a && q[(i + 1) % 3] == b) || (q[i] == b && q[(i + 1) % 3] == a))
+      return i;
+  return 3;
+}
+
 // Inserts zero-length edges and collinear slivers into `soup` (see the header comment), at edges of
 // faces that share no vertex, so that each change is the one described. `reference` (a copy of `soup`
 // on entry) gets the same vertices without degeneracy: a midpoint splits the edge on both sides, a vertex
@@ -168,10 +177,9 @@ std::vector<Inserted_vertex> insert_degeneracies(Polygon_soup& soup, Polygon_sou
     const std::size_t a = t[k], b = t[(k + 1) % 3];
     bool free = true;
     for(const std::vector<std::size_t>& q : soup.polygons)
-      for(int i = 0; i < 3; ++i)
-        if((q[i] == a && q[(i + 1) % 3] == b) || (q[i] == b && q[(i + 1) % 3] == a))
-          for(std::size_t v : q)
-            free = free && !used[v];
+      if(side_of_edge(q, a, b) < 3)
+        for(std::size_t v : q)
+          free = free && !used[v];
     if(!free)
       continue;
     const bool midpoint = random.chance(0.5);
@@ -180,9 +188,7 @@ std::vector<Inserted_vertex> insert_degeneracies(Polygon_soup& soup, Polygon_sou
     std::vector<std::vector<std::size_t> > out;
     for(const std::vector<std::size_t>& q : soup.polygons)
     {
-      int i = 0;
-      while(i < 3 && !((q[i] == a && q[(i + 1) % 3] == b) || (q[i] == b && q[(i + 1) % 3] == a)))
-        ++i;
+      const int i = side_of_edge(q, a, b);
       if(i == 3)
       {
         out.push_back(q);
@@ -208,9 +214,7 @@ std::vector<Inserted_vertex> insert_degeneracies(Polygon_soup& soup, Polygon_sou
       std::vector<std::vector<std::size_t> > split;
       for(const std::vector<std::size_t>& q : reference.polygons)
       {
-        int i = 0;
-        while(i < 3 && !((q[i] == a && q[(i + 1) % 3] == b) || (q[i] == b && q[(i + 1) % 3] == a)))
-          ++i;
+        const int i = side_of_edge(q, a, b);
         if(i == 3)
         {
           split.push_back(q);

@@ -93,7 +93,8 @@ struct Propagation_statistics
   std::size_t rounds = 0;
   std::size_t parallel_rounds = 0;
   /// Parallel scheduling only: seconds spent selecting vertices and lists (serial), propagating
-  /// lists (parallel) and merging their output (serial).
+  /// lists and storing their children (parallel), and in the serial tail of each round (lowering
+  /// the distances, queueing the next lists; `merge_seconds`).
   double selection_seconds = 0.;
   double propagation_seconds = 0.;
   double merge_seconds = 0.;

@@ -172,21 +172,11 @@ inline Polygon_soup random_closed_surface(std::size_t n, Random& random, std::st
   }
   Surface_mesh hull;
   CGAL::convex_hull_3(points.begin(), points.end(), hull);
-  Polygon_soup soup;
-  std::vector<std::size_t> index(hull.number_of_vertices() + hull.number_of_removed_vertices());
-  for(Vertex_index v : hull.vertices())
+  Polygon_soup soup = canonical_soup(hull); // reproducible order (see canonical_soup())
+  for(Point_3& p : soup.points)
   {
-    index[v] = soup.points.size();
     const double f = 1. + bump * random.uniform(-1., 1.);
-    const Point_3& p = hull.point(v);
-    soup.points.push_back(Point_3(f * p.x(), f * p.y(), f * p.z()));
-  }
-  for(Surface_mesh::Face_index f : hull.faces())
-  {
-    std::vector<std::size_t> polygon;
-    for(Vertex_index v : CGAL::vertices_around_face(hull.halfedge(f), hull))
-      polygon.push_back(index[v]);
-    soup.polygons.push_back(polygon);
+    p = Point_3(f * p.x(), f * p.y(), f * p.z());
   }
   if(description != nullptr)
     *description = "closed hull of " + std::to_string(points.size()) + " points on an ellipsoid (axes "

@@ -11,6 +11,7 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -64,6 +65,34 @@ Mesh to_mesh(const Polygon_soup& soup)
   if(num_vertices(mesh) != soup.points.size() || num_faces(mesh) != soup.polygons.size())
     throw std::runtime_error("to_mesh: the soup is not a valid polygon mesh");
   return mesh;
+}
+
+// The faces of `mesh` as a soup in a canonical order: points sorted lexicographically, each polygon
+// starting at its smallest index (orientation kept), polygons sorted. CGAL::convex_hull_3 builds the
+// same hull with vertices and faces in an order that changes from run to run (it depends on memory
+// addresses), which would make seeded random meshes and fuzzer inputs irreproducible.
+inline Polygon_soup canonical_soup(const Surface_mesh& mesh)
+{
+  std::vector<Vertex_index> order(mesh.vertices().begin(), mesh.vertices().end());
+  std::sort(order.begin(), order.end(),
+            [&mesh](Vertex_index a, Vertex_index b) { return mesh.point(a) < mesh.point(b); });
+  std::vector<std::size_t> index(mesh.number_of_vertices() + mesh.number_of_removed_vertices());
+  Polygon_soup soup;
+  for(Vertex_index v : order)
+  {
+    index[v] = soup.points.size();
+    soup.points.push_back(mesh.point(v));
+  }
+  for(Surface_mesh::Face_index f : mesh.faces())
+  {
+    std::vector<std::size_t> polygon;
+    for(Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      polygon.push_back(index[v]);
+    std::rotate(polygon.begin(), std::min_element(polygon.begin(), polygon.end()), polygon.end());
+    soup.polygons.push_back(polygon);
+  }
+  std::sort(soup.polygons.begin(), soup.polygons.end());
+  return soup;
 }
 
 // Splits the cell (v00, v10, v11, v01) (counterclockwise) into two triangles; the diagonal alternates

@@ -122,10 +122,11 @@ private:
 //  - sequential (VTP, Qin et al. 2016): a binary heap of vertices; lists propagated one at a time
 //    in FIFO order;
 //  - parallel (PVTP, Du et al. 2020, Section 4): buckets of width h / tau; each round takes an
-//    adaptive number of vertices, gathers at most 100 T lists, propagates them on T threads into
-//    per-list output slots (delayed writes), then merges the slots in list order (Rule 3),
-//    lowering distances and filling the buckets; the lists fed inside the swept region make the
-//    next array, until it is empty. The output does not depend on thread timing.
+//    adaptive number of vertices, gathers at most 100 T lists, propagates them on T threads by
+//    face units (a unit's children go to lists no other unit writes: Rule 3 without locks), then
+//    lowers distances and fills the buckets (serially, in unit order); the lists fed inside the
+//    swept region make the next array, until it is empty. The output does not depend on thread
+//    timing.
 //
 // Reset policy: never (exact), or, when the nearest wavefront vertex passes (R+1) lambda h, delete
 // the waiting windows next to the wavefront vertices closer than (R+1) lambda h + lambda_g h and
