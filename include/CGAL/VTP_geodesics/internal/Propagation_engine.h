@@ -740,6 +740,7 @@ private:
       const Index h = m_from[i];
       const std::size_t u = static_cast<std::size_t>(m_unit_of_face[static_cast<std::size_t>(Mesh_arrays::face(h))]);
       const std::size_t k = m_unit_fill[u]++;
+      CGAL_assertion(k - m_unit_begin[u] < 3); // a face has 3 half-edges, each queued once
       m_unit_lists[k] = i;
       m_queued[h] = 0;
       m_units[u].chain[k - m_unit_begin[u]] = m_store.detach(h);
