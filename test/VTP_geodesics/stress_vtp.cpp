@@ -145,15 +145,6 @@ struct Case
   std::vector<Inserted_vertex> inserted;
 };
 
-// The side i of triangle q (from q[i] to q[i + 1]) that joins a and b, in either direction; 3 if none.
-int side_of_edge(const std::vector<std::size_t>& q, std::size_t a, std::size_t b)
-{
-  for(int i = 0; i < 3; ++i)
-    if((q[i] == a && q[(i + 1) % 3] == b) || (q[i] == b && q[(i + 1) % 3] == a))
-      return i;
-  return 3;
-}
-
 // Inserts zero-length edges and collinear slivers into `soup` (see the header comment), at edges of
 // faces that share no vertex, so that each change is the one described. `reference` (a copy of `soup`
 // on entry) gets the same vertices without degeneracy: a midpoint splits the edge on both sides, a vertex
@@ -175,56 +166,20 @@ std::vector<Inserted_vertex> insert_degeneracies(Polygon_soup& soup, Polygon_sou
     // every face touching the chosen edge must be free too
     const std::size_t k = random.integer(0, 2);
     const std::size_t a = t[k], b = t[(k + 1) % 3];
-    bool free = true;
+    std::vector<std::size_t> touched;
     for(const std::vector<std::size_t>& q : soup.polygons)
       if(side_of_edge(q, a, b) < 3)
-        for(std::size_t v : q)
-          free = free && !used[v];
-    if(!free)
+        touched.insert(touched.end(), q.begin(), q.end());
+    if(std::any_of(touched.begin(), touched.end(), [&used](std::size_t v) { return used[v] != 0; }))
       continue;
+    for(std::size_t v : touched)
+      used[v] = 1;
     const bool midpoint = random.chance(0.5);
-    const std::size_t m = soup.points.size();
-    soup.points.push_back(midpoint ? CGAL::midpoint(soup.points[a], soup.points[b]) : soup.points[a]);
-    std::vector<std::vector<std::size_t> > out;
-    for(const std::vector<std::size_t>& q : soup.polygons)
-    {
-      const int i = side_of_edge(q, a, b);
-      if(i == 3)
-      {
-        out.push_back(q);
-        continue;
-      }
-      for(std::size_t v : q)
-        used[v] = 1;
-      const std::size_t u = q[i], v = q[(i + 1) % 3], w = q[(i + 2) % 3];
-      if(midpoint && u == b)
-      {
-        out.push_back(q); // (b, a, d) stays, glued to the sliver along ab
-        continue;
-      }
-      out.push_back({u, m, w});
-      out.push_back({m, v, w});
-      if(midpoint)
-        out.push_back({a, b, m}); // the sliver
-    }
-    soup.polygons = out;
-    reference.points.push_back(soup.points[m]);
+    const std::size_t m = midpoint ? insert_sliver(soup, a, b) : split_edge(soup, a, b, soup.points[a]);
     if(midpoint)
-    {
-      std::vector<std::vector<std::size_t> > split;
-      for(const std::vector<std::size_t>& q : reference.polygons)
-      {
-        const int i = side_of_edge(q, a, b);
-        if(i == 3)
-        {
-          split.push_back(q);
-          continue;
-        }
-        split.push_back({q[i], m, q[(i + 2) % 3]});
-        split.push_back({m, q[(i + 1) % 3], q[(i + 2) % 3]});
-      }
-      reference.polygons = split;
-    }
+      split_edge(reference, a, b, soup.points[m]);
+    else
+      reference.points.push_back(soup.points[m]);
     used.push_back(1);
     inserted.push_back({m, a, b, midpoint});
     ++(midpoint ? slivers : zero_length);

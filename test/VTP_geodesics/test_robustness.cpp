@@ -448,33 +448,6 @@ TEST(Degenerate, nearly_collinear_triangle_height_field)
 
 namespace {
 
-// Splits the edge (a, b) of the two faces (a, b, c) and (b, a, d) of `soup` at a new vertex m placed at
-// `m_position`, into (a, m, c), (m, b, c), (b, m, d), (m, a, d). Returns m.
-std::size_t split_edge(Polygon_soup& soup, std::size_t a, std::size_t b, const Point_3& m_position)
-{
-  const std::size_t m = soup.points.size();
-  soup.points.push_back(m_position);
-  std::vector<std::vector<std::size_t> > out;
-  for(const std::vector<std::size_t>& t : soup.polygons)
-  {
-    bool split = false;
-    for(int k = 0; k < 3 && !split; ++k)
-    {
-      const std::size_t u = t[k], v = t[(k + 1) % 3], w = t[(k + 2) % 3];
-      if((u == a && v == b) || (u == b && v == a))
-      {
-        out.push_back({u, m, w});
-        out.push_back({m, v, w});
-        split = true;
-      }
-    }
-    if(!split)
-      out.push_back(t);
-  }
-  soup.polygons = out;
-  return m;
-}
-
 // Some edges of `soup`, far apart: (a, b) of every `step`-th triangle, skipping triangles that touch an
 // already chosen edge.
 std::vector<std::pair<std::size_t, std::size_t> > spread_edges(const Polygon_soup& soup, std::size_t step)
@@ -545,26 +518,8 @@ TEST(Degenerate, collinear_slivers_on_a_closed_cube)
   std::vector<Sliver> slivers;
   for(const auto& e : spread_edges(cube, 7))
   {
-    const std::size_t a = e.first, b = e.second, m = soup.points.size();
-    soup.points.push_back(CGAL::midpoint(cube.points[a], cube.points[b]));
+    const std::size_t a = e.first, b = e.second, m = insert_sliver(soup, a, b);
     ASSERT_TRUE(CGAL::collinear(soup.points[a], soup.points[b], soup.points[m]));
-    std::vector<std::vector<std::size_t> > out;
-    for(const std::vector<std::size_t>& t : soup.polygons)
-    {
-      int k = 0;
-      while(k < 3 && !(t[k] == a && t[(k + 1) % 3] == b))
-        ++k;
-      if(k == 3)
-      {
-        out.push_back(t);
-        continue;
-      }
-      const std::size_t c = t[(k + 2) % 3];
-      out.push_back({a, m, c});
-      out.push_back({m, b, c});
-      out.push_back({a, b, m}); // the sliver, glued to (b, a, d) along ab
-    }
-    soup.polygons = out;
     slivers.push_back({a, b, m});
   }
   ASSERT_GE(slivers.size(), 6u);

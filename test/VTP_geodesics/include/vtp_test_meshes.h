@@ -95,6 +95,62 @@ inline Polygon_soup canonical_soup(const Surface_mesh& mesh)
   return soup;
 }
 
+// The side k of triangle t (from t[k] to t[k + 1]) that joins a and b, in either direction; 3 if none.
+inline int side_of_edge(const std::vector<std::size_t>& t, std::size_t a, std::size_t b)
+{
+  for(int k = 0; k < 3; ++k)
+    if((t[k] == a && t[(k + 1) % 3] == b) || (t[k] == b && t[(k + 1) % 3] == a))
+      return k;
+  return 3;
+}
+
+// Splits the edge (a, b) of the faces (a, b, c) and (b, a, d) of `soup` at a new vertex m placed at
+// `m_position`, into (a, m, c), (m, b, c), (b, m, d), (m, a, d). Returns m.
+inline std::size_t split_edge(Polygon_soup& soup, std::size_t a, std::size_t b, const Point_3& m_position)
+{
+  const std::size_t m = soup.points.size();
+  soup.points.push_back(m_position);
+  std::vector<std::vector<std::size_t> > out;
+  for(const std::vector<std::size_t>& t : soup.polygons)
+  {
+    const int k = side_of_edge(t, a, b);
+    if(k == 3)
+    {
+      out.push_back(t);
+      continue;
+    }
+    out.push_back({t[k], m, t[(k + 2) % 3]});
+    out.push_back({m, t[(k + 1) % 3], t[(k + 2) % 3]});
+  }
+  soup.polygons = out;
+  return m;
+}
+
+// Inserts a zero-area "sliver" at the edge a -> b: its face (a, b, c) becomes (a, m, c), (m, b, c) and the
+// sliver (a, b, m), m being the midpoint of ab; the face (b, a, d) stays, glued to the sliver along ab.
+// The surface is unchanged. Returns m.
+inline std::size_t insert_sliver(Polygon_soup& soup, std::size_t a, std::size_t b)
+{
+  const std::size_t m = soup.points.size();
+  soup.points.push_back(CGAL::midpoint(soup.points[a], soup.points[b]));
+  std::vector<std::vector<std::size_t> > out;
+  for(const std::vector<std::size_t>& t : soup.polygons)
+  {
+    const int k = side_of_edge(t, a, b);
+    if(k == 3 || t[k] != a)
+    {
+      out.push_back(t);
+      continue;
+    }
+    const std::size_t c = t[(k + 2) % 3];
+    out.push_back({a, m, c});
+    out.push_back({m, b, c});
+    out.push_back({a, b, m});
+  }
+  soup.polygons = out;
+  return m;
+}
+
 // Splits the cell (v00, v10, v11, v01) (counterclockwise) into two triangles; the diagonal alternates
 // in a checkerboard pattern so that the mesh has no preferred direction.
 inline void add_cell(Polygon_soup& soup, std::size_t v00, std::size_t v10, std::size_t v11, std::size_t v01,

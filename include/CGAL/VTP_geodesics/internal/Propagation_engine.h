@@ -937,34 +937,19 @@ private:
     {
       bounds.store((std::uint64_t(back) << 32) | std::uint64_t(front), std::memory_order_relaxed);
     }
-    bool take_front(std::size_t& i)
+    bool take_front(std::size_t& i) { return take(false, i); }
+    bool take_back(std::size_t& i) { return take(true, i); }
+    bool take(bool from_back, std::size_t& i)
     {
       std::uint64_t b = bounds.load(std::memory_order_relaxed);
       for(;;)
       {
-        const std::uint64_t front = b & 0xffffffffu, back = b >> 32;
+        std::uint64_t front = b & 0xffffffffu, back = b >> 32;
         if(front >= back)
           return false;
-        if(bounds.compare_exchange_weak(b, (back << 32) | (front + 1), std::memory_order_relaxed))
-        {
-          i = static_cast<std::size_t>(front);
+        i = static_cast<std::size_t>(from_back ? --back : front++);
+        if(bounds.compare_exchange_weak(b, (back << 32) | front, std::memory_order_relaxed))
           return true;
-        }
-      }
-    }
-    bool take_back(std::size_t& i)
-    {
-      std::uint64_t b = bounds.load(std::memory_order_relaxed);
-      for(;;)
-      {
-        const std::uint64_t front = b & 0xffffffffu, back = b >> 32;
-        if(front >= back)
-          return false;
-        if(bounds.compare_exchange_weak(b, ((back - 1) << 32) | front, std::memory_order_relaxed))
-        {
-          i = static_cast<std::size_t>(back - 1);
-          return true;
-        }
       }
     }
   };

@@ -93,29 +93,10 @@ public:
   }
 
   // Moves the windows of the list of h to the end of `out` and empties the list.
-  void take(Index h, std::vector<Window>& out, std::size_t p = 0)
-  {
-    copy(h, out);
-    clear(h, p);
-  }
-
-  // Appends the windows of the list of h to `out`, leaving the list as it is. Only reads the
-  // storage, so that several threads may copy different lists at the same time.
-  void copy(Index h, std::vector<Window>& out) const
-  {
-    for(Index b = m_head[h]; b != NO_INDEX; b = block(b).next)
-    {
-      const Block& blk = block(b);
-      out.insert(out.end(), blk.w, blk.w + blk.count);
-    }
-  }
+  void take(Index h, std::vector<Window>& out, std::size_t p = 0) { take_chain(detach(h), out, p); }
 
   // Deletes the windows of the list of h, from the thread that owns pool p.
-  void clear(Index h, std::size_t p = 0)
-  {
-    free_chain(m_head[h], p);
-    m_head[h] = m_tail[h] = NO_INDEX;
-  }
+  void clear(Index h, std::size_t p = 0) { free_chain(detach(h), p); }
 
   // Detaches the windows of the list of h (the list is empty afterwards) and returns the chain
   // of blocks that holds them, to be read and freed by take_chain().
