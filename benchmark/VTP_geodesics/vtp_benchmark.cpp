@@ -14,9 +14,11 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/assertions_behaviour.h>
+#include <CGAL/property_map.h>
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
-#include <CGAL/VTP_geodesics/options_and_statistics.h>
+#include <CGAL/VTP_geodesics/parameters.h>
+#include <CGAL/VTP_geodesics/Propagation_statistics.h>
 #include <CGAL/VTP_geodesics/internal/tools/midpoint_subdivision.h>
 #include <CGAL/VTP_geodesics/internal/tools/shortest_path_reference.h>
 
@@ -326,25 +328,24 @@ void run_vtp(const Mesh& mesh, Vertex_index source, const Method& method, int re
   typedef CGAL::VTP_geodesics::Geodesic_distance_solver<Mesh> Solver;
   Solver solver(mesh);
   h.preprocessing_seconds = solver.preprocessing_seconds();
-  CGAL::VTP_geodesics::Propagation_options options;
-  options.lambda = method.lambda;
-  options.number_of_threads = method.threads;
+  const auto options = CGAL::VTP_geodesics::parameters::lambda(method.lambda).number_of_threads(method.threads);
+  // the distances are read from the solver: nothing to write through a map
   for(int r = 0; r < repeat; ++r)
   {
-    CGAL::VTP_geodesics::Propagation_statistics s;
     switch(method.kind)
     {
       case Method_kind::VTP:
       case Method_kind::AVTP:
-        s = solver.compute_dense<CGAL::Sequential_tag>(source, options);
+        solver.compute<CGAL::Sequential_tag>(CGAL::Constant_property_map<Vertex_index, double>(), source, options);
         break;
       default:
 #ifdef _OPENMP
-        s = solver.compute_dense<CGAL::Parallel_tag>(source, options);
+        solver.compute<CGAL::Parallel_tag>(CGAL::Constant_property_map<Vertex_index, double>(), source, options);
 #else
         throw std::runtime_error("method " + method.label + " needs OpenMP");
 #endif
     }
+    const CGAL::VTP_geodesics::Propagation_statistics& s = solver.statistics();
     if(r == 0 || s.seconds < h.seconds)
       h.seconds = s.seconds;
     h.windows_created = s.windows_created;

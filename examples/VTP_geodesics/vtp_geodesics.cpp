@@ -16,9 +16,11 @@
 #include <CGAL/IO/OFF.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/assertions_behaviour.h>
+#include <CGAL/property_map.h>
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
-#include <CGAL/VTP_geodesics/options_and_statistics.h>
+#include <CGAL/VTP_geodesics/parameters.h>
+#include <CGAL/VTP_geodesics/Propagation_statistics.h>
 #include <CGAL/VTP_geodesics/internal/tools/shortest_path_reference.h>
 #include <CGAL/VTP_geodesics/internal/tools/triangle_mesh_from_soup.h>
 
@@ -142,15 +144,20 @@ const Method_info& find_method(const std::string& name)
   throw Usage_error("unknown method '" + name + "' (expected vtp, pvtp, avtp or pavtp)");
 }
 
-// Runs `method` and returns its statistics; the distances stay in the solver.
+// Runs `method` from `sources` and returns its statistics; the distances stay in the solver.
+template <class NamedParameters>
 const CGAL::VTP_geodesics::Propagation_statistics&
-run_method(const Method_info& method, Solver& solver, Vertex_index source,
-           const CGAL::VTP_geodesics::Propagation_options& options)
+run_method(const Method_info& method, Solver& solver, const std::vector<Vertex_index>& sources,
+           const NamedParameters& np)
 {
   if(!method.parallel)
-    return solver.compute_dense<CGAL::Sequential_tag>(source, options);
+  {
+    solver.compute<CGAL::Sequential_tag>(CGAL::Constant_property_map<Vertex_index, double>(), sources, np);
+    return solver.statistics();
+  }
 #ifdef _OPENMP
-  return solver.compute_dense<CGAL::Parallel_tag>(source, options);
+  solver.compute<CGAL::Parallel_tag>(CGAL::Constant_property_map<Vertex_index, double>(), sources, np);
+  return solver.statistics();
 #else
   throw Usage_error(std::string("method ") + method.name + " needs OpenMP, and this program was built without it");
 #endif
@@ -547,13 +554,10 @@ int run(int argc, char** argv)
   const std::vector<Vertex_index> sources(input.copies.begin() + std::ptrdiff_t(input.copy_begin[args.source]),
                                           input.copies.begin() + std::ptrdiff_t(input.copy_begin[args.source + 1]));
 
-  CGAL::VTP_geodesics::Propagation_options options;
-  options.number_of_threads = args.threads;
-  if(method.approximate)
-  {
-    options.lambda = args.has_lambda ? args.lambda : CGAL::VTP_geodesics::Propagation_options::recommended_lambda;
-    options.lambda_g = args.lambda_g;
-  }
+  const double lambda = !method.approximate ? std::numeric_limits<double>::infinity()
+                       : (args.has_lambda ? args.lambda : CGAL::VTP_geodesics::recommended_lambda);
+  const auto options = CGAL::VTP_geodesics::parameters::number_of_threads(args.threads)
+                         .lambda(lambda).lambda_g(args.lambda_g);
 
   Solver solver(mesh);
   Report report;
@@ -569,29 +573,14 @@ int run(int argc, char** argv)
   report.anisotropy = solver.anisotropy();
   report.stats.method = method.name;
 
-  // Distances per mesh vertex (the solver numbers them in the order of vertices(mesh)), the minimum
-  // over the source copies; then per vertex of the file.
+  // Distances per mesh vertex (the solver numbers them in the order of vertices(mesh)), from all the copies
+  // of the source at once; then per vertex of the file.
   const double infinity = std::numeric_limits<double>::infinity();
   std::vector<double> mesh_distances(solver.number_of_vertices(), infinity);
-  for(std::size_t k = 0; k < sources.size(); ++k)
+  if(!sources.empty())
   {
-    const CGAL::VTP_geodesics::Propagation_statistics& st = run_method(method, solver, sources[k], options);
-    if(k == 0)
-      report.stats = st;
-    else
-    {
-      report.stats.seconds += st.seconds;
-      report.stats.windows_created += st.windows_created;
-      report.stats.windows_propagated += st.windows_propagated;
-      report.stats.peak_live_windows = (std::max)(report.stats.peak_live_windows, st.peak_live_windows);
-      report.stats.peak_window_bytes = (std::max)(report.stats.peak_window_bytes, st.peak_window_bytes);
-      report.stats.vertices_processed += st.vertices_processed;
-      report.stats.pseudo_sources += st.pseudo_sources;
-      report.stats.resets += st.resets;
-    }
-    const std::vector<double>& d = solver.distances();
-    for(std::size_t j = 0; j < mesh_distances.size(); ++j)
-      mesh_distances[j] = (std::min)(mesh_distances[j], d[j]);
+    report.stats = run_method(method, solver, sources, options);
+    mesh_distances = solver.distances();
   }
   auto on_file_vertices = [&](const std::vector<double>& per_mesh_vertex) {
     std::vector<double> r = CGAL::VTP_geodesics::internal::values_on_soup_points(

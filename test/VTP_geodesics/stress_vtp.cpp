@@ -54,7 +54,6 @@
 
 using namespace vtp_test;
 using CGAL::VTP_geodesics::Geodesic_distance_solver;
-using CGAL::VTP_geodesics::Propagation_options;
 
 namespace {
 
@@ -430,7 +429,7 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
     // (VTP runs for PVTP too, which must equal it)
     set_current_case(where + ", vtp; " + reproduce);
     t0 = std::chrono::steady_clock::now();
-    solver.compute_dense<CGAL::Sequential_tag>(s);
+    solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), s);
     totals.vtp_seconds += seconds_since(t0);
     sequential = solver.distances();
     if(settings.vtp)
@@ -439,10 +438,8 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
     if(settings.pvtp)
     {
       set_current_case(where + ", pvtp; " + reproduce);
-      Propagation_options options;
-      options.number_of_threads = 2;
       t0 = std::chrono::steady_clock::now();
-      solver.compute_dense<CGAL::Parallel_tag>(s, options);
+      solver.compute<CGAL::Parallel_tag>(vtp_test::Discard_map(), s, CGAL::VTP_geodesics::parameters::number_of_threads(2));
       totals.pvtp_seconds += seconds_since(t0);
       const std::vector<double> parallel = solver.distances();
       check("pvtp", parallel, reference, "CGAL");

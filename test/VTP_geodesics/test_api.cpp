@@ -27,7 +27,6 @@
 using namespace vtp_test;
 using CGAL::VTP_geodesics::Geodesic_distance_solver;
 using CGAL::VTP_geodesics::Invalid_input_error;
-using CGAL::VTP_geodesics::Propagation_options;
 using CGAL::VTP_geodesics::Propagation_statistics;
 using CGAL::VTP_geodesics::compute_geodesic_distances;
 
@@ -46,7 +45,7 @@ std::vector<double> distances_through_assoc_map(const Mesh& mesh, std::size_t so
   const std::vector<vertex_descriptor> vs(vertices(mesh).begin(), vertices(mesh).end());
   Map map;
   Geodesic_distance_solver<Mesh> solver(mesh);
-  solver.compute(vs[source], boost::make_assoc_property_map(map));
+  solver.compute(boost::make_assoc_property_map(map), vs[source]);
   std::vector<double> d;
   for(vertex_descriptor v : vs)
   {
@@ -108,7 +107,7 @@ TEST(Genericity, surface_mesh_and_polyhedron_give_identical_distances)
       Surface_mesh sm_copy = sm;
       auto pmap = sm_copy.add_property_map<Vertex_index, double>("v:distance", -1.).first;
       Geodesic_distance_solver<Surface_mesh> solver(sm_copy);
-      solver.compute(Vertex_index(static_cast<Surface_mesh::size_type>(source)), pmap);
+      solver.compute(pmap, Vertex_index(static_cast<Surface_mesh::size_type>(source)));
       std::vector<double> d_pmap;
       for(Vertex_index v : vertices(sm_copy))
         d_pmap.push_back(pmap[v]);
@@ -152,13 +151,24 @@ TEST(Genericity, vertex_point_map_named_parameter)
     x *= 2.;
   std::vector<double> d(num_vertices(mesh), NOT_A_VERTEX);
   compute_geodesic_distances(mesh, boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), s,
-                             Propagation_options(), CGAL::parameters::vertex_point_map(vpm));
+                             CGAL::parameters::vertex_point_map(vpm));
   EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE, "free function, scaled vertex point map"));
 
   std::vector<double> d_solver(num_vertices(mesh), NOT_A_VERTEX);
   Geodesic_distance_solver<Surface_mesh, CGAL::Default, decltype(vpm)> solver(mesh, vpm);
-  solver.compute(s, boost::make_iterator_property_map(d_solver.begin(), get(boost::vertex_index, mesh)));
+  solver.compute(boost::make_iterator_property_map(d_solver.begin(), get(boost::vertex_index, mesh)), s);
   EXPECT_TRUE(identical(d, d_solver));
+
+  // the same with this package's named parameters, and through the solver's named-parameter constructor
+  std::vector<double> d_np(num_vertices(mesh), NOT_A_VERTEX);
+  compute_geodesic_distances(mesh, boost::make_iterator_property_map(d_np.begin(), get(boost::vertex_index, mesh)), s,
+                             CGAL::VTP_geodesics::parameters::vertex_point_map(vpm).minimum_window_length(1e-9));
+  EXPECT_TRUE(identical(d, d_np));
+  Geodesic_distance_solver<Surface_mesh, CGAL::Default, decltype(vpm)> solver_np(
+    mesh, CGAL::parameters::vertex_point_map(vpm));
+  std::vector<double> d_solver_np(num_vertices(mesh), NOT_A_VERTEX);
+  solver_np.compute(boost::make_iterator_property_map(d_solver_np.begin(), get(boost::vertex_index, mesh)), s);
+  EXPECT_TRUE(identical(d, d_solver_np));
 }
 
 TEST(Genericity, free_function_and_solver_agree)
@@ -167,10 +177,11 @@ TEST(Genericity, free_function_and_solver_agree)
   for(Vertex_index s : {Vertex_index(10), Vertex_index(2000)})
   {
     std::vector<double> d_free(num_vertices(mesh), NOT_A_VERTEX);
-    const Propagation_statistics st =
-      compute_geodesic_distances(mesh, boost::make_iterator_property_map(d_free.begin(), get(boost::vertex_index, mesh)), s);
+    Propagation_statistics st;
+    compute_geodesic_distances(mesh, boost::make_iterator_property_map(d_free.begin(), get(boost::vertex_index, mesh)), s,
+                               CGAL::VTP_geodesics::parameters::statistics(st));
     Propagation_statistics st_solver;
-    const std::vector<double> d_solver = vtp_distances(mesh, s, Propagation_options(), &st_solver);
+    const std::vector<double> d_solver = vtp_distances(mesh, s, CGAL::parameters::default_values(), &st_solver);
     EXPECT_TRUE(identical(d_free, d_solver));
     EXPECT_EQ(st.reached_vertices, st_solver.reached_vertices);
     EXPECT_EQ(st.max_distance, st_solver.max_distance);
@@ -187,7 +198,7 @@ TEST(Genericity, reused_solver_equals_fresh_solvers)
   for(Vertex_index s : {Vertex_index(0), Vertex_index(1234), Vertex_index(2774), Vertex_index(0)})
   {
     std::vector<double> d(num_vertices(mesh), NOT_A_VERTEX);
-    solver.compute(s, boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)));
+    solver.compute(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), s);
     EXPECT_TRUE(identical(d, vtp_distances(mesh, s))) << "source " << std::size_t(s);
 
     // the dense accessors report the same distances
@@ -196,11 +207,12 @@ TEST(Genericity, reused_solver_equals_fresh_solvers)
       ASSERT_EQ(solver.distance(v), d[v]);
       ASSERT_EQ(solver.distances()[solver.vertex_id(v)], d[v]);
     }
-    solver.compute_dense(s);
-    std::vector<double> dense(num_vertices(mesh));
-    for(Vertex_index v : vertices(mesh))
-      dense[v] = solver.distance(v);
-    EXPECT_TRUE(identical(d, dense));
+    // the source set of the solver gives the same
+    solver.clear_sources();
+    solver.add_source(s);
+    std::vector<double> from_set(num_vertices(mesh), NOT_A_VERTEX);
+    solver.compute(boost::make_iterator_property_map(from_set.begin(), get(boost::vertex_index, mesh)));
+    EXPECT_TRUE(identical(d, from_set));
   }
 }
 
@@ -213,12 +225,13 @@ TEST(Statistics, consistent_with_the_output)
   const Surface_mesh& mesh = elephant();
   Geodesic_distance_solver<Surface_mesh> solver(mesh);
   std::vector<double> d(num_vertices(mesh), NOT_A_VERTEX);
-  const Propagation_statistics st =
-    solver.compute(Vertex_index(77), boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)));
+  solver.compute(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), Vertex_index(77));
+  const Propagation_statistics st = solver.statistics();
 
   EXPECT_EQ(st.vertices, num_vertices(mesh));
   EXPECT_EQ(st.faces, num_faces(mesh));
   EXPECT_EQ(st.method, "vtp");
+  EXPECT_EQ(st.sources, 1u);
   EXPECT_EQ(st.threads, 1);
   EXPECT_GT(st.windows_created, 0u);
   EXPECT_GT(st.windows_propagated, 0u);
@@ -291,13 +304,18 @@ TEST(Bad_input, source_not_in_the_mesh_is_rejected)
   std::vector<double> d(num_vertices(mesh));
   auto map = boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh));
   const Vertex_index outside(static_cast<Surface_mesh::size_type>(num_vertices(mesh) + 10));
-  EXPECT_THROW(solver.compute(outside, map), Invalid_input_error);
-  EXPECT_THROW(solver.compute_dense(outside), Invalid_input_error);
-  EXPECT_THROW(solver.compute(Surface_mesh::null_vertex(), map), Invalid_input_error);
+  EXPECT_THROW(solver.compute(map, outside), Invalid_input_error);
+  EXPECT_THROW(solver.add_source(outside), Invalid_input_error);
+  EXPECT_THROW(solver.compute(map, Surface_mesh::null_vertex()), Invalid_input_error);
   EXPECT_THROW(compute_geodesic_distances(mesh, map, outside), Invalid_input_error);
+  EXPECT_THROW(compute_geodesic_distances(mesh, map, std::vector<Vertex_index>{Vertex_index(0), outside}),
+               Invalid_input_error);
+  // no source at all
+  EXPECT_THROW(solver.compute(map), Invalid_input_error);
+  EXPECT_THROW(compute_geodesic_distances(mesh, map, std::vector<Vertex_index>()), Invalid_input_error);
 
   // the solver is still usable after a rejected call
-  EXPECT_NO_THROW(solver.compute(Vertex_index(1), map));
+  EXPECT_NO_THROW(solver.compute(map, Vertex_index(1)));
   EXPECT_EQ(d[1], 0.);
 }
 
@@ -316,8 +334,8 @@ TEST(Bad_input, removed_source_vertex_is_rejected)
   Geodesic_distance_solver<Surface_mesh> solver(mesh);
   std::vector<double> d(index_range(mesh));
   auto map = boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh));
-  EXPECT_THROW(solver.compute(corner, map), Invalid_input_error);
-  EXPECT_NO_THROW(solver.compute(Vertex_index(0), map));
+  EXPECT_THROW(solver.compute(map, corner), Invalid_input_error);
+  EXPECT_NO_THROW(solver.compute(map, Vertex_index(0)));
 }
 
 TEST(Bad_input, invalid_options_are_rejected)
@@ -328,29 +346,24 @@ TEST(Bad_input, invalid_options_are_rejected)
   auto map = boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh));
   const double nan = std::numeric_limits<double>::quiet_NaN();
 
+  namespace VP = CGAL::VTP_geodesics::parameters;
   for(double lambda : {0., -0., -1., -INF, nan})
   {
-    Propagation_options o;
-    o.lambda = lambda;
-    EXPECT_THROW(solver.compute(Vertex_index(0), map, o), Invalid_input_error) << "lambda = " << lambda;
-    EXPECT_THROW(solver.compute_dense(Vertex_index(0), o), Invalid_input_error) << "lambda = " << lambda;
-    EXPECT_THROW(compute_geodesic_distances(mesh, map, Vertex_index(0), o), Invalid_input_error)
+    EXPECT_THROW(solver.compute(map, Vertex_index(0), VP::lambda(lambda)), Invalid_input_error) << "lambda = " << lambda;
+    EXPECT_THROW(compute_geodesic_distances(mesh, map, Vertex_index(0), VP::lambda(lambda)), Invalid_input_error)
       << "lambda = " << lambda;
   }
-  for(double lambda_g : {-1., -1e-300, nan})
-  {
-    Propagation_options o;
-    o.lambda = 2.;
-    o.lambda_g = lambda_g;
-    EXPECT_THROW(solver.compute(Vertex_index(0), map, o), Invalid_input_error) << "lambda_g = " << lambda_g;
-  }
+  for(double lambda_g : {-1., -1e-300, nan, INF})
+    EXPECT_THROW(solver.compute(map, Vertex_index(0), VP::lambda(2.).lambda_g(lambda_g)), Invalid_input_error)
+      << "lambda_g = " << lambda_g;
+  for(double length : {-1e-9, 1., nan})
+    EXPECT_THROW(solver.compute(map, Vertex_index(0), VP::minimum_window_length(length)), Invalid_input_error)
+      << "minimum_window_length = " << length;
+  EXPECT_THROW(solver.compute(map, Vertex_index(0), VP::number_of_threads(-1)), Invalid_input_error);
 
-  // valid options
-  Propagation_options o;
-  EXPECT_NO_THROW(solver.compute(Vertex_index(0), map, o));
-  o.lambda = 2.5;
-  o.lambda_g = 0.;
-  EXPECT_NO_THROW(solver.compute(Vertex_index(0), map, o));
+  // valid parameters
+  EXPECT_NO_THROW(solver.compute(map, Vertex_index(0)));
+  EXPECT_NO_THROW(solver.compute(map, Vertex_index(0), VP::lambda(2.5).lambda_g(0.)));
 }
 
 TEST(Bad_input, non_finite_or_huge_coordinates_are_rejected)
@@ -398,15 +411,14 @@ TEST(Parallel, matches_the_analytic_distances)
   Geodesic_distance_solver<Surface_mesh> solver(mesh);
   for(int threads : {0, 1, 2})
   {
-    Propagation_options o;
-    o.number_of_threads = threads;
     const std::size_t s = grid_vertex(n, 7, 11);
     std::vector<double> expected(soup.points.size()), d(soup.points.size(), NOT_A_VERTEX);
     for(std::size_t i = 0; i < soup.points.size(); ++i)
       expected[i] = distance(soup.points[s], soup.points[i]);
-    const Propagation_statistics& st = solver.compute<CGAL::Parallel_tag>(
-      Vertex_index(static_cast<Surface_mesh::size_type>(s)),
-      boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), o);
+    solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
+                                       Vertex_index(static_cast<Surface_mesh::size_type>(s)),
+                                       CGAL::VTP_geodesics::parameters::number_of_threads(threads));
+    const Propagation_statistics& st = solver.statistics();
     EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE, "parallel, " + std::to_string(threads) + " threads"));
     EXPECT_EQ(st.method, "pvtp");
     EXPECT_GE(st.threads, 1);
@@ -427,7 +439,7 @@ TEST(Parallel, matches_sequential_on_real_meshes)
     {
       const std::vector<double> sequential = vtp_distances(mesh, s);
       std::vector<double> parallel(num_vertices(mesh), NOT_A_VERTEX);
-      solver.compute<CGAL::Parallel_tag>(s, boost::make_iterator_property_map(parallel.begin(), get(boost::vertex_index, mesh)));
+      solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(parallel.begin(), get(boost::vertex_index, mesh)), s);
       EXPECT_TRUE(distances_near(parallel, sequential, EXACT_TOLERANCE,
                                  std::string(name) + ", parallel vs sequential, source " + std::to_string(std::size_t(s))));
     }
@@ -440,8 +452,10 @@ TEST(Parallel, unreachable_vertices)
   soup.append(regular_tetrahedron(), Vector_3(10, 0, 0));
   const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
   std::vector<double> d(num_vertices(mesh), NOT_A_VERTEX);
-  const Propagation_statistics st = compute_geodesic_distances<CGAL::Parallel_tag>(
-    mesh, boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), Vertex_index(0));
+  Propagation_statistics st;
+  compute_geodesic_distances<CGAL::Parallel_tag>(
+    mesh, boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), Vertex_index(0),
+    CGAL::VTP_geodesics::parameters::statistics(st));
   for(std::size_t i = 0; i < 49; ++i)
     EXPECT_NEAR(d[i], distance(soup.points[0], soup.points[i]), EXACT_TOLERANCE * std::sqrt(2.));
   for(std::size_t i = 49; i < 53; ++i)
@@ -457,12 +471,12 @@ TEST(Parallel, approximate_never_below_the_exact_distance)
   const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
   const std::size_t s = grid_vertex(n, 20, 5);
   Geodesic_distance_solver<Surface_mesh> solver(mesh);
-  Propagation_options o;
-  o.lambda = 1.;
+  const double lambda = 1.;
   std::vector<double> d(soup.points.size(), NOT_A_VERTEX);
-  const Propagation_statistics& st = solver.compute<CGAL::Parallel_tag>(
-    Vertex_index(static_cast<Surface_mesh::size_type>(s)),
-    boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), o);
+  solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
+                                     Vertex_index(static_cast<Surface_mesh::size_type>(s)),
+                                     CGAL::VTP_geodesics::parameters::lambda(lambda));
+  const Propagation_statistics& st = solver.statistics();
   EXPECT_EQ(st.method, "pavtp");
   EXPECT_EQ(st.reached_vertices, soup.points.size());
   double below = 0.;
@@ -472,7 +486,7 @@ TEST(Parallel, approximate_never_below_the_exact_distance)
     below = (std::max)(below, distance(soup.points[s], soup.points[i]) - d[i]);
   }
   EXPECT_LE(below, EXACT_TOLERANCE * std::sqrt(2.));
-  ASSERT_GT(st.max_distance, 5. * o.lambda * solver.mean_edge_length());
+  ASSERT_GT(st.max_distance, 5. * lambda * solver.mean_edge_length());
   EXPECT_GT(st.resets, 0u);
 }
 
@@ -496,12 +510,10 @@ TEST(Approximate, never_below_the_exact_distance)
   Geodesic_distance_solver<Surface_mesh> solver(mesh);
   for(double lambda : {0.5, 1., 3.})
   {
-    Propagation_options o;
-    o.lambda = lambda;
     std::vector<double> d(soup.points.size(), NOT_A_VERTEX);
-    const Propagation_statistics& st = solver.compute(
-      Vertex_index(static_cast<Surface_mesh::size_type>(s)),
-      boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), o);
+    solver.compute(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
+                   Vertex_index(static_cast<Surface_mesh::size_type>(s)), CGAL::VTP_geodesics::parameters::lambda(lambda));
+    const Propagation_statistics& st = solver.statistics();
     EXPECT_EQ(st.method, "avtp");
     EXPECT_EQ(st.reached_vertices, soup.points.size());
     EXPECT_EQ(d[s], 0.);

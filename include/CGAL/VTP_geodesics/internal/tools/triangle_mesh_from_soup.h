@@ -14,7 +14,7 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
-#include <CGAL/VTP_geodesics/options_and_statistics.h>
+#include <CGAL/VTP_geodesics/Invalid_input_error.h>
 
 #include <CGAL/disable_warnings.h>
 
