@@ -19,6 +19,7 @@
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/engine/Path_trace.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
 #include <CGAL/VTP_geodesics/internal/source_forms.h>
 
@@ -42,6 +43,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -229,8 +231,63 @@ public:
   const std::vector<double>& distances() const { return m_engine.distances(); }
   /// the distance of `v`.
   double distance(vertex_descriptor v) const { return m_engine.distances()[vertex_id(v)]; }
+  /// the number of targets (named parameter `targets`).
+  std::size_t number_of_targets() const { return m_engine.number_of_targets(); }
+  /// the distance of target `i` (in the order given): exact, or `+infinity` if it is unreachable or
+  /// beyond the distance limit.
+  double target_distance(std::size_t i) const
+  {
+    CGAL_precondition(i < number_of_targets());
+    return m_engine.target_distance(i);
+  }
   /// the statistics.
   const Propagation_statistics& statistics() const { return m_statistics; }
+  /// @}
+
+  /// \name Geodesic paths
+  /// The shortest path from a vertex or a point of the surface back to its nearest source, after a
+  /// computation. With the named parameter `record_paths(true)` the computation keeps, for each vertex and
+  /// each target, what the trace-back needs (O(V + targets) memory, never the windows); otherwise (or for
+  /// a point that was not a target), a path request runs the propagation again from the same sources, with
+  /// the same parameters, until the point is reached, in a separate workspace (the results above do not
+  /// change). The path is straight in the unfolding of the faces it crosses, turns only at saddle or
+  /// boundary vertices (and, for the approximate variants, at vertices where windows were reset), and its
+  /// length is the computed distance (up to rounding).
+  /// \throws Invalid_input_error if there was no computation yet, if the point is not a vertex or a point
+  /// of the mesh, or if no source reaches it (or it lies beyond the distance limit).
+  /// @{
+
+  /// writes the points of the path from `v` to its nearest source, `v` first, to `out` (value type
+  /// `Point_3`): the vertices, the crossings of edges, and the source.
+  template <class OutputIterator>
+  OutputIterator shortest_path_points(vertex_descriptor v, OutputIterator out)
+  {
+    return points_of(trace(target_of(v)), out);
+  }
+
+  /// the same from a point of the surface.
+  template <class FT, class OutputIterator>
+  OutputIterator shortest_path_points(const std::pair<face_descriptor, std::array<FT, 3> >& location,
+                                      OutputIterator out)
+  {
+    return points_of(trace(target_of(location)), out);
+  }
+
+  /// writes the same path as `shortest_path_points()` as face locations to `out` (value type
+  /// `Face_location`): a vertex as a corner of one of its faces, an edge point in one of its two faces.
+  template <class OutputIterator>
+  OutputIterator shortest_path_locations(vertex_descriptor v, OutputIterator out)
+  {
+    return locations_of(trace(target_of(v)), out);
+  }
+
+  /// the same from a point of the surface.
+  template <class FT, class OutputIterator>
+  OutputIterator shortest_path_locations(const std::pair<face_descriptor, std::array<FT, 3> >& location,
+                                         OutputIterator out)
+  {
+    return locations_of(trace(target_of(location)), out);
+  }
   /// @}
 
   /// \name Mesh
@@ -406,6 +463,53 @@ private:
     return internal::seed_from_barycentric(m_arrays, id, b[0] / sum, b[1] / sum, b[2] / sum, label);
   }
 
+  // the target of a vertex or a face location (validated as sources are)
+  internal::Target target_of(vertex_descriptor v) const
+  {
+    internal::Target t;
+    t.vertex = seed_of(v, 0).element;
+    return t;
+  }
+
+  template <class FT>
+  internal::Target target_of(const std::pair<face_descriptor, std::array<FT, 3> >& location) const
+  {
+    const internal::Seed s = seed_of(location, 0); // validates
+    if(s.kind == internal::Seed::AT_VERTEX)
+    {
+      internal::Target t;
+      t.vertex = s.element;
+      return t;
+    }
+    const Index f = get(m_face_id, location.first);
+    double b[3], sum = 0.;
+    for(int k = 0; k < 3; ++k)
+    {
+      b[k] = (std::max)(0., CGAL::to_double(location.second[static_cast<std::size_t>(k)]));
+      sum += b[k];
+    }
+    return internal::target_from_barycentric(m_arrays, f, b[0] / sum, b[1] / sum, b[2] / sum);
+  }
+
+  template <class TargetOrRange>
+  std::vector<internal::Target> targets_of(const TargetOrRange& targets) const
+  {
+    std::vector<internal::Target> r;
+    if constexpr(std::is_same<TargetOrRange, vertex_descriptor>::value
+                 || internal::Is_face_location<TargetOrRange, face_descriptor>::value)
+      r.push_back(target_of(targets));
+    else
+    {
+      static_assert(internal::Is_range<TargetOrRange>::value,
+                    "a target must be a vertex_descriptor, a face location, or a range of either");
+      for(const auto& t : targets)
+        r.push_back(target_of(t));
+    }
+    return r;
+  }
+
+  std::vector<internal::Target> targets_of(CGAL::internal_np::Param_not_found) const { return {}; }
+
   template <class SourceOrRange>
   std::vector<internal::Seed> seeds_of(const SourceOrRange& sources) const
   {
@@ -439,6 +543,10 @@ private:
     const double lambda_g = choose_parameter(get_parameter(np, internal_np::lambda_g), 1.);
     const int threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 0);
     const double min_length = choose_parameter(get_parameter(np, internal_np::minimum_window_length), 1e-9);
+    const double limit = choose_parameter(get_parameter(np, internal_np::maximum_distance),
+                                          std::numeric_limits<double>::infinity());
+    const bool stop_at_targets = choose_parameter(get_parameter(np, internal_np::stop_at_targets), true);
+    const bool record_paths = choose_parameter(get_parameter(np, internal_np::record_paths), false);
     if(!(lambda > 0.))
       throw Invalid_input_error("lambda must be > 0 (infinity for the exact algorithm), got " + std::to_string(lambda));
     if(!(lambda_g >= 0.) || std::isinf(lambda_g))
@@ -447,6 +555,9 @@ private:
       throw Invalid_input_error("the number of threads must be >= 0");
     if(!(min_length >= 0.) || !(min_length < 1.))
       throw Invalid_input_error("minimum_window_length must be in [0, 1)");
+    if(!(limit >= 0.))
+      throw Invalid_input_error("the maximum distance must be >= 0 (+infinity for none), got " + std::to_string(limit));
+    std::vector<internal::Target> targets = targets_of(get_parameter(np, internal_np::targets));
 
     internal::Propagation_settings settings;
     settings.minimum_window_ratio = min_length;
@@ -455,15 +566,16 @@ private:
       settings.reset_step = lambda * h;
     settings.reset_guard = lambda_g * h;
     settings.want_labels = !is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value;
-    m_engine.template run<ConcurrencyTag>(m_arrays, seeds, settings, threads, m_statistics);
+    settings.limit = limit / m_length_scale;
+    settings.stop_at_targets = stop_at_targets;
+    settings.record_paths = record_paths;
+    settings.unit = m_length_scale;
+    m_engine.template run<ConcurrencyTag>(m_arrays, seeds, std::move(targets), settings, threads, m_statistics);
+    m_last_settings = settings;
+    m_last_parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+    m_last_threads = threads;
+    m_has_run = true;
     m_statistics.sources = seeds.size();
-    std::vector<double>& d = m_engine.distances();
-    if(m_length_scale != 1.)
-    {
-      for(double& x : d)
-        x *= m_length_scale;
-      m_statistics.max_distance *= m_length_scale;
-    }
   }
 
   template <class VertexDistanceMap, class NamedParameters>
@@ -492,6 +604,143 @@ private:
       put(vsm, m_vertices[i], l[i] == internal::NO_INDEX ? no_source : static_cast<std::size_t>(l[i]));
   }
 
+  // ------------------------------------------------------------------------------------------------
+  // paths
+  // ------------------------------------------------------------------------------------------------
+  std::vector<internal::Trace_point> trace(const internal::Target& target)
+  {
+    if(!m_has_run)
+      throw Invalid_input_error("a path was asked for before any computation");
+    const internal::Propagation_engine* engine = &m_engine;
+    std::size_t index = 0;
+    if(!(find_target(m_engine, target, index) && is_reached(m_engine, target, index)))
+    {
+      // run again from the same sources until the point is final, recording the trace-back
+      if(!m_path_engine)
+        m_path_engine.reset(new internal::Propagation_engine());
+      internal::Propagation_settings settings = m_last_settings;
+      settings.want_labels = false;
+      settings.stop_at_targets = true;
+      settings.record_paths = true;
+      Propagation_statistics unused;
+      std::vector<internal::Target> targets(1, target);
+      if(m_last_parallel)
+      {
+#ifdef _OPENMP
+        m_path_engine->template run<CGAL::Parallel_tag>(m_arrays, m_engine.seeds(), std::move(targets), settings,
+                                                        m_last_threads, unused);
+#endif
+      }
+      else
+        m_path_engine->template run<CGAL::Sequential_tag>(m_arrays, m_engine.seeds(), std::move(targets), settings,
+                                                          m_last_threads, unused);
+      engine = m_path_engine.get();
+      index = 0;
+      if(!is_reached(*engine, target, index))
+        throw Invalid_input_error("no path: the point is not reached by any source (or lies beyond the distance "
+                                  "limit)");
+    }
+    std::vector<internal::Trace_point> points;
+    const internal::Path_trace tracer(m_arrays, engine->path_record(), engine->seeds());
+    const bool ok = target.vertex != internal::NO_INDEX
+                      ? tracer.from_vertex(target.vertex, points)
+                      : tracer.from_target(engine->targets()[index], engine->path_record().target[index], points);
+    CGAL_assertion(ok);
+    CGAL_USE(ok);
+    return points;
+  }
+
+  // whether `target` can be traced from the record of `engine`: a vertex (from its own record), or a point
+  // that was its target `index`
+  static bool find_target(const internal::Propagation_engine& engine, const internal::Target& target,
+                          std::size_t& index)
+  {
+    if(!engine.path_record().is_active())
+      return false;
+    if(target.vertex != internal::NO_INDEX)
+      return true;
+    const std::vector<internal::Target>& targets = engine.targets();
+    for(std::size_t i = 0; i < targets.size(); ++i)
+      if(targets[i].face == target.face && targets[i].x[0] == target.x[0] && targets[i].y[0] == target.y[0])
+      {
+        index = i;
+        return true;
+      }
+    return false;
+  }
+
+  static bool is_reached(const internal::Propagation_engine& engine, const internal::Target& target,
+                         std::size_t index)
+  {
+    const double d = target.vertex != internal::NO_INDEX ? engine.distances()[static_cast<std::size_t>(target.vertex)]
+                                                         : engine.target_distance(index);
+    return d < std::numeric_limits<double>::infinity();
+  }
+
+  Face_location location_of(const internal::Trace_point& p) const
+  {
+    std::array<double, 3> b = { { 0., 0., 0. } };
+    Index f;
+    if(p.kind == internal::Trace_point::AT_VERTEX)
+    {
+      const Index v = p.element;
+      if(m_arrays.corner_begin[v] == m_arrays.corner_begin[v + 1])
+        throw Invalid_input_error("an isolated vertex has no face location");
+      const Index h = m_arrays.corners[m_arrays.corner_begin[v]];
+      f = internal::Mesh_arrays::face(h);
+      b[static_cast<std::size_t>(h % 3)] = 1.;
+    }
+    else if(p.kind == internal::Trace_point::ON_EDGE)
+    {
+      const Index h = p.element;
+      f = internal::Mesh_arrays::face(h);
+      const double length = m_arrays.geometry[h].length;
+      const double t = length > 0. ? (std::min)((std::max)(p.x / length, 0.), 1.) : 0.;
+      b[static_cast<std::size_t>(h % 3)] = 1. - t;
+      b[static_cast<std::size_t>((h + 1) % 3)] = t;
+    }
+    else
+    {
+      f = p.element;
+      const internal::Halfedge_geometry& g = m_arrays.geometry[3 * f];
+      b[2] = g.cy > 0. ? p.y / g.cy : 0.;
+      b[1] = g.length > 0. ? (p.x - b[2] * g.cx) / g.length : 0.;
+      b[0] = 1. - b[1] - b[2];
+    }
+    return Face_location(m_faces[static_cast<std::size_t>(f)], b);
+  }
+
+  Point_3 point_of(const internal::Trace_point& p) const
+  {
+    if(p.kind == internal::Trace_point::AT_VERTEX)
+      return get(m_vpm, m_vertices[static_cast<std::size_t>(p.element)]);
+    const Face_location l = location_of(p);
+    const halfedge_descriptor h = halfedge(l.first, m_tm);
+    const Point_3 q[3] = { get(m_vpm, source(h, m_tm)), get(m_vpm, target(h, m_tm)),
+                           get(m_vpm, target(next(h, m_tm), m_tm)) };
+    double c[3] = { 0., 0., 0. };
+    for(int k = 0; k < 3; ++k)
+      for(int j = 0; j < 3; ++j)
+        c[j] += l.second[static_cast<std::size_t>(k)] * CGAL::to_double(q[k][j]);
+    return Point_3(c[0], c[1], c[2]);
+  }
+
+  template <class OutputIterator>
+  OutputIterator points_of(const std::vector<internal::Trace_point>& path, OutputIterator out) const
+  {
+    for(const internal::Trace_point& p : path)
+      *out++ = point_of(p);
+    return out;
+  }
+
+  template <class OutputIterator>
+  OutputIterator locations_of(const std::vector<internal::Trace_point>& path, OutputIterator out) const
+  {
+    for(const internal::Trace_point& p : path)
+      *out++ = location_of(p);
+    return out;
+  }
+
   static const Index NO_FACE = -1;
 
   const TriangleMesh& m_tm;
@@ -507,6 +756,12 @@ private:
   std::vector<internal::Seed> m_sources;
   internal::Propagation_engine m_engine;
   Propagation_statistics m_statistics;
+  // the parameters of the last computation, for the paths
+  bool m_has_run = false;
+  internal::Propagation_settings m_last_settings;
+  bool m_last_parallel = false;
+  int m_last_threads = 0;
+  std::unique_ptr<internal::Propagation_engine> m_path_engine;
 };
 
 } // namespace VTP_geodesics

@@ -47,6 +47,8 @@ struct Propagation_statistics
   std::size_t pseudo_sources = 0;
   /// Number of window resets (approximate variants only).
   std::size_t resets = 0;
+  /// Whether the propagation stopped before the end, at the distance limit or once every target was final.
+  bool stopped_early = false;
   /// Parallel scheduling only: propagation rounds (arrays of lists), and those run on several threads.
   std::size_t rounds = 0;
   std::size_t parallel_rounds = 0;

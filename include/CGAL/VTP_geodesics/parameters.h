@@ -37,6 +37,9 @@ enum minimum_window_length_t { minimum_window_length };
 enum nearest_source_map_t { nearest_source_map };
 enum statistics_t { statistics };
 enum maximum_distance_t { maximum_distance };
+enum targets_t { targets };
+enum stop_at_targets_t { stop_at_targets };
+enum record_paths_t { record_paths };
 
 } // namespace internal_np
 
@@ -67,6 +70,9 @@ struct Named_parameters
   CGAL_VTP_GEODESICS_LINK(minimum_window_length, internal_np::minimum_window_length_t)
   CGAL_VTP_GEODESICS_LINK(nearest_source_map, internal_np::nearest_source_map_t)
   CGAL_VTP_GEODESICS_LINK(maximum_distance, internal_np::maximum_distance_t)
+  CGAL_VTP_GEODESICS_LINK(targets, internal_np::targets_t)
+  CGAL_VTP_GEODESICS_LINK(stop_at_targets, internal_np::stop_at_targets_t)
+  CGAL_VTP_GEODESICS_LINK(record_paths, internal_np::record_paths_t)
   CGAL_VTP_GEODESICS_LINK(vertex_point_map, CGAL::internal_np::vertex_point_t)
   CGAL_VTP_GEODESICS_LINK(geom_traits, CGAL::internal_np::geom_traits_t)
 #undef CGAL_VTP_GEODESICS_LINK
@@ -100,6 +106,9 @@ CGAL_VTP_GEODESICS_FIRST_LINK(number_of_threads, internal_np::number_of_threads_
 CGAL_VTP_GEODESICS_FIRST_LINK(minimum_window_length, internal_np::minimum_window_length_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(nearest_source_map, internal_np::nearest_source_map_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(maximum_distance, internal_np::maximum_distance_t)
+CGAL_VTP_GEODESICS_FIRST_LINK(targets, internal_np::targets_t)
+CGAL_VTP_GEODESICS_FIRST_LINK(stop_at_targets, internal_np::stop_at_targets_t)
+CGAL_VTP_GEODESICS_FIRST_LINK(record_paths, internal_np::record_paths_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(vertex_point_map, CGAL::internal_np::vertex_point_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(geom_traits, CGAL::internal_np::geom_traits_t)
 #undef CGAL_VTP_GEODESICS_FIRST_LINK

@@ -139,7 +139,7 @@ private:
           m_k_ad = (std::min)(m_k_ad, static_cast<long long>(m.nv) + 1);
           m_in_selection = false;
         }
-        if(st.schedule.empty())
+        if(st.schedule.empty() || (st.stop.is_tracking() && st.stop.is_done(st.schedule)))
           return false;
         // K-window-list selection: up to k_ad vertices, and at most 100 T lists
         const auto ts = std::chrono::steady_clock::now();
@@ -225,6 +225,8 @@ private:
     m_unit_fill.assign(m_unit_begin.begin(), m_unit_begin.end() - 1);
     m_unit_lists.resize(n);
     m_units.resize(units);
+    if(st.record.is_active())
+      m_offers.resize(n);
     for(std::size_t i = 0; i < n; ++i)
     {
       const Index h = m_from[i];
@@ -234,6 +236,7 @@ private:
       m_unit_lists[k] = i;
       st.queued[h] = 0;
       m_units[u].chain[k - m_unit_begin[u]] = st.store.detach(h);
+      st.stop.on_list_emptied(h);
     }
     for(Index h : m_from)
       m_unit_of_face[static_cast<std::size_t>(Mesh_arrays::face(h))] = NO_INDEX;
@@ -289,6 +292,8 @@ private:
       const Offer offer = st.propagate_one(h, s);
       unit.distance_to_C[j] = offer.distance;
       unit.origin_to_C[j] = offer.origin;
+      if(st.record.is_active())
+        m_offers[k] = offer;
       st.store_all_children(h, s, p, unit);
     }
   }
@@ -305,14 +310,20 @@ private:
       for(std::size_t k = m_unit_begin[u]; k < m_unit_begin[u + 1]; ++k)
       {
         const std::size_t j = k - m_unit_begin[u];
-        st.light(m.source[Mesh_arrays::prev(m_from[m_unit_lists[k]])], unit.distance_to_C[j], unit.origin_to_C[j]);
+        const Index c = m.source[Mesh_arrays::prev(m_from[m_unit_lists[k]])];
+        if(st.record.is_active())
+          st.light(c, m_offers[k]);
+        else
+          st.light(c, unit.distance_to_C[j], unit.origin_to_C[j]);
       }
       st.fifo.insert(st.fifo.end(), unit.queued, unit.queued + unit.number_queued);
     }
     for(int t = 0; t < m_team; ++t)
     {
-      st.created += m_scratch[static_cast<std::size_t>(t)].created;
-      m_scratch[static_cast<std::size_t>(t)].created = 0;
+      Propagation_scratch& s = m_scratch[static_cast<std::size_t>(t)];
+      st.created += s.created;
+      s.created = 0;
+      st.stop.merge(s.events); // in thread order: the heaps do not depend on timing
     }
     st.store.flush_returns();
     st.store.update_peaks();
@@ -332,6 +343,7 @@ private:
   std::vector<Index> m_unit_of_face;               // per face, NO_INDEX between rounds
   std::vector<std::size_t> m_unit_begin, m_unit_fill, m_unit_lists;
   std::vector<Unit> m_units;
+  std::vector<Offer> m_offers;                     // per list of the round, when paths are recorded
   Stealing_ranges m_ranges;                        // one per thread
   std::vector<std::size_t> m_range_begin, m_unit_thread, m_unit_order;
   Team_barrier m_barrier;

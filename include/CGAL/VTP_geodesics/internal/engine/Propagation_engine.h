@@ -20,6 +20,7 @@
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
 #include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
 #include <CGAL/VTP_geodesics/internal/engine/Sequential_loop.h>
+#include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
 
 #include <CGAL/tags.h>
 
@@ -52,8 +53,8 @@ class Propagation_engine
 {
 public:
   template <class ConcurrencyTag>
-  void run(const Mesh_arrays& m, const std::vector<Seed>& seeds, const Propagation_settings& settings,
-           int number_of_threads, Propagation_statistics& statistics)
+  void run(const Mesh_arrays& m, const std::vector<Seed>& seeds, std::vector<Target>&& targets,
+           const Propagation_settings& settings, int number_of_threads, Propagation_statistics& statistics)
   {
     const bool parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
 #ifndef _OPENMP
@@ -72,7 +73,8 @@ public:
 #endif
       threads = (std::max)(1, (std::min)(threads, 126));
     }
-    m_state.start(m, settings, static_cast<std::size_t>(threads));
+    m_seeds = seeds;
+    m_state.start(m, settings, static_cast<std::size_t>(threads), std::move(targets));
     if(parallel)
     {
       const double h = m.mean_edge_length;
@@ -86,6 +88,10 @@ public:
       seed_sources(m_state, seeds);
       m_sequential.run(m_state);
     }
+    apply_cutoff();
+    if(settings.unit != 1.)
+      for(double& d : m_state.dist)
+        d *= settings.unit;
     const bool approximate = m_state.reset.is_active();
     statistics = Propagation_statistics();
     statistics.method = parallel ? (approximate ? "pavtp" : "pvtp") : (approximate ? "avtp" : "vtp");
@@ -94,13 +100,42 @@ public:
     statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
 
-  // the distances of the last run (per vertex, in the unit of the mesh arrays)
+  // the distances of the last run (per vertex, in the unit of the output: Propagation_settings::unit)
   std::vector<double>& distances() { return m_state.dist; }
   const std::vector<double>& distances() const { return m_state.dist; }
   // the nearest-source labels of the last run (empty unless asked for; NO_INDEX where unreached)
   const std::vector<Index>& labels() const { return m_state.label; }
+  // the distance of target t of the last run (+infinity if not final: beyond the limit or unreached)
+  double target_distance(std::size_t t) const
+  {
+    const Target& target = m_state.stop.targets()[t];
+    if(target.vertex != NO_INDEX)
+      return m_state.dist[target.vertex];
+    const double d = m_state.stop.target_value(t);
+    return d <= m_state.stop.cutoff() ? d * m_state.settings.unit : std::numeric_limits<double>::infinity();
+  }
+  std::size_t number_of_targets() const { return m_state.stop.targets().size(); }
+  // the sources, the targets and the trace-back record of the last run
+  const std::vector<Seed>& seeds() const { return m_seeds; }
+  const std::vector<Target>& targets() const { return m_state.stop.targets(); }
+  const Path_record& path_record() const { return m_state.record; }
 
 private:
+  // Distances that are not final when the propagation stopped early (or beyond the limit) become +infinity.
+  void apply_cutoff()
+  {
+    const double cutoff = m_state.stop.cutoff();
+    if(!(cutoff < std::numeric_limits<double>::infinity()))
+      return;
+    for(std::size_t v = 0; v < m_state.dist.size(); ++v)
+      if(m_state.dist[v] > cutoff)
+      {
+        m_state.dist[v] = std::numeric_limits<double>::infinity();
+        if(!m_state.label.empty())
+          m_state.label[v] = NO_INDEX;
+      }
+  }
+
   void collect_statistics(bool parallel, Propagation_statistics& st) const
   {
     const Mesh_arrays& m = *m_state.mesh;
@@ -113,6 +148,7 @@ private:
     st.vertices_processed = m_state.vertices_processed;
     st.pseudo_sources = m_state.pseudo_sources;
     st.resets = m_state.reset.number_of_resets();
+    st.stopped_early = m_state.stop.stopped_early();
     if(parallel)
     {
       st.rounds = m_parallel.rounds;
@@ -129,6 +165,7 @@ private:
       }
   }
 
+  std::vector<Seed> m_seeds;
   Propagation_state m_state;
   Sequential_loop m_sequential;
   Parallel_loop m_parallel;

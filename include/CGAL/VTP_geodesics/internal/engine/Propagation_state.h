@@ -17,6 +17,8 @@
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/Triangle_propagation.h>
 #include <CGAL/VTP_geodesics/internal/Window_storage.h>
+#include <CGAL/VTP_geodesics/internal/engine/Path_record.h>
+#include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
 #include <CGAL/VTP_geodesics/internal/engine/Vertex_schedule.h>
 #include <CGAL/VTP_geodesics/internal/engine/Window_reset.h>
 
@@ -38,6 +40,10 @@ struct Propagation_settings
   double reset_step = std::numeric_limits<double>::infinity();  // lambda h (AVTP / PAVTP)
   double reset_guard = 0.;             // lambda_g h
   bool want_labels = false;            // nearest-source labels
+  double limit = std::numeric_limits<double>::infinity();  // distance limit
+  bool stop_at_targets = false;        // stop once the targets are final
+  bool record_paths = false;           // keep what the path trace-back needs
+  double unit = 1.;                    // the engine's unit of length, in the unit of the output distances
 };
 
 // The buffers of one thread: a list being propagated, its children, and counters.
@@ -46,14 +52,7 @@ struct alignas(64) Propagation_scratch
   std::vector<Window> in, out_ac, out_cb;
   std::vector<double> xc, reach;
   std::size_t propagated = 0, created = 0;
-};
-
-// What a list offers to the vertex C opposite to its half-edge: a distance and the (pseudo-)source
-// of the window that gives it.
-struct Offer
-{
-  double distance = std::numeric_limits<double>::infinity();
-  Index origin = NO_INDEX;
+  Stop_events events;
 };
 
 // The state of one propagation and the steps that the sequential and the parallel loops share.
@@ -85,13 +84,15 @@ public:
   Window_storage store;
   Vertex_schedule schedule;
   Window_reset reset;
+  Stop_rule stop;
+  Path_record record;
   std::vector<Index> fifo;             // queued lists (sequential scheduling: FIFO order)
 
   // counters
   std::size_t created = 0, propagated = 0, vertices_processed = 0, pseudo_sources = 0;
 
   // Prepares a run on `m` (the schedule is started by the loop).
-  void start(const Mesh_arrays& m, const Propagation_settings& s, std::size_t pools)
+  void start(const Mesh_arrays& m, const Propagation_settings& s, std::size_t pools, std::vector<Target>&& targets)
   {
     mesh = &m;
     settings = s;
@@ -108,6 +109,10 @@ public:
     store.reset(nh, pools);
     fifo.clear();
     reset.start(s.reset_step, s.reset_guard, static_cast<std::size_t>(m.nv));
+    const std::size_t number_of_targets = targets.size();
+    stop.start(m, s.limit, s.stop_at_targets, std::move(targets));
+    record.start(s.record_paths, static_cast<std::size_t>(m.nv), number_of_targets);
+    m_events.clear();
     created = propagated = vertices_processed = pseudo_sources = 0;
   }
 
@@ -122,16 +127,27 @@ public:
   // shared steps
   // ------------------------------------------------------------------------------------------
 
-  // Lowers the distance of v to `value` if that is shorter, and schedules v.
-  void light(Index v, double value, Index origin)
+  // Lowers the distance of v to what `offer` offers if that is shorter, and schedules v.
+  void light(Index v, const Offer& offer)
   {
-    if(value < dist[v])
+    if(offer.distance < dist[v])
     {
-      dist[v] = value;
+      dist[v] = offer.distance;
       if(!label.empty())
-        label[v] = label_of_origin(origin);
-      schedule.push(v, value);
+        label[v] = label_of_origin(offer.origin);
+      if(record.is_active())
+        record.vertex[v] = offer;
+      schedule.push(v, offer.distance);
     }
+  }
+
+  void light(Index v, double value, Index origin) { light(v, straight_offer(value, origin)); }
+
+  // Target t is reached at distance d straight from `origin` (serial).
+  void offer_to_target(Index t, double d, Index origin)
+  {
+    if(stop.offer(t, d) && record.is_active())
+      record.target[static_cast<std::size_t>(t)] = straight_offer(d, origin);
   }
 
   void enqueue(Index h)
@@ -149,13 +165,25 @@ public:
     if(dv > dist[v] || processed[v] == dv)
       return false; // stale entry, or already processed at this distance
     if(reset.is_due(dv))
-      reset.apply(v, dv, *mesh, schedule, dist, processed, store);
+      reset.apply(v, dv, *mesh, schedule, dist, processed, store, [&](Index h) { stop.on_list_emptied(h); });
     processed[v] = dv;
     ++vertices_processed;
     if(mesh->is_pseudo_source[v] || reset.is_forced(v))
       emit_pseudo_source(v);
     sweep(v);
+    reach_targets_through(v);
     return true;
+  }
+
+  // The targets of v and of the faces around v get what v offers (serial).
+  void reach_targets_through(Index v)
+  {
+    if(!stop.has_targets())
+      return;
+    stop.on_vertex_processed(v, dist[v], [&](Index t, Index) {
+      if(record.is_active())
+        record.target[static_cast<std::size_t>(t)] = straight_offer(stop.target_value(static_cast<std::size_t>(t)), v);
+    });
   }
 
   // A (pseudo-)source v: its neighbours are reached straight, and a window covering each edge opposite
@@ -252,6 +280,11 @@ public:
       return;
     store.push(h, w);
     ++created;
+    if(stop.is_tracking())
+    {
+      stop.on_windows_stored(h, &w, &w + 1, m_events);
+      stop.merge(m_events);
+    }
     if(swept[Mesh_arrays::face(h)])
       enqueue(h);
   }
@@ -274,8 +307,9 @@ public:
 
   // Filters the list of h held in s.in and propagates it across face(h): the children are left in
   // s.out_ac / s.out_cb; returns what the list offers to the opposite vertex. Reads the distances and
-  // the mesh only, so that the parallel scheduling can call it from many threads.
-  Offer propagate_one(Index h, Propagation_scratch& s) const
+  // the mesh, and writes only to s and to the targets of face(h) (and their records), so that the
+  // parallel scheduling can call it from many threads for lists of different faces.
+  Offer propagate_one(Index h, Propagation_scratch& s)
   {
     const Mesh_arrays& m = *mesh;
     const Halfedge_geometry& g = m.geometry[h];
@@ -285,6 +319,12 @@ public:
     Offer offer;
     if(s.in.empty())
       return offer;
+    if(stop.has_targets())
+      stop.on_list_crossing(h, s.in, s.events, [&](Index t, const Window& w) {
+        if(record.is_active())
+          record.target[static_cast<std::size_t>(t)] = offer_of_window(h, w, stop.targets()[static_cast<std::size_t>(t)],
+                                                                      stop.target_value(static_cast<std::size_t>(t)));
+      });
     const Index h_cb = m.opposite[Mesh_arrays::next(h)];
     const Index h_ac = m.opposite[Mesh_arrays::prev(h)];
     const Propagation_result r = propagate_list(g, s.in, settings.minimum_window_ratio, h_ac != NO_INDEX,
@@ -292,20 +332,54 @@ public:
     s.propagated += r.propagated;
     offer.distance = r.distance_to_C;
     if(offer.distance < std::numeric_limits<double>::infinity())
-      offer.origin = s.in[r.best].origin;
+    {
+      const Window& w = s.in[r.best];
+      offer.origin = w.origin;
+      if(record.is_active())
+      {
+        offer.halfedge = h;
+        offer.sx = w.sx;
+        offer.sy = w.sy;
+        // as in propagate_list(): straight when C is seen through the window, else bent at its nearer end
+        const double den = g.cy - w.sy;
+        const double xc = den > 0. ? w.sx + (g.cx - w.sx) * (-w.sy / den) : g.cx;
+        if(!(xc >= w.b0 && xc <= w.b1))
+          offer.bend = (std::min)((std::max)(xc, w.b0), w.b1);
+      }
+    }
     return offer;
+  }
+
+  // The offer of window w of the list of h to target t (as Stop_rule::on_list_crossing() evaluated it).
+  static Offer offer_of_window(Index h, const Window& w, const Target& t, double distance)
+  {
+    Offer o;
+    o.distance = distance;
+    o.origin = w.origin;
+    o.halfedge = h;
+    o.sx = w.sx;
+    o.sy = w.sy;
+    const std::size_t k = static_cast<std::size_t>(h % 3);
+    const double den = t.y[k] - w.sy;
+    const double xc = den > 0. ? w.sx + (t.x[k] - w.sx) * (-w.sy / den) : t.x[k];
+    if(!(xc >= w.b0 && xc <= w.b1))
+      o.bend = (std::min)((std::max)(xc, w.b0), w.b1);
+    return o;
   }
 
   // Appends children to the list of h with blocks of pool p; if the face of h is swept, h is queued into
   // `to_queue` (the FIFO, or the queue of a face unit: the caller owns every list it writes). Returns the
   // number of windows stored.
   template <class Queue>
-  std::size_t store_children(Index h, const std::vector<Window>& children, std::size_t p, Queue& to_queue)
+  std::size_t store_children(Index h, const std::vector<Window>& children, std::size_t p, Queue& to_queue,
+                             Stop_events& events)
   {
     if(children.empty())
       return 0;
     for(const Window& w : children)
       store.push(h, w, p);
+    if(stop.is_tracking())
+      stop.on_windows_stored(h, children.data(), children.data() + children.size(), events);
     if(swept[Mesh_arrays::face(h)] && !queued[h])
     {
       queued[h] = 1;
@@ -319,12 +393,13 @@ public:
   void store_all_children(Index h, Propagation_scratch& s, std::size_t p, Queue& to_queue)
   {
     const Mesh_arrays& m = *mesh;
-    s.created += store_children(m.opposite[Mesh_arrays::prev(h)], s.out_ac, p, to_queue);
-    s.created += store_children(m.opposite[Mesh_arrays::next(h)], s.out_cb, p, to_queue);
+    s.created += store_children(m.opposite[Mesh_arrays::prev(h)], s.out_ac, p, to_queue, s.events);
+    s.created += store_children(m.opposite[Mesh_arrays::next(h)], s.out_cb, p, to_queue, s.events);
   }
 
 private:
   std::vector<Window> m_emit_ac, m_emit_cb;
+  Stop_events m_events;  // of the serial steps
 };
 
 } // namespace internal

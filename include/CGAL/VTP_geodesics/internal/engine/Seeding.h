@@ -112,6 +112,80 @@ inline Seed seed_from_barycentric(const Mesh_arrays& m, Index f, double b0, doub
   return s;
 }
 
+// The coordinates of the point (x, y) of the frame of half-edge 3f + j in the frame of half-edge 3f.
+inline void to_face_frame(const Mesh_arrays& m, Index f, int j, double x, double y, double& px, double& py)
+{
+  const Halfedge_geometry& g = m.geometry[3 * f];
+  const double vx[3] = { 0., g.length, g.cx }, vy[3] = { 0., 0., g.cy };
+  const double ex = vx[(j + 1) % 3] - vx[j], ey = vy[(j + 1) % 3] - vy[j];
+  const double e = std::sqrt(ex * ex + ey * ey);
+  const double ux = e > 0. ? ex / e : 1., uy = e > 0. ? ey / e : 0.;
+  px = vx[j] + x * ux - y * uy;
+  py = vy[j] + x * uy + y * ux;
+}
+
+// The target at the point (px, py) of face f, given in the frame of half-edge 3f: its coordinates in the
+// frames of the three half-edges of f, and its distances to the corners.
+inline Target face_target(const Mesh_arrays& m, Index f, double px, double py)
+{
+  Target t;
+  t.face = f;
+  const Halfedge_geometry& g = m.geometry[3 * f];
+  const double vx[3] = { 0., g.length, g.cx }, vy[3] = { 0., 0., g.cy };
+  for(int k = 0; k < 3; ++k)
+  {
+    const double ex = vx[(k + 1) % 3] - vx[k], ey = vy[(k + 1) % 3] - vy[k];
+    const double e = std::sqrt(ex * ex + ey * ey);
+    const double ux = e > 0. ? ex / e : 1., uy = e > 0. ? ey / e : 0.;
+    const double rx = px - vx[k], ry = py - vy[k];
+    t.x[k] = rx * ux + ry * uy;
+    t.y[k] = (std::max)(0., ux * ry - uy * rx);
+    t.corner_distance[k] = std::sqrt(rx * rx + ry * ry);
+  }
+  return t;
+}
+
+// The target at the point of face f with barycentric coordinates (b0, b1, b2) (see seed_from_barycentric()).
+// A point with two zero coordinates is the vertex it denotes. A point of a face of (almost) zero area is
+// taken on the longest edge of the face, in the face on the other side of that edge when that one is not
+// degenerate (windows cannot cross a face of zero area).
+inline Target target_from_barycentric(const Mesh_arrays& m, Index f, double b0, double b1, double b2)
+{
+  const Index h0 = 3 * f;
+  const double b[3] = { b0, b1, b2 };
+  for(int k = 0; k < 3; ++k)
+    if(b[(k + 1) % 3] == 0. && b[(k + 2) % 3] == 0.)
+    {
+      Target t;
+      t.vertex = m.source[h0 + k];
+      return t;
+    }
+  const Halfedge_geometry& g = m.geometry[h0];
+  double px = b1 * g.length + b2 * g.cx, py = b2 * g.cy;
+  if(m.is_degenerate_face[f])
+  {
+    int k = 0;
+    for(int j = 1; j < 3; ++j)
+      if(m.geometry[h0 + j].length > m.geometry[h0 + k].length)
+        k = j;
+    const double vx[3] = { 0., g.length, g.cx }, vy[3] = { 0., 0., g.cy };
+    const double ex = vx[(k + 1) % 3] - vx[k], ey = vy[(k + 1) % 3] - vy[k];
+    const double e = std::sqrt(ex * ex + ey * ey);
+    const double length = m.geometry[h0 + k].length;
+    double t = e > 0. ? ((px - vx[k]) * ex + (py - vy[k]) * ey) / e : 0.;
+    t = (std::min)((std::max)(t, 0.), length);
+    const Index o = m.opposite[h0 + k];
+    if(o != NO_INDEX && !m.is_degenerate_face[Mesh_arrays::face(o)])
+    {
+      const Index g2 = Mesh_arrays::face(o);
+      to_face_frame(m, g2, static_cast<int>(o % 3), length - t, 0., px, py);
+      return face_target(m, g2, px, py);
+    }
+    to_face_frame(m, f, k, t, 0., px, py);
+  }
+  return face_target(m, f, px, py);
+}
+
 // Starts the propagation from `seeds`: the vertices get distance 0 and act as pseudo-sources; a point
 // inside an edge or a face reaches the vertices of its face(s) straight and starts a window across each
 // edge of its face(s). The origin of the windows of point source i is nv + i.
@@ -137,6 +211,7 @@ inline void seed_sources(Propagation_state& st, const std::vector<Seed>& seeds)
   {
     st.emit_pseudo_source(v);
     st.sweep(v);
+    st.reach_targets_through(v);
   }
   for(std::size_t i = 0; i < seeds.size(); ++i)
   {
@@ -153,6 +228,17 @@ inline void seed_sources(Propagation_state& st, const std::vector<Seed>& seeds)
       st.emit_point(h, s.x, 0., origin);
       if(m.opposite[h] != NO_INDEX)
         st.emit_point(m.opposite[h], length - s.x, 0., origin);
+      // targets in the faces of the edge are reached straight
+      const Index sides[2] = { h, m.opposite[h] };
+      const double abscissa[2] = { s.x, length - s.x };
+      for(int j = 0; j < 2; ++j)
+        if(sides[j] != NO_INDEX)
+          st.stop.for_each_target_in_face(Mesh_arrays::face(sides[j]), [&](Index t) {
+            const Target& target = st.stop.targets()[static_cast<std::size_t>(t)];
+            const std::size_t k = static_cast<std::size_t>(sides[j] % 3);
+            const double dx = target.x[k] - abscissa[j], dy = target.y[k];
+            st.offer_to_target(t, std::sqrt(dx * dx + dy * dy), origin);
+          });
     }
     else
     {
@@ -164,6 +250,11 @@ inline void seed_sources(Propagation_state& st, const std::vector<Seed>& seeds)
         const double dx = s.x - vx[k], dy = s.y - vy[k];
         st.light(m.source[h0 + k], std::sqrt(dx * dx + dy * dy), origin);
       }
+      st.stop.for_each_target_in_face(s.element, [&](Index t) {
+        const Target& target = st.stop.targets()[static_cast<std::size_t>(t)];
+        const double dx = target.x[0] - s.x, dy = target.y[0] - s.y;
+        st.offer_to_target(t, std::sqrt(dx * dx + dy * dy), origin);
+      });
       for(int k = 0; k < 3; ++k)
       {
         const Index o = m.opposite[h0 + k];

@@ -29,12 +29,13 @@ namespace internal {
 class Sequential_loop
 {
 public:
-  // Runs the propagation seeded in `st` (whose schedule was started as a heap) to its end.
+  // Runs the propagation seeded in `st` (whose schedule was started as a heap) to its end, or until its
+  // stop rule says it is done (checked before each vertex, when no list is queued).
   void run(Propagation_state& st)
   {
     drain(st);
     Vertex_schedule::Entry e;
-    while(st.schedule.pop(e))
+    while(!(st.stop.is_tracking() && st.stop.is_done(st.schedule)) && st.schedule.pop(e))
       if(st.take_vertex(e.second, e.first))
         drain(st);
   }
@@ -53,11 +54,13 @@ private:
         continue;
       s.in.clear();
       st.store.take(h, s.in);
+      st.stop.on_list_emptied(h);
       s.out_ac.clear();
       s.out_cb.clear();
       const Offer offer = st.propagate_one(h, s);
-      st.light(m.source[Mesh_arrays::prev(h)], offer.distance, offer.origin);
+      st.light(m.source[Mesh_arrays::prev(h)], offer);
       st.store_all_children(h, s, 0, st.fifo);
+      st.stop.merge(s.events);
       st.store.update_peaks();
     }
     st.propagated += s.propagated;

@@ -131,12 +131,19 @@ public:
     ++m_pending;
   }
 
-  // A value no waiting entry is below: the top of the heap, or the start of the current bucket.
+  // A value no waiting entry is below: the top of the heap; with buckets, the smallest entry left in the
+  // current bucket (an entry below the current bucket is put into it) or the start of the next one.
   double lower_bound() const
   {
     if(!m_buckets_mode)
       return m_heap.empty() ? std::numeric_limits<double>::infinity() : m_heap.front().first;
-    return m_pending == 0 ? std::numeric_limits<double>::infinity() : double(m_current) / m_inv_width;
+    if(m_pending == 0)
+      return std::numeric_limits<double>::infinity();
+    double low = double(m_current + 1) / m_inv_width;
+    if(m_current < m_buckets.size())
+      for(std::size_t i = m_read[m_current]; i < m_buckets[m_current].size(); ++i)
+        low = (std::min)(low, m_buckets[m_current][i].first);
+    return low;
   }
 
   // Calls f(entry) for every waiting entry (stale ones included).

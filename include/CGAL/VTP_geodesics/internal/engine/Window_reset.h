@@ -57,9 +57,12 @@ public:
   std::size_t number_of_resets() const { return m_resets; }
 
   // Resets the windows before vertex v is taken at distance dv (is_due(dv) holds). The wavefront is
-  // read from the schedule: the vertices reached and not processed yet, one live entry each.
+  // read from the schedule: the vertices reached and not processed yet, one live entry each. Each list
+  // emptied is reported to on_cleared(h).
+  template <class OnCleared>
   void apply(Index v, double dv, const Mesh_arrays& m, const Vertex_schedule& schedule,
-             const std::vector<double>& d, const std::vector<double>& processed, Window_storage& store)
+             const std::vector<double>& d, const std::vector<double>& processed, Window_storage& store,
+             OnCleared on_cleared)
   {
     while(m_next < dv)
       m_next += m_step;
@@ -84,8 +87,12 @@ public:
           if(d[m.source[e]] > keep_beyond || d[m.target(e)] > keep_beyond)
             continue;
           store.clear(e);
+          on_cleared(e);
           if(m.opposite[e] != NO_INDEX)
+          {
             store.clear(m.opposite[e]);
+            on_cleared(m.opposite[e]);
+          }
         }
       }
     }
