@@ -38,10 +38,17 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <exception>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <string>
@@ -222,6 +229,127 @@ public:
     write_outputs(vdm, np);
   }
 #endif
+  /// @}
+
+  /// \name Many sources
+  /// @{
+
+  /// computes the distances from each source of `sources` on its own, one row per source, and hands each row
+  /// to `sink`: `sink(i, source, distances)` where `i` is the index of the source in `sources`, `source` the
+  /// source itself, and `distances` a `const std::vector<double>&` indexed by `vertex_id()` (valid during the
+  /// call only). With `CGAL::Parallel_tag`, the rows are computed in parallel over the sources (OpenMP, dynamic
+  /// schedule, `number_of_threads` threads), each with the sequential scheduling in a workspace of its thread
+  /// (the per-mesh data of the solver is shared, read-only); with `CGAL::Sequential_tag`, one after the other.
+  /// The sink is called by one thread at a time, never concurrently, in any order of the rows. A row is
+  /// bitwise equal to the distances of `compute()` from the same source with the same parameters (and the
+  /// sequential scheduling). Memory: one workspace (O(V)) per thread, besides what the sink keeps.
+  ///
+  /// If the sink throws, no further row is handed to it and the exception is thrown again from `compute_each()`
+  /// once the rows under way are done; so does an exception of the computation.
+  ///
+  /// \tparam SourceRange a range of `vertex_descriptor` or of face locations.
+  /// \param np the named parameters `lambda`, `lambda_g`, `minimum_window_length`, `maximum_distance` (beyond it,
+  ///   `+infinity`: rows become sparse) and `number_of_threads` of `compute_geodesic_distances()`.
+  /// \throws Invalid_input_error if a source is not a vertex or a point of the mesh, or a parameter is invalid.
+  template <class ConcurrencyTag = CGAL::Sequential_tag, class SourceRange, class RowSink,
+            class NP_T = bool, class NP_Tag = CGAL::internal_np::all_default_t,
+            class NP_Base = CGAL::internal_np::No_property>
+  void compute_each(const SourceRange& sources, RowSink sink,
+                    const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np = parameters::default_values())
+  {
+    const bool parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+#ifndef _OPENMP
+    static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                  "Parallel_tag is enabled but OpenMP is unavailable "
+                  "(link CGAL::VTP_geodesics_OpenMP_support, or compile with -fopenmp).");
+#endif
+    typedef typename std::iterator_traits<decltype(std::begin(sources))>::value_type Source;
+    const std::vector<Source> items(std::begin(sources), std::end(sources));
+    std::vector<internal::Seed> seeds;
+    seeds.reserve(items.size());
+    for(const Source& item : items)
+      seeds.push_back(seed_of(item, 0));  // validated here, serially
+    int threads = 0;
+    internal::Propagation_settings settings = settings_of(np, threads);
+    settings.want_labels = false;
+    settings.record_paths = false;
+    settings.stop_at_targets = false;
+    if(!parallel)
+      threads = 1;
+#ifdef _OPENMP
+    else if(threads <= 0)
+      threads = omp_get_max_threads();
+#endif
+    threads = (std::max)(1, (std::min)(threads, static_cast<int>((std::max)(std::size_t(1), seeds.size()))));
+    while(m_workspaces.size() < static_cast<std::size_t>(threads))
+      m_workspaces.emplace_back(new internal::Propagation_engine());
+    std::vector<Propagation_statistics> per_thread(static_cast<std::size_t>(threads));
+
+    const auto t0 = std::chrono::steady_clock::now();
+    std::exception_ptr error;         // written in the critical section only
+    std::atomic<bool> failed{ false };
+    const long long n = static_cast<long long>(seeds.size());
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if(threads > 1)
+#endif
+    for(long long i = 0; i < n; ++i)
+    {
+      int t = 0;
+#ifdef _OPENMP
+      t = omp_get_thread_num();
+#endif
+      if(failed.load(std::memory_order_relaxed))
+        continue;
+      internal::Propagation_engine& workspace = *m_workspaces[static_cast<std::size_t>(t)];
+      try
+      {
+        Propagation_statistics st;
+        workspace.template run<CGAL::Sequential_tag>(m_arrays, std::vector<internal::Seed>(1, seeds[static_cast<std::size_t>(i)]),
+                                                     std::vector<internal::Target>(), settings, 1, st);
+        add_row_statistics(st, per_thread[static_cast<std::size_t>(t)]);
+      }
+      catch(...)
+      {
+#ifdef _OPENMP
+#pragma omp critical(vtp_geodesics_compute_each)
+#endif
+        {
+          if(!error)
+            error = std::current_exception();
+          failed.store(true, std::memory_order_relaxed);
+        }
+        continue;
+      }
+#ifdef _OPENMP
+#pragma omp critical(vtp_geodesics_compute_each)
+#endif
+      {
+        if(!failed.load(std::memory_order_relaxed))
+        {
+          try
+          {
+            sink(static_cast<std::size_t>(i), items[static_cast<std::size_t>(i)], workspace.distances());
+          }
+          catch(...)
+          {
+            error = std::current_exception();
+            failed.store(true, std::memory_order_relaxed);
+          }
+        }
+      }
+    }
+    m_statistics = Propagation_statistics();
+    m_statistics.vertices = m_vertices.size();
+    m_statistics.faces = static_cast<std::size_t>(m_arrays.nf);
+    m_statistics.method = settings.reset_step < std::numeric_limits<double>::infinity() ? "avtp" : "vtp";
+    m_statistics.threads = threads;
+    m_statistics.sources = seeds.size();
+    for(const Propagation_statistics& st : per_thread)
+      add_row_statistics(st, m_statistics);
+    m_statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if(error)
+      std::rethrow_exception(error);
+  }
   /// @}
 
   /// \name Results of the last computation
@@ -530,23 +658,36 @@ private:
   // ------------------------------------------------------------------------------------------------
   // computation
   // ------------------------------------------------------------------------------------------------
-  template <class ConcurrencyTag, class NamedParameters>
-  void run(const std::vector<internal::Seed>& seeds, const NamedParameters& np)
+  // Adds the counts of a row to a sum of rows (the peaks are maxima).
+  static void add_row_statistics(const Propagation_statistics& row, Propagation_statistics& sum)
+  {
+    sum.windows_created += row.windows_created;
+    sum.windows_propagated += row.windows_propagated;
+    sum.peak_live_windows = (std::max)(sum.peak_live_windows, row.peak_live_windows);
+    sum.peak_window_bytes = (std::max)(sum.peak_window_bytes, row.peak_window_bytes);
+    sum.vertices_processed += row.vertices_processed;
+    sum.pseudo_sources += row.pseudo_sources;
+    sum.resets += row.resets;
+    sum.reached_vertices += row.reached_vertices;
+    sum.max_distance = (std::max)(sum.max_distance, row.max_distance);
+    sum.stopped_early = sum.stopped_early || row.stopped_early;
+  }
+
+  // The settings of a propagation from the named parameters (validated); the number of threads goes to
+  // `threads`.
+  template <class NamedParameters>
+  internal::Propagation_settings settings_of(const NamedParameters& np, int& threads) const
   {
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
     using CGAL::parameters::is_default_parameter;
-    if(seeds.empty())
-      throw Invalid_input_error("no source");
     const double lambda = choose_parameter(get_parameter(np, internal_np::lambda),
                                            std::numeric_limits<double>::infinity());
     const double lambda_g = choose_parameter(get_parameter(np, internal_np::lambda_g), 1.);
-    const int threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 0);
+    threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 0);
     const double min_length = choose_parameter(get_parameter(np, internal_np::minimum_window_length), 1e-9);
     const double limit = choose_parameter(get_parameter(np, internal_np::maximum_distance),
                                           std::numeric_limits<double>::infinity());
-    const bool stop_at_targets = choose_parameter(get_parameter(np, internal_np::stop_at_targets), true);
-    const bool record_paths = choose_parameter(get_parameter(np, internal_np::record_paths), false);
     if(!(lambda > 0.))
       throw Invalid_input_error("lambda must be > 0 (infinity for the exact algorithm), got " + std::to_string(lambda));
     if(!(lambda_g >= 0.) || std::isinf(lambda_g))
@@ -557,7 +698,6 @@ private:
       throw Invalid_input_error("minimum_window_length must be in [0, 1)");
     if(!(limit >= 0.))
       throw Invalid_input_error("the maximum distance must be >= 0 (+infinity for none), got " + std::to_string(limit));
-    std::vector<internal::Target> targets = targets_of(get_parameter(np, internal_np::targets));
 
     internal::Propagation_settings settings;
     settings.minimum_window_ratio = min_length;
@@ -567,9 +707,20 @@ private:
     settings.reset_guard = lambda_g * h;
     settings.want_labels = !is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value;
     settings.limit = limit / m_length_scale;
-    settings.stop_at_targets = stop_at_targets;
-    settings.record_paths = record_paths;
+    settings.stop_at_targets = choose_parameter(get_parameter(np, internal_np::stop_at_targets), true);
+    settings.record_paths = choose_parameter(get_parameter(np, internal_np::record_paths), false);
     settings.unit = m_length_scale;
+    return settings;
+  }
+
+  template <class ConcurrencyTag, class NamedParameters>
+  void run(const std::vector<internal::Seed>& seeds, const NamedParameters& np)
+  {
+    if(seeds.empty())
+      throw Invalid_input_error("no source");
+    int threads = 0;
+    const internal::Propagation_settings settings = settings_of(np, threads);
+    std::vector<internal::Target> targets = targets_of(CGAL::parameters::get_parameter(np, internal_np::targets));
     m_engine.template run<ConcurrencyTag>(m_arrays, seeds, std::move(targets), settings, threads, m_statistics);
     m_last_settings = settings;
     m_last_parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
@@ -762,6 +913,7 @@ private:
   bool m_last_parallel = false;
   int m_last_threads = 0;
   std::unique_ptr<internal::Propagation_engine> m_path_engine;
+  std::vector<std::unique_ptr<internal::Propagation_engine> > m_workspaces;  // of compute_each(), one per thread
 };
 
 } // namespace VTP_geodesics
