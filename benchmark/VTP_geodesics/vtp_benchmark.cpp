@@ -17,8 +17,8 @@
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
 #include <CGAL/VTP_geodesics/options_and_statistics.h>
-#include <CGAL/VTP_geodesics/internal/tools/midpoint_subdivision.h>
-#include <CGAL/VTP_geodesics/internal/tools/shortest_path_reference.h>
+#include <vtp_tools/midpoint_subdivision.h>
+#include <vtp_tools/shortest_path_reference.h>
 
 #ifdef CGAL_EIGEN3_ENABLED
 #define VTP_BENCHMARK_WITH_HEAT_METHOD 1
@@ -364,7 +364,7 @@ void run_cgal(const Mesh& mesh, Vertex_index source, int repeat, Child_header& h
   for(int r = 0; r < repeat; ++r)
   {
     const double t0 = now_seconds();
-    d = CGAL::VTP_geodesics::internal::shortest_path_reference_distances(mesh, source);
+    d = vtp_tools::shortest_path_reference_distances(mesh, source);
     const double t = now_seconds() - t0;
     if(r == 0 || t < h.seconds)
       h.seconds = t;
@@ -654,7 +654,7 @@ void load_mesh(const std::string& file, int subdivide, Mesh& mesh)
     throw Usage_error("the mesh '" + file + "' is empty");
   if(!CGAL::is_triangle_mesh(mesh))
     throw Usage_error("the mesh '" + file + "' is not a triangle mesh");
-  CGAL::VTP_geodesics::internal::midpoint_subdivide(mesh, subdivide);
+  vtp_tools::midpoint_subdivide(mesh, subdivide);
 }
 
 // Round-trip time of a cache line between two threads (they bounce a counter), in nanoseconds; 0 with
@@ -788,8 +788,8 @@ int run(int argc, char** argv)
           continue;
         if(vtp.ok)
         {
-          const CGAL::VTP_geodesics::internal::Distance_comparison c =
-            CGAL::VTP_geodesics::internal::compare_distances(r.distances, vtp.distances);
+          const vtp_tools::Distance_comparison c =
+            vtp_tools::compare_distances(r.distances, vtp.distances);
           r.max_abs_err = c.max_abs_diff;
           r.max_rel_err = c.max_rel_diff;
           r.mean_rel_err = c.mean_rel_diff;
