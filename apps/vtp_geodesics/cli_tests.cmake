@@ -145,9 +145,10 @@ vtp_cli_test(non_finite_obj 2 "${bad_output}.20" "" ERROR "vertex 1 has a non-fi
              "${cli_data}/non_finite.obj" --output "${bad_output}.20")
 vtp_cli_test(bad_view 2 "${bad_output}.21" "" ERROR "--view" --view 1,2 --picture "${bad_output}.21")
 
-# Other formats that CGAL reads as polygon soups: STL (points merged by the reader), OBJ.
+# Other formats that CGAL reads as polygon soups: STL (points merged by the reader, numbered in the order they
+# first appear: the vertex (1,0,0) is vertex 2), OBJ.
 #   tetrahedron.stl / tetrahedron.obj: the regular tetrahedron of edge length 1
-vtp_cli_test(stl_input 0 "${cli_dir}/stl.txt" "" LINES 4 VALUES "1=1"
+vtp_cli_test(stl_input 0 "${cli_dir}/stl.txt" "" LINES 4 VALUES "2=1"
              "${cli_data}/tetrahedron.stl" --output "${cli_dir}/stl.txt")
 vtp_cli_test(obj_input 0 "${cli_dir}/obj.txt" "" LINES 4 VALUES "1=1"
              "${cli_data}/tetrahedron.obj" --check-cgal --output "${cli_dir}/obj.txt")

@@ -29,6 +29,9 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <cstddef>
 #include <fstream>
 #include <iostream>
@@ -38,6 +41,7 @@
 #include <string>
 #include <vector>
 
+#include <errno.h>
 #include <sys/stat.h>
 
 namespace vtp_tools {
@@ -116,6 +120,40 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// When CGAL's reader refuses a text file, looks for the reason a person can fix: a coordinate that is not a
+// finite number (CGAL's text readers stop there). Returns an empty string if none is found.
+inline std::string diagnose_text_file(const std::string& file, const std::string& ext)
+{
+  if(ext != "obj" && ext != "stl")
+    return std::string();
+  std::ifstream in(file);
+  std::string line;
+  std::size_t vertex = 0;
+  const std::string keyword = (ext == "obj") ? "v" : "vertex";
+  while(std::getline(in, line))
+  {
+    std::istringstream words(line);
+    std::string first;
+    if(!(words >> first) || first != keyword)
+      continue;
+    for(int k = 0; k < 3; ++k)
+    {
+      std::string token;
+      if(!(words >> token))
+        break;
+      char* end = nullptr;
+      const double x = std::strtod(token.c_str(), &end);
+      if(end != token.c_str() + token.size())
+        return "vertex " + std::to_string(vertex) + " has an invalid coordinate '" + token + "'";
+      if(!std::isfinite(x))
+        return ext == "obj" ? "vertex " + std::to_string(vertex) + " has a non-finite coordinate"
+                            : "facet " + std::to_string(vertex / 3) + " has a non-finite coordinate";
+    }
+    ++vertex;
+  }
+  return std::string();
+}
+
 // Reads `file` with CGAL's polygon soup readers, with their diagnostics on std::cerr kept out of the one-line
 // errors.
 inline void read_soup(const std::string& file, std::vector<Point_3>& points,
@@ -134,7 +172,10 @@ inline void read_soup(const std::string& file, std::vector<Point_3>& points,
   }
   std::cerr.rdbuf(cerr_buffer);
   if(!ok)
-    throw Input_error("cannot read '" + file + "': invalid or unsupported mesh data");
+  {
+    const std::string reason = diagnose_text_file(file, lower_extension(file));
+    throw Input_error("cannot read '" + file + "': " + (reason.empty() ? "invalid or unsupported mesh data" : reason));
+  }
 }
 
 } // namespace read_detail
