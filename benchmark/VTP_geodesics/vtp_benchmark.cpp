@@ -17,6 +17,7 @@
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
 #include <CGAL/VTP_geodesics/options_and_statistics.h>
+#include <vtp_tools/methods.h>
 #include <vtp_tools/midpoint_subdivision.h>
 #include <vtp_tools/shortest_path_reference.h>
 
@@ -63,8 +64,8 @@ struct Usage_error : std::runtime_error
 };
 
 // ================================================================================================
-// Methods. To add one (e.g. "pvtp:T"), add an enumerator, a parser in `method_parsers`, and a case
-// in `run_in_child()`.
+// Methods. To add one, add an enumerator, a parser in `method_parsers` (or, for a method of the package, an
+// entry in vtp_tools/methods.h), and a case in `run_in_child()`.
 // ================================================================================================
 enum class Method_kind { VTP, PVTP, AVTP, PAVTP, CGAL_SMSP, HEAT_DIRECT, HEAT_IDT };
 
@@ -110,34 +111,29 @@ void expect_fields(const std::vector<std::string>& fields, std::size_t n, const 
     throw Usage_error("invalid method '" + fields[0] + "...' (expected " + syntax + ")");
 }
 
-#ifdef _OPENMP
-#define VTP_BENCHMARK_PARALLEL true
-#else
-#define VTP_BENCHMARK_PARALLEL false
-#endif
+// The VTP family (vtp, pvtp:T, avtp:lambda, pavtp:T:lambda) comes from the table of methods shared with the
+// command-line tools (vtp_tools/methods.h): the name, then ":T" for a parallel method and ":lambda" for an
+// approximate one. Returns false if `fields[0]` is not one of them.
+bool parse_vtp_method(const std::vector<std::string>& fields, Method& m)
+{
+  const vtp_tools::Method_info* info = vtp_tools::find_method(fields[0]);
+  if(info == nullptr)
+    return false;
+  const std::string syntax = std::string(info->name) + (info->parallel ? ":T" : "") + (info->approximate ? ":lambda" : "");
+  expect_fields(fields, 1 + (info->parallel ? 1 : 0) + (info->approximate ? 1 : 0), syntax.c_str());
+  m.kind = info->parallel ? (info->approximate ? Method_kind::PAVTP : Method_kind::PVTP)
+                          : (info->approximate ? Method_kind::AVTP : Method_kind::VTP);
+  std::size_t k = 1;
+  if(info->parallel)
+    m.threads = parse_int_field(m.label, fields[k++], 1);
+  if(info->approximate)
+    m.lambda = parse_positive_field(m.label, fields[k++]);
+  if(!vtp_tools::method_available(*info))
+    throw Usage_error("method " + std::string(info->name) + " is not available (vtp_benchmark was built without OpenMP)");
+  return true;
+}
 
 const Method_parser method_parsers[] = {
-  { "vtp", "vtp", true,
-    [](const std::vector<std::string>& f, Method& m) { expect_fields(f, 1, "vtp"); m.kind = Method_kind::VTP; } },
-  { "pvtp", "pvtp:T", VTP_BENCHMARK_PARALLEL,
-    [](const std::vector<std::string>& f, Method& m) {
-      expect_fields(f, 2, "pvtp:T");
-      m.kind = Method_kind::PVTP;
-      m.threads = parse_int_field(m.label, f[1], 1);
-    } },
-  { "avtp", "avtp:lambda", true,
-    [](const std::vector<std::string>& f, Method& m) {
-      expect_fields(f, 2, "avtp:lambda");
-      m.kind = Method_kind::AVTP;
-      m.lambda = parse_positive_field(m.label, f[1]);
-    } },
-  { "pavtp", "pavtp:T:lambda", VTP_BENCHMARK_PARALLEL,
-    [](const std::vector<std::string>& f, Method& m) {
-      expect_fields(f, 3, "pavtp:T:lambda");
-      m.kind = Method_kind::PAVTP;
-      m.threads = parse_int_field(m.label, f[1], 1);
-      m.lambda = parse_positive_field(m.label, f[2]);
-    } },
   { "cgal", "cgal", true,
     [](const std::vector<std::string>& f, Method& m) { expect_fields(f, 1, "cgal"); m.kind = Method_kind::CGAL_SMSP; } },
 #ifdef VTP_BENCHMARK_WITH_HEAT_METHOD
@@ -171,6 +167,12 @@ std::vector<std::string> split(const std::string& s, char separator)
 Method parse_method(const std::string& spec)
 {
   const std::vector<std::string> fields = split(spec, ':');
+  {
+    Method m;
+    m.label = spec;
+    if(parse_vtp_method(fields, m))
+      return m;
+  }
   for(const Method_parser& p : method_parsers)
   {
     if(fields[0] != p.name)
@@ -188,7 +190,7 @@ Method parse_method(const std::string& spec)
     }
     return m;
   }
-  std::string known;
+  std::string known = "vtp, pvtp:T, avtp:lambda, pavtp:T:lambda";
   for(const Method_parser& p : method_parsers)
     known += (known.empty() ? "" : ", ") + std::string(p.syntax);
   throw Usage_error("unknown method '" + spec + "' (known: " + known + ")");
