@@ -11,6 +11,8 @@
 #include <vtp_tools/read_mesh.h>
 
 #include <CGAL/IO/OFF.h>
+#include <CGAL/IO/read_ply_points.h>
+#include <CGAL/property_map.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -26,6 +28,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include <dirent.h>
@@ -408,35 +411,84 @@ void check_ply_round_trip(const std::string& mesh_file, bool with_labels)
     vtp_tools::write_distance_ply(f.stream(), input, distances, with_labels ? &labels : nullptr, 1., "test");
     f.commit();
   }
-  Mesh back;
-  std::ifstream in(file, std::ios::binary);
-  ASSERT_TRUE(CGAL::IO::read_PLY(in, back));
-  ASSERT_EQ(back.number_of_vertices(), input.file_vertices);
-  EXPECT_EQ(back.number_of_faces(), input.file_faces);
-  auto d = back.property_map<Vertex_index, double>("v:distance");
-  ASSERT_TRUE(d.second);
-  auto colours = back.property_map<Vertex_index, CGAL::IO::Color>("v:color");
-  ASSERT_TRUE(colours.second);
-  auto source = back.property_map<Vertex_index, int>("v:source");
-  EXPECT_EQ(source.second, with_labels);
+  // Faces, as a polygon soup (a repaired input is written as read, and may not be a valid mesh).
+  {
+    std::vector<Point_3> points;
+    std::vector<std::vector<std::size_t> > polygons;
+    std::ifstream in(file, std::ios::binary);
+    ASSERT_TRUE(CGAL::IO::read_PLY(in, points, polygons));
+    ASSERT_EQ(points.size(), input.file_vertices);
+    ASSERT_EQ(polygons.size(), input.file_faces);
+    for(std::size_t f = 0; f < polygons.size(); ++f)
+    {
+      std::vector<std::size_t> expected;
+      if(input.direct)
+        for(Vertex_index v : CGAL::vertices_around_face(input.mesh.halfedge(Mesh::Face_index(
+                                                          static_cast<Mesh::size_type>(f))), input.mesh))
+          expected.push_back(std::size_t(v));
+      else
+        expected = input.file_polygons[f];
+      std::vector<std::size_t> written = polygons[f];
+      if(input.direct) // the same cycle (the file's, for the fast OFF reader), from any vertex
+      {
+        std::rotate(written.begin(), std::min_element(written.begin(), written.end()), written.end());
+        std::rotate(expected.begin(), std::min_element(expected.begin(), expected.end()), expected.end());
+      }
+      EXPECT_EQ(written, expected) << "face " << f;
+    }
+    for(std::size_t i = 0; i < points.size(); ++i)
+      EXPECT_EQ(points[i], input.direct ? input.mesh.point(Vertex_index(static_cast<Mesh::size_type>(i)))
+                                        : input.file_points[i]);
+  }
+  // Vertex properties.
+  typedef std::tuple<Point_3, double, int, unsigned char, unsigned char, unsigned char> Row;
+  std::vector<Row> rows;
+  {
+    std::ifstream in(file, std::ios::binary);
+    using CGAL::IO::PLY_property;
+    if(with_labels)
+      ASSERT_TRUE(CGAL::IO::read_PLY_with_properties(
+        in, std::back_inserter(rows),
+        CGAL::IO::make_ply_point_reader(CGAL::Nth_of_tuple_property_map<0, Row>()),
+        std::make_pair(CGAL::Nth_of_tuple_property_map<1, Row>(), PLY_property<double>("distance")),
+        std::make_pair(CGAL::Nth_of_tuple_property_map<2, Row>(), PLY_property<int>("source")),
+        std::make_pair(CGAL::Nth_of_tuple_property_map<3, Row>(), PLY_property<unsigned char>("red")),
+        std::make_pair(CGAL::Nth_of_tuple_property_map<4, Row>(), PLY_property<unsigned char>("green")),
+        std::make_pair(CGAL::Nth_of_tuple_property_map<5, Row>(), PLY_property<unsigned char>("blue"))));
+    else
+      ASSERT_TRUE(CGAL::IO::read_PLY_with_properties(
+        in, std::back_inserter(rows),
+        CGAL::IO::make_ply_point_reader(CGAL::Nth_of_tuple_property_map<0, Row>()),
+        std::make_pair(CGAL::Nth_of_tuple_property_map<1, Row>(), PLY_property<double>("distance")),
+        std::make_pair(CGAL::Nth_of_tuple_property_map<3, Row>(), PLY_property<unsigned char>("red")),
+        std::make_pair(CGAL::Nth_of_tuple_property_map<4, Row>(), PLY_property<unsigned char>("green")),
+        std::make_pair(CGAL::Nth_of_tuple_property_map<5, Row>(), PLY_property<unsigned char>("blue"))));
+  }
+  ASSERT_EQ(rows.size(), distances.size());
   for(std::size_t i = 0; i < distances.size(); ++i)
   {
-    const Vertex_index v(static_cast<Mesh::size_type>(i));
-    EXPECT_EQ(d.first[v], distances[i]);
-    if(with_labels && source.second)
-      EXPECT_EQ(source.first[v], labels[i]);
+    EXPECT_EQ(std::get<1>(rows[i]), distances[i]);
+    if(with_labels)
+    {
+      EXPECT_EQ(std::get<2>(rows[i]), labels[i]);
+    }
     const vtp_tools::Rgb c = vtp_tools::colour_of_distance(distances[i], 1.);
-    EXPECT_EQ(colours.first[v].red(), c.r);
-    EXPECT_EQ(colours.first[v].green(), c.g);
-    EXPECT_EQ(colours.first[v].blue(), c.b);
-    if(input.direct)
-      EXPECT_EQ(back.point(v), input.mesh.point(v));
-    else
-      EXPECT_EQ(back.point(v), input.file_points[i]);
+    EXPECT_EQ(std::get<3>(rows[i]), c.r);
+    EXPECT_EQ(std::get<4>(rows[i]), c.g);
+    EXPECT_EQ(std::get<5>(rows[i]), c.b);
   }
   // Unreachable: grey.
-  const vtp_tools::Rgb grey = vtp_tools::unreachable_colour();
-  EXPECT_EQ(colours.first[Vertex_index(static_cast<Mesh::size_type>(distances.size() - 1))].red(), grey.r);
+  EXPECT_EQ(std::get<3>(rows.back()), vtp_tools::unreachable_colour().r);
+  // The file also opens as a mesh with a `distance` property when it is one.
+  if(input.direct)
+  {
+    Mesh back;
+    std::ifstream in(file, std::ios::binary);
+    ASSERT_TRUE(CGAL::IO::read_PLY(in, back));
+    auto d = back.property_map<Vertex_index, double>("v:distance");
+    ASSERT_TRUE(d.second);
+    EXPECT_EQ(d.first[Vertex_index(1)], distances[1]);
+  }
 }
 
 TEST(DistancePly, RoundTripThroughCgalReader)

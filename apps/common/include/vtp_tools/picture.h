@@ -75,17 +75,19 @@ inline Vec3 normalized(const Vec3& a)
   return n > 0. ? scaled(a, 1. / n) : a;
 }
 
-// A round step for about `n` isolines between 0 and `max_value`: 1, 2, 2.5 or 5 times a power of ten.
+// A round step for about `n` isolines between 0 and `max_value`: 1, 2, 2.5 or 5 times a power of ten, the
+// nearest to max_value / n (on a log scale).
 inline double isoline_step(double max_value, int n)
 {
   if(!(max_value > 0.) || !std::isfinite(max_value) || n <= 0)
     return 0.;
   const double raw = max_value / n;
   const double p = std::pow(10., std::floor(std::log10(raw)));
+  double best = p;
   for(double m : { 1., 2., 2.5, 5., 10. })
-    if(m * p >= raw * 0.9)
-      return m * p;
-  return 10. * p;
+    if(std::abs(std::log(m * p / raw)) < std::abs(std::log(best / raw)))
+      best = m * p;
+  return best;
 }
 
 // Short text of a value on the colour bar, with as many decimals as `step` needs.
@@ -235,11 +237,16 @@ public:
                                            static_cast<float>(c[2]) } };
     }
 
+    // Visibility: the nearest face and the barycentric coordinates at each sample; then one shading per sample.
+    m_face.assign(m_depth.size(), no_face);
+    m_bary.assign(2 * m_depth.size(), 0.f);
     for(std::size_t f = 0; f < nf; ++f)
-    {
-      const std::array<std::uint32_t, 3> t = face_of(f);
-      draw_triangle(sx, sy, sz, normals, values, t);
-    }
+      rasterize(sx, sy, sz, face_of(f), static_cast<std::uint32_t>(f));
+    for(std::size_t s = 0; s < m_depth.size(); ++s)
+      if(m_face[s] != no_face)
+        shade(s, sx, sy, normals, values, face_of(m_face[s]));
+    std::vector<std::uint32_t>().swap(m_face);
+    std::vector<float>().swap(m_bary);
   }
 
   // Marks a point (e.g. a source): a white disc with a dark ring; dashed ring if hidden by the surface.
@@ -272,104 +279,117 @@ public:
 private:
   typedef picture_detail::Vec3 Vec3;
 
-  void draw_triangle(const std::vector<float>& sx, const std::vector<float>& sy, const std::vector<float>& sz,
-                     const std::vector<std::array<float, 3> >& normals, const std::vector<double>& values,
-                     const std::array<std::uint32_t, 3>& t)
+  static constexpr std::uint32_t no_face = 0xffffffffu;
+
+  // Depth test of face `f` at the samples it covers (edges shared by two faces are covered by both).
+  void rasterize(const std::vector<float>& sx, const std::vector<float>& sy, const std::vector<float>& sz,
+                 const std::array<std::uint32_t, 3>& t, std::uint32_t f)
   {
     const float x0 = sx[t[0]], y0 = sy[t[0]], x1 = sx[t[1]], y1 = sy[t[1]], x2 = sx[t[2]], y2 = sy[t[2]];
     const float area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
     if(!(std::abs(area) > 1e-12f))
       return;
-    int bx0 = static_cast<int>(std::floor((std::min)({ x0, x1, x2 })));
-    int bx1 = static_cast<int>(std::ceil((std::max)({ x0, x1, x2 })));
-    int by0 = static_cast<int>(std::floor((std::min)({ y0, y1, y2 })));
-    int by1 = static_cast<int>(std::ceil((std::max)({ y0, y1, y2 })));
-    bx0 = (std::max)(bx0, 0);
-    by0 = (std::max)(by0, 0);
-    bx1 = (std::min)(bx1, m_sw - 1);
-    by1 = (std::min)(by1, m_sh - 1);
+    const int bx0 = (std::max)(static_cast<int>(std::floor((std::min)({ x0, x1, x2 }))), 0);
+    const int bx1 = (std::min)(static_cast<int>(std::ceil((std::max)({ x0, x1, x2 }))), m_sw - 1);
+    const int by0 = (std::max)(static_cast<int>(std::floor((std::min)({ y0, y1, y2 }))), 0);
+    const int by1 = (std::min)(static_cast<int>(std::ceil((std::max)({ y0, y1, y2 }))), m_sh - 1);
     if(bx0 > bx1 || by0 > by1)
       return;
-
-    const double v0 = values[t[0]], v1 = values[t[1]], v2 = values[t[2]];
-    const bool has_value = std::isfinite(v0) && std::isfinite(v1) && std::isfinite(v2);
-    // Screen-space gradient of the value (per sample), for isolines of constant width.
-    double gradient = 0.;
-    if(has_value)
-    {
-      const double gx = ((v1 - v0) * (y2 - y0) - (v2 - v0) * (y1 - y0)) / area;
-      const double gy = ((v2 - v0) * (x1 - x0) - (v1 - v0) * (x2 - x0)) / area;
-      gradient = std::sqrt(gx * gx + gy * gy);
-    }
     const float inv_area = 1.f / area;
-    const int ss = (std::max)(1, m_options.supersampling);
-    const double half_width = 0.55 * ss; // isoline half-width, in samples
-
+    const float z0 = sz[t[0]], z1 = sz[t[1]], z2 = sz[t[2]];
     for(int y = by0; y <= by1; ++y)
     {
       const float py = y + 0.5f;
       for(int x = bx0; x <= bx1; ++x)
       {
         const float px = x + 0.5f;
-        // Barycentric coordinates (same sign as `area` inside; edges shared by two triangles are drawn by both).
         const float w0 = ((x1 - px) * (y2 - py) - (x2 - px) * (y1 - py)) * inv_area;
         const float w1 = ((x2 - px) * (y0 - py) - (x0 - px) * (y2 - py)) * inv_area;
         const float w2 = 1.f - w0 - w1;
         if(w0 < 0.f || w1 < 0.f || w2 < 0.f)
           continue;
-        const float z = w0 * sz[t[0]] + w1 * sz[t[1]] + w2 * sz[t[2]];
+        const float z = w0 * z0 + w1 * z1 + w2 * z2;
         const std::size_t s = static_cast<std::size_t>(y) * m_sw + x;
         if(!(z < m_depth[s]))
           continue;
         m_depth[s] = z;
-
-        // Shading: normal facing the viewer (back faces, seen through holes, are darker).
-        float n[3];
-        for(int k = 0; k < 3; ++k)
-          n[k] = w0 * normals[t[0]][k] + w1 * normals[t[1]][k] + w2 * normals[t[2]][k];
-        const float len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        double shade = 1.;
-        if(len > 0.f)
-        {
-          double nx = n[0] / len, ny = n[1] / len, nz = n[2] / len;
-          const bool back = nz > 0.; // camera z points into the scene: a front face has its normal towards -z
-          if(back)
-          {
-            nx = -nx;
-            ny = -ny;
-            nz = -nz;
-          }
-          // Light from the viewer, a little from the upper left.
-          const double lx = -0.3, ly = 0.4, lz = -0.866;
-          const double diffuse = (std::max)(0., nx * lx + ny * ly + nz * lz);
-          shade = 0.32 + 0.68 * diffuse;
-          if(back)
-            shade *= 0.55;
-        }
-
-        Rgb c = unreachable_colour();
-        double line = 0.;
-        if(has_value)
-        {
-          const double v = w0 * v0 + w1 * v1 + w2 * v2;
-          c = colour_of_distance(v, m_max_value);
-          if(m_step > 0. && gradient > 0.)
-          {
-            const double k = std::round(v / m_step);
-            if(k >= 1. && k * m_step < m_max_value)
-            {
-              const double d = std::abs(v - k * m_step) / gradient; // samples to the isoline
-              line = std::clamp(half_width + 0.5 - d, 0., 1.);
-            }
-          }
-        }
-        const double dark = 1. - 0.78 * line;
-        unsigned char* out = &m_colour[3 * s];
-        out[0] = static_cast<unsigned char>(std::lround(std::min(255., c.r * shade * dark)));
-        out[1] = static_cast<unsigned char>(std::lround(std::min(255., c.g * shade * dark)));
-        out[2] = static_cast<unsigned char>(std::lround(std::min(255., c.b * shade * dark)));
+        m_face[s] = f;
+        m_bary[2 * s] = w0;
+        m_bary[2 * s + 1] = w1;
       }
     }
+  }
+
+  // The colour of sample `s`, on face `t`: the colour of the interpolated value, shaded, darkened on isolines.
+  void shade(std::size_t s, const std::vector<float>& sx, const std::vector<float>& sy,
+             const std::vector<std::array<float, 3> >& normals, const std::vector<double>& values,
+             const std::array<std::uint32_t, 3>& t)
+  {
+    const float w0 = m_bary[2 * s], w1 = m_bary[2 * s + 1], w2 = 1.f - w0 - w1;
+
+    // Shading: the normal facing the viewer; back faces, seen through holes, are darker and greyer.
+    float n[3];
+    for(int k = 0; k < 3; ++k)
+      n[k] = w0 * normals[t[0]][k] + w1 * normals[t[1]][k] + w2 * normals[t[2]][k];
+    const float len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    double light = 1.;
+    bool back = false;
+    if(len > 0.f)
+    {
+      double nx = n[0] / len, ny = n[1] / len, nz = n[2] / len;
+      back = nz > 0.; // camera z points into the scene: a front face has its normal towards -z
+      if(back)
+      {
+        nx = -nx;
+        ny = -ny;
+        nz = -nz;
+      }
+      // Light from the viewer, a little from the upper left.
+      const double lx = -0.3, ly = 0.4, lz = -0.866;
+      light = 0.32 + 0.68 * (std::max)(0., nx * lx + ny * ly + nz * lz);
+    }
+
+    const double v0 = values[t[0]], v1 = values[t[1]], v2 = values[t[2]];
+    Rgb c = unreachable_colour();
+    double line = 0.;
+    if(std::isfinite(v0) && std::isfinite(v1) && std::isfinite(v2))
+    {
+      const double v = w0 * v0 + w1 * v1 + w2 * v2;
+      c = colour_of_distance(v, m_max_value);
+      if(m_step > 0.)
+      {
+        const double k = std::round(v / m_step);
+        if(k >= 1. && k * m_step < m_max_value)
+        {
+          // Screen-space gradient of the value on the face (per sample), for isolines of constant width.
+          const float x0 = sx[t[0]], y0 = sy[t[0]], x1 = sx[t[1]], y1 = sy[t[1]], x2 = sx[t[2]], y2 = sy[t[2]];
+          const double area = double(x1 - x0) * (y2 - y0) - double(x2 - x0) * (y1 - y0);
+          const double gx = ((v1 - v0) * (y2 - y0) - (v2 - v0) * (y1 - y0)) / area;
+          const double gy = ((v2 - v0) * (x1 - x0) - (v1 - v0) * (x2 - x0)) / area;
+          const double gradient = std::sqrt(gx * gx + gy * gy);
+          if(gradient > 0.)
+          {
+            const double half_width = 0.55 * (std::max)(1, m_options.supersampling);
+            const double d = std::abs(v - k * m_step) / gradient; // samples to the isoline
+            line = std::clamp(half_width + 0.5 - d, 0., 1.);
+          }
+        }
+      }
+    }
+    double r = c.r, g = c.g, b = c.b;
+    if(back)
+    {
+      const double grey = 0.3 * r + 0.59 * g + 0.11 * b;
+      r = 0.5 * (r + grey);
+      g = 0.5 * (g + grey);
+      b = 0.5 * (b + grey);
+      light *= 0.7;
+    }
+    const double f = light * (1. - 0.78 * line);
+    unsigned char* out = &m_colour[3 * s];
+    out[0] = static_cast<unsigned char>((std::min)(255., r * f + 0.5));
+    out[1] = static_cast<unsigned char>((std::min)(255., g * f + 0.5));
+    out[2] = static_cast<unsigned char>((std::min)(255., b * f + 0.5));
   }
 
   void downsample()
@@ -633,7 +653,7 @@ private:
     png_set_write_fn(png, &os, picture_detail::png_write_to_stream, picture_detail::png_flush_stream);
     png_set_IHDR(png, info, static_cast<png_uint_32>(m_width), static_cast<png_uint_32>(m_height), 8,
                  PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_set_compression_level(png, 6);
+    png_set_compression_level(png, 3);
     png_write_info(png, info);
     for(int y = 0; y < m_height; ++y)
       png_write_row(png, const_cast<png_bytep>(&m_pixels[3 * static_cast<std::size_t>(y) * m_width]));
@@ -648,6 +668,8 @@ private:
   int m_mesh_width = 1, m_mesh_height = 1, m_margin = 30, m_panel = 190, m_width = 1, m_height = 1;
   int m_mesh_x = 0, m_mesh_y = 0, m_sw = 1, m_sh = 1;
   std::vector<float> m_depth;
+  std::vector<std::uint32_t> m_face;   // during set_mesh(): the face seen at each sample
+  std::vector<float> m_bary;           // during set_mesh(): its first two barycentric coordinates there
   std::vector<unsigned char> m_colour, m_pixels;
   std::vector<Vec3> m_markers;
   std::vector<std::vector<Vec3> > m_polylines;
