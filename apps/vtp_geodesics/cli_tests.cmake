@@ -172,3 +172,8 @@ vtp_cli_test(output_dangling_symlink 0 "${cli_dir}/dangling.txt" "" SETUP dangli
              --output "${cli_dir}/dangling.txt")
 vtp_cli_test(output_existing_file 0 "${cli_dir}/existing.txt" "" SETUP existing CHECK mode640
              --output "${cli_dir}/existing.txt")
+
+# Installation: the installed tool (moved elsewhere) finds its default mesh relative to itself.
+add_test(NAME cli_installed_tool
+         COMMAND ${CMAKE_COMMAND} "-DBUILD_DIR=${CMAKE_BINARY_DIR}" "-DPREFIX=${cli_dir}/installed"
+                 -P "${CMAKE_CURRENT_SOURCE_DIR}/install_test.cmake")

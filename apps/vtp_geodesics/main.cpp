@@ -33,6 +33,7 @@
 #include <CGAL/VTP_geodesics/options_and_statistics.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -76,7 +77,13 @@ std::string executable_folder()
 std::string default_mesh()
 {
   const std::string folder = executable_folder();
-  return (folder.empty() ? std::string(".") : folder) + "/" + VTP_GEODESICS_DEFAULT_MESH_RELATIVE;
+  const std::string path = (folder.empty() ? std::string(".") : folder) + "/" + VTP_GEODESICS_DEFAULT_MESH_RELATIVE;
+  char* resolved = ::realpath(path.c_str(), nullptr); // without the "bin/.." of the relative path
+  if(resolved == nullptr)
+    return path;
+  const std::string r = resolved;
+  std::free(resolved);
+  return r;
 }
 
 double peak_rss_mb()

@@ -195,6 +195,10 @@ inline bool parse_index(const char*& p, const char* end, std::uint64_t& i)
 
 // Checks that the triangles form a valid mesh and builds its halfedge structure in `mesh`, whose vertices are
 // already there. Returns false (and leaves `mesh` to be cleared) if the triangles are not a valid mesh.
+//
+// Corner 3f+k is the halfedge t[k] -> t[k+1] of face f. The outgoing corners of each vertex are sorted by target
+// (as 64-bit keys target << 32 | corner, so that the sort and the searches read contiguous memory); the opposite
+// of every corner is found once, and everything else follows from the array of opposites.
 template <class Point>
 bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_mesh<Point>& mesh,
                          std::string& reason)
@@ -205,14 +209,13 @@ bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_m
   typedef typename Mesh::size_type size_type;
   const std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
   const std::size_t n = mesh.number_of_vertices();
-  const std::size_t nc = 3 * triangles.size(); // corners: corner 3f+k is the halfedge t[k] -> t[k+1] of face f
+  const std::uint32_t nc = static_cast<std::uint32_t>(3 * triangles.size());
 
-  auto corner_source = [&](std::uint32_t c) { return triangles[c / 3][c % 3]; };
-  auto corner_target = [&](std::uint32_t c) { return triangles[c / 3][(c % 3 + 1) % 3]; };
-  auto corner_prev_source = [&](std::uint32_t c) { return triangles[c / 3][(c % 3 + 2) % 3]; };
+  auto source_of = [&](std::uint32_t c) { return triangles[c / 3][c % 3]; };
+  auto target_of = [&](std::uint32_t c) { return triangles[c / 3][(c % 3 + 1) % 3]; };
+  auto previous = [](std::uint32_t c) { return c - c % 3 + (c % 3 + 2) % 3; }; // the corner ending at source_of(c)
 
-  // Outgoing corners of each vertex, sorted by their target.
-  std::vector<std::uint32_t> begin(n + 1, 0), corners(nc);
+  std::vector<std::uint32_t> begin(n + 1, 0);
   for(const Triangle& t : triangles)
   {
     if(t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
@@ -225,93 +228,98 @@ bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_m
   }
   for(std::size_t v = 0; v < n; ++v)
     begin[v + 1] += begin[v];
+  std::vector<std::uint64_t> out(nc);
   {
     std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
     for(std::uint32_t c = 0; c < nc; ++c)
-      corners[fill[corner_source(c)]++] = c;
+      out[fill[source_of(c)]++] = (std::uint64_t(target_of(c)) << 32) | c;
   }
   for(std::size_t v = 0; v < n; ++v)
   {
-    std::uint32_t* first = corners.data() + begin[v];
-    std::uint32_t* last = corners.data() + begin[v + 1];
-    std::sort(first, last, [&](std::uint32_t a, std::uint32_t b) { return corner_target(a) < corner_target(b); });
-    for(std::uint32_t* c = first; c + 1 < last; ++c)
-      if(corner_target(c[0]) == corner_target(c[1]))
+    std::uint64_t* first = out.data() + begin[v];
+    std::uint64_t* last = out.data() + begin[v + 1];
+    std::sort(first, last);
+    for(std::uint64_t* k = first; k + 1 < last; ++k)
+      if((k[0] >> 32) == (k[1] >> 32))
       {
         reason = "two faces have the same oriented edge";
         return false;
       }
   }
-  // The corner a -> b, or `none`.
-  auto find = [&](std::uint32_t a, std::uint32_t b) -> std::uint32_t {
-    const std::uint32_t* first = corners.data() + begin[a];
-    const std::uint32_t* last = corners.data() + begin[a + 1];
-    const std::uint32_t* it =
-      std::lower_bound(first, last, b, [&](std::uint32_t c, std::uint32_t value) { return corner_target(c) < value; });
-    return (it != last && corner_target(*it) == b) ? *it : none;
-  };
 
-  // Every vertex must be a single fan: around v, the corner after v -> b is v -> c where c -> v is the previous
-  // halfedge of the face of v -> b. Exactly one chain (border vertex) or one cycle (interior vertex).
+  // opposite[c]: the corner target_of(c) -> source_of(c), or `none` (then the other side is a border).
+  std::vector<std::uint32_t> opposite(nc, none);
+  for(std::uint32_t a = 0; a < n; ++a)
+    for(std::uint32_t k = begin[a]; k < begin[a + 1]; ++k)
+    {
+      const std::uint32_t c = static_cast<std::uint32_t>(out[k]);
+      const std::uint32_t b = static_cast<std::uint32_t>(out[k] >> 32);
+      if(opposite[c] != none || b < a)
+        continue;
+      const std::uint64_t key = std::uint64_t(a) << 32;
+      const std::uint64_t* first = out.data() + begin[b];
+      const std::uint64_t* last = out.data() + begin[b + 1];
+      const std::uint64_t* it = std::lower_bound(first, last, key);
+      if(it != last && (*it >> 32) == a)
+      {
+        opposite[c] = static_cast<std::uint32_t>(*it);
+        opposite[static_cast<std::uint32_t>(*it)] = c;
+      }
+    }
+
+  // Every vertex must be a single fan: around v, the corner after v -> b is the opposite of the corner that ends
+  // at v in the face of v -> b. Exactly one chain (border vertex) or one cycle (interior vertex).
   for(std::uint32_t v = 0; v < n; ++v)
   {
     const std::uint32_t d = begin[v + 1] - begin[v];
     if(d == 0)
       continue;
-    std::uint32_t start = corners[begin[v]], starts = 0;
+    std::uint32_t start = static_cast<std::uint32_t>(out[begin[v]]), starts = 0;
     for(std::uint32_t k = begin[v]; k < begin[v + 1]; ++k)
-      if(find(corner_target(corners[k]), v) == none)
-      {
-        start = corners[k];
-        if(++starts > 1)
-          break;
-      }
-    if(starts > 1)
     {
-      reason = "a vertex is not manifold";
-      return false;
+      const std::uint32_t c = static_cast<std::uint32_t>(out[k]);
+      if(opposite[c] == none) // nothing before c around v
+      {
+        start = c;
+        ++starts;
+      }
     }
     std::uint32_t steps = 1;
-    for(std::uint32_t c = find(v, corner_prev_source(start)); c != none && c != start;
-        c = find(v, corner_prev_source(c)))
-      ++steps;
-    if(steps != d)
+    if(starts <= 1)
+      for(std::uint32_t c = opposite[previous(start)]; c != none && c != start; c = opposite[previous(c)])
+        if(++steps > d)
+          break;
+    if(starts > 1 || steps != d)
     {
       reason = "a vertex is not manifold";
       return false;
     }
   }
+  std::vector<std::uint64_t>().swap(out);
+  std::vector<std::uint32_t>().swap(begin);
 
   // Halfedges: one edge per pair of opposite corners, or per corner without opposite (then the other halfedge is
   // a border halfedge).
-  std::size_t edges = 0;
-  for(std::uint32_t c = 0; c < nc; ++c)
-  {
-    const std::uint32_t a = corner_source(c), b = corner_target(c);
-    if(a < b || find(b, a) == none)
-      ++edges;
-  }
-  mesh.reserve(static_cast<size_type>(n), static_cast<size_type>(edges), static_cast<size_type>(triangles.size()));
+  mesh.reserve(static_cast<size_type>(n), static_cast<size_type>(nc / 2 + nc / 32),
+               static_cast<size_type>(triangles.size()));
   std::vector<std::uint32_t> halfedge_of(nc, none);
   std::vector<std::uint32_t> border_in(n, none), border_out(n, none);
   for(std::uint32_t c = 0; c < nc; ++c)
   {
     if(halfedge_of[c] != none)
       continue;
-    const std::uint32_t a = corner_source(c), b = corner_target(c);
+    const std::uint32_t a = source_of(c), b = target_of(c);
     const Halfedge_index h = mesh.add_edge(Vertex_index(a), Vertex_index(b)); // h: a -> b
     halfedge_of[c] = static_cast<std::uint32_t>(h);
-    const std::uint32_t o = find(b, a);
-    if(o != none)
-      halfedge_of[o] = static_cast<std::uint32_t>(mesh.opposite(h));
+    if(opposite[c] != none)
+      halfedge_of[opposite[c]] = static_cast<std::uint32_t>(mesh.opposite(h));
     else
     {
       border_out[b] = static_cast<std::uint32_t>(mesh.opposite(h)); // b -> a, no face
       border_in[a] = static_cast<std::uint32_t>(mesh.opposite(h));
     }
   }
-  std::vector<std::uint32_t>().swap(corners);
-  std::vector<std::uint32_t>().swap(begin);
+  std::vector<std::uint32_t>().swap(opposite);
   for(std::size_t f = 0; f < triangles.size(); ++f)
   {
     const typename Mesh::Face_index fi = mesh.add_face();
