@@ -57,7 +57,8 @@ std::string methods_help()
 {
   std::string s;
   for(const vtp_tools::Method_info* m = vtp_tools::methods_begin(); m != vtp_tools::methods_end(); ++m)
-    s += std::string(m == vtp_tools::methods_begin() ? "" : ", ") + m->name + " (" + m->description + ")";
+    s += std::string(m == vtp_tools::methods_begin() ? "" : "\n") + m->name + ": " + m->description
+         + (m == vtp_tools::methods_begin() ? " (default)" : "");
   return s;
 }
 
@@ -78,9 +79,10 @@ const std::vector<Option>& option_table()
       "  -: the text format on standard output",
       [](Arguments& a, const std::string& n, const std::string& v) { a.output = file_name(n, v); } },
     { "--picture", "FILE",
-      "draw the mesh coloured by distance, with isolines, as a PNG picture",
+      "draw the distances as a PNG picture: the mesh coloured by distance\n"
+      "(viridis), shaded, with isolines, a colour bar and the source marked",
       [](Arguments& a, const std::string& n, const std::string& v) { a.picture = file_name(n, v); } },
-    { "--isolines", "N", "number of isolines of the picture (default: 10; 0: none)",
+    { "--isolines", "N", "about N isolines on the picture, at round distances (default: 10;\n0: none)",
       [](Arguments& a, const std::string& n, const std::string& v) {
         const std::size_t k = parse_index(n, v);
         if(k > 1000)
@@ -251,7 +253,7 @@ void print_usage(std::ostream& os, const std::string& default_mesh)
   for(const Option& o : option_table())
   {
     const std::string left = std::string(o.name) + (o.value != nullptr ? std::string(" ") + o.value : "");
-    item(left, o.help != nullptr ? std::string(o.help) : methods_help() + "\n(default: vtp)");
+    item(left, o.help != nullptr ? std::string(o.help) : methods_help());
   }
   os << "\n"
         "Input that is not a triangle mesh is repaired, and one line \"vtp_geodesics: note: ...\"\n"

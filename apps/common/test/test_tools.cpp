@@ -520,7 +520,8 @@ struct Rendered
   }
 };
 
-Rendered render(const Mesh& m, const std::vector<double>& values, int isolines, bool marker)
+Rendered render(const Mesh& m, const std::vector<double>& values, int isolines, bool marker,
+               const std::vector<std::array<double, 3> >& polyline = std::vector<std::array<double, 3> >())
 {
   vtp_tools::Picture_options o;
   o.isolines = isolines;
@@ -547,6 +548,8 @@ Rendered render(const Mesh& m, const std::vector<double>& values, int isolines, 
     const Point_3& p = m.point(Vertex_index(0));
     picture.add_marker({ { p.x(), p.y(), p.z() } });
   }
+  if(!polyline.empty())
+    picture.add_polyline(polyline);
   picture.render();
   Rendered r;
   r.width = picture.width();
@@ -582,6 +585,23 @@ TEST(Picture, DrawsTheFieldIsolinesAndMarkers)
   // Isolines add dark pixels; the marker adds red ones.
   EXPECT_GT(lines.count(is_dark), plain.count(is_dark) + 500);
   EXPECT_GT(marked.count(is_marker_red), lines.count(is_marker_red) + 50);
+}
+
+TEST(Picture, DrawsPolylines)
+{
+  Mesh m;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(mesh_dir + "/elephant.off", m));
+  std::vector<double> values(m.number_of_vertices(), 1.);
+  // A path along vertices 0, 1, 2, ... (a polyline on or through the surface).
+  std::vector<std::array<double, 3> > path;
+  for(std::size_t i = 0; i < 200; ++i)
+  {
+    const Point_3& p = m.point(Vertex_index(static_cast<Mesh::size_type>(i)));
+    path.push_back({ { p.x(), p.y(), p.z() } });
+  }
+  const Rendered without = render(m, values, 0, false);
+  const Rendered with = render(m, values, 0, false, path);
+  EXPECT_GT(with.count(is_marker_red), without.count(is_marker_red) + 100);
 }
 
 TEST(Picture, UnreachableIsGreyAndViewFitsTheMesh)

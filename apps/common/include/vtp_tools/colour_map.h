@@ -40,7 +40,7 @@ inline Rgb colour_of_fraction(double t)
   const unsigned char* a = generated::colour_map[i];
   const unsigned char* b = generated::colour_map[i + 1];
   auto mix = [w](unsigned char u, unsigned char v) {
-    return static_cast<unsigned char>(std::lround((1. - w) * u + w * v));
+    return static_cast<unsigned char>((1. - w) * u + w * v + 0.5);
   };
   return Rgb{ mix(a[0], b[0]), mix(a[1], b[1]), mix(a[2], b[2]) };
 }

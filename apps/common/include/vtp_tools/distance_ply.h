@@ -50,12 +50,15 @@ void write(std::ostream& os, std::size_t nv, std::size_t nf, PointMap points, Fa
     [&distances](std::size_t i) { return distances[i]; });
   auto label_map = boost::make_function_property_map<std::size_t, int>(
     [labels](std::size_t i) { return (*labels)[i]; });
+  std::vector<Rgb> colours(nv);
+  for(std::size_t i = 0; i < nv; ++i)
+    colours[i] = colour_of_distance(distances[i], max_distance);
   auto red = boost::make_function_property_map<std::size_t, unsigned char>(
-    [&](std::size_t i) { return colour_of_distance(distances[i], max_distance).r; });
+    [&colours](std::size_t i) { return colours[i].r; });
   auto green = boost::make_function_property_map<std::size_t, unsigned char>(
-    [&](std::size_t i) { return colour_of_distance(distances[i], max_distance).g; });
+    [&colours](std::size_t i) { return colours[i].g; });
   auto blue = boost::make_function_property_map<std::size_t, unsigned char>(
-    [&](std::size_t i) { return colour_of_distance(distances[i], max_distance).b; });
+    [&colours](std::size_t i) { return colours[i].b; });
 
   IO::set_mode(os, IO::BINARY);
   os << "ply\nformat binary_little_endian 1.0\n";

@@ -188,7 +188,9 @@ public:
     if(nv == 0)
       x0 = x1 = y0 = y1 = z0 = z1 = 0.;
     const double ex = (std::max)(x1 - x0, 1e-300), ey = (std::max)(y1 - y0, 1e-300);
-    const double scale = (std::min)(m_options.max_mesh_width / ex, m_options.max_mesh_height / ey);
+    double scale = (std::min)(m_options.max_mesh_width / ex, m_options.max_mesh_height / ey);
+    if(!std::isfinite(scale) || !(x1 - x0 > 0. || y1 - y0 > 0.))
+      scale = 1.; // a single point, or a mesh seen edge-on along a segment: nothing sensible to fit
     m_mesh_width = (std::max)(1, static_cast<int>(std::ceil(ex * scale)));
     m_mesh_height = (std::max)(1, static_cast<int>(std::ceil(ey * scale)));
     m_margin = 30;
@@ -240,13 +242,20 @@ public:
     // Visibility: the nearest face and the barycentric coordinates at each sample; then one shading per sample.
     m_face.assign(m_depth.size(), no_face);
     m_bary.assign(2 * m_depth.size(), 0.f);
+    m_face_gradient.assign(nf, -1.f); // computed when first needed
+    for(int i = 0; i < lut_size; ++i)
+    {
+      const Rgb c = colour_of_fraction(static_cast<double>(i) / (lut_size - 1));
+      m_lut[i] = std::array<float, 3>{ { float(c.r), float(c.g), float(c.b) } };
+    }
     for(std::size_t f = 0; f < nf; ++f)
       rasterize(sx, sy, sz, face_of(f), static_cast<std::uint32_t>(f));
     for(std::size_t s = 0; s < m_depth.size(); ++s)
       if(m_face[s] != no_face)
-        shade(s, sx, sy, normals, values, face_of(m_face[s]));
+        shade(s, sx, sy, normals, values, m_face[s], face_of(m_face[s]));
     std::vector<std::uint32_t>().swap(m_face);
     std::vector<float>().swap(m_bary);
+    std::vector<float>().swap(m_face_gradient);
   }
 
   // Marks a point (e.g. a source): a white disc with a dark ring; dashed ring if hidden by the surface.
@@ -287,8 +296,12 @@ private:
   {
     const float x0 = sx[t[0]], y0 = sy[t[0]], x1 = sx[t[1]], y1 = sy[t[1]], x2 = sx[t[2]], y2 = sy[t[2]];
     const float area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
-    if(!(std::abs(area) > 1e-12f))
+    if(!(std::abs(area) > 1e-12f) || !std::isfinite(area))
       return;
+    const float limit = 1e8f; // samples; keeps the conversions to int defined
+    for(float c : { x0, y0, x1, y1, x2, y2 })
+      if(!(std::abs(c) < limit))
+        return;
     const int bx0 = (std::max)(static_cast<int>(std::floor((std::min)({ x0, x1, x2 }))), 0);
     const int bx1 = (std::min)(static_cast<int>(std::ceil((std::max)({ x0, x1, x2 }))), m_sw - 1);
     const int by0 = (std::max)(static_cast<int>(std::floor((std::min)({ y0, y1, y2 }))), 0);
@@ -323,7 +336,7 @@ private:
   // The colour of sample `s`, on face `t`: the colour of the interpolated value, shaded, darkened on isolines.
   void shade(std::size_t s, const std::vector<float>& sx, const std::vector<float>& sy,
              const std::vector<std::array<float, 3> >& normals, const std::vector<double>& values,
-             const std::array<std::uint32_t, 3>& t)
+             std::uint32_t face, const std::array<std::uint32_t, 3>& t)
   {
     const float w0 = m_bary[2 * s], w1 = m_bary[2 * s + 1], w2 = 1.f - w0 - w1;
 
@@ -350,24 +363,33 @@ private:
     }
 
     const double v0 = values[t[0]], v1 = values[t[1]], v2 = values[t[2]];
-    Rgb c = unreachable_colour();
+    const Rgb grey = unreachable_colour();
+    double r = grey.r, g = grey.g, b = grey.b;
     double line = 0.;
     if(std::isfinite(v0) && std::isfinite(v1) && std::isfinite(v2))
     {
       const double v = w0 * v0 + w1 * v1 + w2 * v2;
-      c = colour_of_distance(v, m_max_value);
+      const double fraction = m_max_value > 0. ? std::clamp(v / m_max_value, 0., 1.) : 0.;
+      const std::array<float, 3>& c = m_lut[static_cast<int>(fraction * (lut_size - 1) + 0.5)];
+      r = c[0];
+      g = c[1];
+      b = c[2];
       if(m_step > 0.)
       {
         const double k = std::round(v / m_step);
         if(k >= 1. && k * m_step < m_max_value)
         {
           // Screen-space gradient of the value on the face (per sample), for isolines of constant width.
-          const float x0 = sx[t[0]], y0 = sy[t[0]], x1 = sx[t[1]], y1 = sy[t[1]], x2 = sx[t[2]], y2 = sy[t[2]];
-          const double area = double(x1 - x0) * (y2 - y0) - double(x2 - x0) * (y1 - y0);
-          const double gx = ((v1 - v0) * (y2 - y0) - (v2 - v0) * (y1 - y0)) / area;
-          const double gy = ((v2 - v0) * (x1 - x0) - (v1 - v0) * (x2 - x0)) / area;
-          const double gradient = std::sqrt(gx * gx + gy * gy);
-          if(gradient > 0.)
+          float& gradient = m_face_gradient[face];
+          if(gradient < 0.f)
+          {
+            const float x0 = sx[t[0]], y0 = sy[t[0]], x1 = sx[t[1]], y1 = sy[t[1]], x2 = sx[t[2]], y2 = sy[t[2]];
+            const double area = double(x1 - x0) * (y2 - y0) - double(x2 - x0) * (y1 - y0);
+            const double gx = ((v1 - v0) * (y2 - y0) - (v2 - v0) * (y1 - y0)) / area;
+            const double gy = ((v2 - v0) * (x1 - x0) - (v1 - v0) * (x2 - x0)) / area;
+            gradient = static_cast<float>(std::sqrt(gx * gx + gy * gy));
+          }
+          if(gradient > 0.f)
           {
             const double half_width = 0.55 * (std::max)(1, m_options.supersampling);
             const double d = std::abs(v - k * m_step) / gradient; // samples to the isoline
@@ -376,7 +398,6 @@ private:
         }
       }
     }
-    double r = c.r, g = c.g, b = c.b;
     if(back)
     {
       const double grey = 0.3 * r + 0.59 * g + 0.11 * b;
@@ -426,8 +447,11 @@ private:
   bool visible(double x, double y, double z) const
   {
     const int ss = (std::max)(1, m_options.supersampling);
-    const int cx = static_cast<int>(std::floor((x - m_mesh_x) * ss));
-    const int cy = static_cast<int>(std::floor((y - m_mesh_y) * ss));
+    const double fx = (x - m_mesh_x) * ss, fy = (y - m_mesh_y) * ss;
+    if(!(std::abs(fx) < 1e8) || !(std::abs(fy) < 1e8))
+      return true; // far outside the drawing: nothing hides it
+    const int cx = static_cast<int>(std::floor(fx));
+    const int cy = static_cast<int>(std::floor(fy));
     const double tolerance = 2e-3 * m_depth_range;
     float nearest = std::numeric_limits<float>::infinity();
     for(int j = cy - ss; j <= cy + ss; ++j)
@@ -670,6 +694,9 @@ private:
   std::vector<float> m_depth;
   std::vector<std::uint32_t> m_face;   // during set_mesh(): the face seen at each sample
   std::vector<float> m_bary;           // during set_mesh(): its first two barycentric coordinates there
+  std::vector<float> m_face_gradient;  // during set_mesh(): screen gradient of the value per face (-1: not yet)
+  static constexpr int lut_size = 1024;
+  std::array<std::array<float, 3>, lut_size> m_lut;  // the colour map, finely sampled
   std::vector<unsigned char> m_colour, m_pixels;
   std::vector<Vec3> m_markers;
   std::vector<std::vector<Vec3> > m_polylines;
