@@ -28,7 +28,9 @@
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -244,6 +246,36 @@ inline void read_input_mesh(const std::string& file, Input_mesh& input)
   input.file_faces = polygons.size();
   if(points.empty() && polygons.empty())
     throw Input_error("cannot read '" + file + "': the file has no vertices and no faces");
+  try
+  {
+    check_soup_values(points, polygons);
+  }
+  catch(const CGAL::VTP_geodesics::Invalid_input_error& e)
+  {
+    throw Input_error("cannot use '" + file + "': " + e.what());
+  }
+
+  // A valid triangle mesh (the common case): checked and built directly, as by the fast OFF reader.
+  if(points.size() < (std::size_t(1) << 31) && polygons.size() < (std::size_t(1) << 31) / 3
+     && std::all_of(polygons.begin(), polygons.end(), [](const std::vector<std::size_t>& p) { return p.size() == 3; }))
+  {
+    std::vector<fast_off_detail::Triangle> triangles(polygons.size());
+    for(std::size_t f = 0; f < polygons.size(); ++f)
+      for(int k = 0; k < 3; ++k)
+        triangles[f][k] = static_cast<std::uint32_t>(polygons[f][k]);
+    input.mesh.reserve(static_cast<Mesh::size_type>(points.size()), 0, 0);
+    for(const Point_3& p : points)
+      input.mesh.add_vertex(p);
+    std::string reason;
+    if(fast_off_detail::build_triangle_mesh(triangles, input.mesh, reason))
+    {
+      input.direct = true;
+      input.repair_seconds = read_detail::seconds_since(t1);
+      return;
+    }
+    input.mesh.clear();
+  }
+
   input.file_points = points;
   input.file_polygons = polygons;
   try

@@ -76,6 +76,28 @@ struct Soup_repair_report
   }
 };
 
+// Checks what no repair can fix: the soup has points and faces, finite coordinates and indices in range. Throws
+// `CGAL::VTP_geodesics::Invalid_input_error` with a one-line message that says which vertex or face is wrong.
+template <class Point>
+void check_soup_values(const std::vector<Point>& points, const std::vector<std::vector<std::size_t> >& polygons)
+{
+  typedef CGAL::VTP_geodesics::Invalid_input_error Error;
+  const std::size_t n = points.size();
+  if(n == 0)
+    throw Error("the mesh has no vertices");
+  for(std::size_t i = 0; i < n; ++i)
+    if(!std::isfinite(CGAL::to_double(points[i].x())) || !std::isfinite(CGAL::to_double(points[i].y()))
+       || !std::isfinite(CGAL::to_double(points[i].z())))
+      throw Error("vertex " + std::to_string(i) + " has a non-finite coordinate");
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    for(std::size_t id : polygons[f])
+      if(id >= n)
+        throw Error("face " + std::to_string(f) + " refers to vertex " + std::to_string(id) + ", out of range (there are "
+                    + std::to_string(n) + " vertices)");
+  if(polygons.empty())
+    throw Error("the mesh has no faces");
+}
+
 // Builds a triangle `Surface_mesh` from a polygon soup, and tells which vertices of the mesh stand
 // for each point of the soup, so that results on the mesh can be reported in the soup's point order.
 //
@@ -90,8 +112,9 @@ struct Soup_repair_report
 // one vertex normally, several if the point was duplicated, none if it was removed. Coincident points
 // merged by the repair stand for the same vertices.
 //
-// Throws `CGAL::VTP_geodesics::Invalid_input_error` (one-line message) if the soup has no point or no face, a non-finite
-// coordinate or an index out of range, no face left after the repair, or cannot be made a triangle mesh.
+// Throws `CGAL::VTP_geodesics::Invalid_input_error` (one-line message) if the soup has no point or no face, a
+// non-finite coordinate or an index out of range (see `check_soup_values()`), no face left after the repair, or
+// cannot be made a triangle mesh.
 template <class Point>
 Soup_repair_report
 triangle_mesh_from_soup(std::vector<Point> points,
@@ -108,19 +131,7 @@ triangle_mesh_from_soup(std::vector<Point> points,
 
   Soup_repair_report report;
   const std::size_t n = points.size();
-  if(n == 0)
-    throw CGAL::VTP_geodesics::Invalid_input_error("the mesh has no vertices");
-  for(std::size_t i = 0; i < n; ++i)
-    if(!std::isfinite(CGAL::to_double(points[i].x())) || !std::isfinite(CGAL::to_double(points[i].y()))
-       || !std::isfinite(CGAL::to_double(points[i].z())))
-      throw CGAL::VTP_geodesics::Invalid_input_error("vertex " + std::to_string(i) + " has a non-finite coordinate");
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-    for(std::size_t id : polygons[f])
-      if(id >= n)
-        throw CGAL::VTP_geodesics::Invalid_input_error("face " + std::to_string(f) + " refers to vertex " + std::to_string(id)
-                                  + ", out of range (there are " + std::to_string(n) + " vertices)");
-  if(polygons.empty())
-    throw CGAL::VTP_geodesics::Invalid_input_error("the mesh has no faces");
+  check_soup_values(points, polygons);
 
   // image[i]: the point that input point i became after the repair (NONE if it was removed);
   // copy_of[j]: the repaired point that point j of the final soup is a copy of.
