@@ -65,6 +65,9 @@ function(vtp_cli_test name expected output json)
            COMMAND ${CMAKE_COMMAND} "-DEXE=$<TARGET_FILE:vtp_geodesics>" "-DARGS=${args}"
                    "-DEXPECTED_EXIT=${expected}" "-DOUTPUT=${output}" "-DJSON=${json}" ${extra}
                    -P "${cli_script}")
+  if(VTP_TOOLS_TEST_ENVIRONMENT)
+    set_tests_properties(cli_${name} PROPERTIES ENVIRONMENT "${VTP_TOOLS_TEST_ENVIRONMENT}")
+  endif()
 endfunction()
 
 vtp_cli_test(help 0 "" "" --help)
@@ -177,3 +180,6 @@ vtp_cli_test(output_existing_file 0 "${cli_dir}/existing.txt" "" SETUP existing 
 add_test(NAME cli_installed_tool
          COMMAND ${CMAKE_COMMAND} "-DBUILD_DIR=${CMAKE_BINARY_DIR}" "-DPREFIX=${cli_dir}/installed"
                  -P "${CMAKE_CURRENT_SOURCE_DIR}/install_test.cmake")
+if(VTP_TOOLS_TEST_ENVIRONMENT)
+  set_tests_properties(cli_installed_tool PROPERTIES ENVIRONMENT "${VTP_TOOLS_TEST_ENVIRONMENT}")
+endif()
