@@ -357,9 +357,11 @@ private:
         ny = -ny;
         nz = -nz;
       }
-      // Light from the viewer, a little from the upper left.
-      const double lx = -0.3, ly = 0.4, lz = -0.866;
-      light = 0.32 + 0.68 * (std::max)(0., nx * lx + ny * ly + nz * lz);
+      // A head light (from the viewer) and a key light from the upper left: every visible face gets some
+      // light, faces seen at a grazing angle get less, and the key light shows the relief.
+      const double lx = -0.4, ly = 0.5, lz = -0.768;
+      const double head = -nz, key = (std::max)(0., nx * lx + ny * ly + nz * lz);
+      light = 0.4 + 0.6 * (0.55 * head + 0.45 * key);
     }
 
     const double v0 = values[t[0]], v1 = values[t[1]], v2 = values[t[2]];
