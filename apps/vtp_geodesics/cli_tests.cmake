@@ -149,12 +149,16 @@ vtp_cli_test(non_finite_obj 2 "${bad_output}.20" "" ERROR "vertex 1 has a non-fi
 vtp_cli_test(bad_view 2 "${bad_output}.21" "" ERROR "--view" --view 1,2 --picture "${bad_output}.21")
 
 # Other formats that CGAL reads as polygon soups: STL (points merged by the reader, numbered in the order they
-# first appear: the vertex (1,0,0) is vertex 2), OBJ.
+# first appear: the vertex (1,0,0) is vertex 2), OBJ, PLY and GOCAD TS.
 #   tetrahedron.stl / tetrahedron.obj: the regular tetrahedron of edge length 1
 vtp_cli_test(stl_input 0 "${cli_dir}/stl.txt" "" LINES 4 VALUES "2=1"
              "${cli_data}/tetrahedron.stl" --output "${cli_dir}/stl.txt")
 vtp_cli_test(obj_input 0 "${cli_dir}/obj.txt" "" LINES 4 VALUES "1=1"
              "${cli_data}/tetrahedron.obj" --check-cgal --output "${cli_dir}/obj.txt")
+vtp_cli_test(ply_input 0 "${cli_dir}/ply.txt" "" LINES 4 VALUES "1=1"
+             "${cli_data}/tetrahedron.ply" --output "${cli_dir}/ply.txt")
+vtp_cli_test(gocad_input 0 "${cli_dir}/ts.txt" "" LINES 4 VALUES "1=1"
+             "${cli_data}/tetrahedron.ts" --output "${cli_dir}/ts.txt")
 
 # Outputs by file name: text (a file, or - for stdout), PLY, PNG.
 vtp_cli_test(output_stdout 0 "-" "" --output -)
