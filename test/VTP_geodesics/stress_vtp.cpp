@@ -29,8 +29,8 @@
 #include "vtp_random_meshes.h"
 
 #include <CGAL/VTP_geodesics.h>
-#include <CGAL/VTP_geodesics/internal/tools/midpoint_subdivision.h>
-#include <CGAL/VTP_geodesics/internal/tools/shortest_path_reference.h>
+#include <vtp_tools/midpoint_subdivision.h>
+#include <vtp_tools/shortest_path_reference.h>
 
 #include <CGAL/IO/OFF.h>
 
@@ -193,7 +193,7 @@ std::vector<Inserted_vertex> insert_degeneracies(Polygon_soup& soup, Polygon_sou
 // distance of that vertex).
 std::vector<double> reference_distances(const Case& c, Vertex_index s)
 {
-  using CGAL::VTP_geodesics::internal::shortest_path_reference_distances;
+  using vtp_tools::shortest_path_reference_distances;
   if(c.inserted.empty())
     return shortest_path_reference_distances(c.mesh, s);
   std::vector<double> d = shortest_path_reference_distances(c.reference_mesh, s);
@@ -417,8 +417,8 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
       {
         // CGAL itself errs on some meshes: tell whether it agrees on the subdivided mesh (same surface)
         Surface_mesh fine = c.mesh;
-        CGAL::VTP_geodesics::internal::midpoint_subdivide(fine, 1);
-        std::vector<double> fine_reference = CGAL::VTP_geodesics::internal::shortest_path_reference_distances(fine, s);
+        vtp_tools::midpoint_subdivide(fine, 1);
+        std::vector<double> fine_reference = vtp_tools::shortest_path_reference_distances(fine, s);
         fine_reference.resize(reference.size());
         std::cout << "  CGAL on the midpoint-subdivided mesh "
                   << (compare(d, fine_reference, std::size_t(s)).ok() ? "agrees with " : "disagrees with ") << method
