@@ -110,26 +110,37 @@ const std::vector<Option>& option_table()
 {
   static const std::vector<Option> table = {
     { "--source", "V[,V...]",
-      "source vertices: indices in file order, separated by commas (default:\n"
-      "0 when no --source-point is given); may be repeated (the lists are\n"
-      "joined). The distance of a vertex is to its nearest source",
+      "source vertices: indices in file order, separated by commas\n"
+      "(default: 0, unless --source-point is given); may be repeated\n"
+      "(the lists are joined). The distance of a vertex is to its\n"
+      "nearest source",
       [](Arguments& a, const std::string& n, const std::string& v) { append(a.sources, parse_index_list(n, v)); } },
     { "--source-point", "X,Y,Z",
-      "adds as a source the point of the surface nearest to (X,Y,Z) (located\n"
-      "with CGAL::Polygon_mesh_processing::locate_with_AABB_tree); may be\n"
-      "repeated",
+      "adds as a source the point of the surface nearest to (X,Y,Z),\n"
+      "located with CGAL's locate_with_AABB_tree; may be repeated",
       [](Arguments& a, const std::string& n, const std::string& v) { a.source_points.push_back(parse_point(n, v)); } },
+    { "--output", "FILE",
+      "write the distances; the format follows the extension of FILE:\n"
+      "  .ply: the mesh as read (file vertex order) with per-vertex\n"
+      "        properties 'distance' (double, inf if unreachable),\n"
+      "        with several sources 'source' (int, as --labels), and\n"
+      "        red/green/blue colours (viridis; grey: unreachable),\n"
+      "        binary little-endian\n"
+      "  anything else (.txt): one distance per line, in file vertex\n"
+      "        order (shortest text that reads back exactly; \"inf\" if\n"
+      "        unreachable)\n"
+      "  -: the text format on standard output",
+      [](Arguments& a, const std::string& n, const std::string& v) { a.output = file_name(n, v); } },
     { "--labels", "FILE",
       "write, one line per vertex of the file, the index of its nearest\n"
-      "source (0-based, in the order the sources were given: the --source\n"
-      "vertices first, then each --source-point), or -1 if no source\n"
-      "reaches it (or it lies beyond --max-distance, or is not final with\n"
-      "--target)",
+      "source (0-based, in the order the sources were given: the\n"
+      "--source vertices first, then each --source-point), or -1 where\n"
+      "the distance is inf",
       [](Arguments& a, const std::string& n, const std::string& v) { a.labels = file_name(n, v); } },
     { "--max-distance", "R",
-      "distance limit (>= 0): every vertex at distance <= R gets its exact\n"
-      "distance, every other vertex inf (as if unreachable); the work done\n"
-      "is that of the region within R",
+      "distance limit (>= 0): every vertex at distance <= R gets its\n"
+      "exact distance, every other vertex inf (as if unreachable); the\n"
+      "propagation stops there, its work is that of the region within R",
       [](Arguments& a, const std::string& n, const std::string& v) {
         a.max_distance = parse_double(n, v);
         if(!(a.max_distance >= 0.))
@@ -137,46 +148,40 @@ const std::vector<Option>& option_table()
         a.has_max_distance = true;
       } },
     { "--target", "V[,V...]",
-      "target vertices (indices in file order; may be repeated): the\n"
-      "propagation stops as soon as the distance of every target is final;\n"
-      "--output then has the exact distance where it is final, inf elsewhere",
+      "target vertices (file order; may be repeated): the propagation\n"
+      "stops as soon as the distance of every target is final; the\n"
+      "other outputs then have the exact distance where it is final,\n"
+      "inf elsewhere",
       [](Arguments& a, const std::string& n, const std::string& v) { append(a.targets, parse_index_list(n, v)); } },
     { "--target-point", "X,Y,Z",
-      "adds as a target the point of the surface nearest to (X,Y,Z) (its exact\n"
-      "distance, inside its face); may be repeated",
+      "adds as a target the point of the surface nearest to (X,Y,Z)\n"
+      "(its exact distance, inside its face); may be repeated",
       [](Arguments& a, const std::string& n, const std::string& v) { a.target_points.push_back(parse_point(n, v)); } },
     { "--target-output", "FILE",
-      "write the distance of each target, one per line, in the order: the\n"
-      "--target vertices in their list order, then each --target-point;\n"
-      "the text format of --output (inf if unreachable or beyond\n"
-      "--max-distance); - for standard output",
+      "write the distance of each target, one per line, in this order:\n"
+      "the --target vertices in their list order, then each\n"
+      "--target-point; the text of --output (inf if unreachable or\n"
+      "beyond --max-distance); - for standard output",
       [](Arguments& a, const std::string& n, const std::string& v) { a.target_output = file_name(n, v); } },
     { "--path-to", "V[,V...]",
-      "geodesic path from vertex V (file order) to its nearest source; may\n"
-      "be repeated. A vertex that no source reaches is an error",
+      "geodesic path from vertex V (file order) back to its nearest\n"
+      "source; may be repeated",
       [](Arguments& a, const std::string& n, const std::string& v) { append(a.path_to, parse_index_list(n, v)); } },
     { "--path-to-point", "X,Y,Z",
-      "geodesic path from the point of the surface nearest to (X,Y,Z) to its\n"
-      "nearest source; may be repeated",
+      "geodesic path from the point of the surface nearest to (X,Y,Z)\n"
+      "back to its nearest source; may be repeated",
       [](Arguments& a, const std::string& n, const std::string& v) { a.path_to_points.push_back(parse_point(n, v)); } },
     { "--path-output", "FILE",
-      "write the paths (the --path-to vertices in their list order, then each\n"
-      "--path-to-point), from the target to the source, by file name:\n"
-      "  .obj: OBJ 'v' lines (the points of all paths) and one 'l' line per\n"
-      "        path (a path of one point: 'l i i')\n"
-      "  anything else: CGAL's polylines text, one path per line:\n"
+      "write the paths (the --path-to vertices in their list order, then\n"
+      "each --path-to-point), from the target to the source; by name:\n"
+      "  .obj: OBJ 'v' lines (the points of all paths), then one 'l'\n"
+      "        line per path (a path of one point: 'l i i')\n"
+      "  anything else: CGAL's polylines text, one path per line,\n"
       "        N x1 y1 z1 ... xN yN zN (shortest text that reads back\n"
-      "        exactly); a path to a source itself is the single point",
+      "        exactly)\n"
+      "A path to a source itself is the single point. A vertex or point\n"
+      "that no source reaches (or beyond --max-distance) is an error",
       [](Arguments& a, const std::string& n, const std::string& v) { a.path_output = file_name(n, v); } },
-    { "--output", "FILE",
-      "write the distances; the format follows the extension of FILE:\n"
-      "  .ply: the mesh as read (file vertex order) with per-vertex properties\n"
-      "        'distance' (double, inf if unreachable) and red/green/blue colours\n"
-      "        (viridis; grey: unreachable), binary little-endian\n"
-      "  anything else (.txt): one distance per line, in file vertex order\n"
-      "        (shortest text that reads back exactly; \"inf\" if unreachable)\n"
-      "  -: the text format on standard output",
-      [](Arguments& a, const std::string& n, const std::string& v) { a.output = file_name(n, v); } },
     { "--picture", "FILE",
       "draw the distances as a PNG picture: the mesh coloured by distance\n"
       "(viridis), shaded, with isolines, a colour bar, the sources marked\n"
