@@ -229,6 +229,13 @@ vtp_cli_test(source_points_check_cgal 0 "${cli_dir}/points_cgal.txt" "${cli_dir}
              JSON_MATCH "\"max_rel_diff\": (0|[0-9.]+e-(1[0-9]|[2-9][0-9]))[,}] && \"mismatched_infinities\": 0[,}]"
              --source-point ${point_c} --source-point ${point_b} --check-cgal
              --output "${cli_dir}/points_cgal.txt" --stats-json "${cli_dir}/points_cgal.json")
+#   the point nearest to (0.5,0.5,0.5): PMP::locate puts it 2.5e-16 inside a face, next to an edge (the library
+#   takes it on the edge; CGAL's method takes it as given, and is right there)
+vtp_cli_test(source_point_near_edge_check_cgal 0 "${cli_dir}/near_edge.txt" "${cli_dir}/near_edge.json"
+             SOURCE_LINE none
+             JSON_MATCH "\"max_rel_diff\": (0|[0-9.]+e-(1[0-9]|[2-9][0-9]))[,}] && \"mismatched_infinities\": 0[,}]"
+             --source-point 0.5,0.5,0.5 --check-cgal
+             --output "${cli_dir}/near_edge.txt" --stats-json "${cli_dir}/near_edge.json")
 if(TARGET CGAL::VTP_geodesics_OpenMP_support)
   vtp_cli_test(several_sources_pvtp 0 "${several}.p.txt" ""
                --method pvtp --threads 2 --source 0,1000,2000 --source-point ${point_a}

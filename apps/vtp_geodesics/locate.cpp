@@ -42,11 +42,8 @@ Located_point Point_locator::locate(const std::array<double, 3>& p, const std::s
   const vtp_tools::Point_3 query(p[0], p[1], p[2]);
   const PMP::Face_location<vtp_tools::Mesh, double> l = PMP::locate_with_AABB_tree(query, m_tree->tree, m_mesh);
   // PMP::locate gives coordinates that may be off by a few ulps (slightly negative, sum not exactly 1; a point on
-  // an edge may come out 1e-16 inside the face); on a degenerate face, none at all. Coordinates below
-  // `snap` are set to 0: the point moves onto the edge or vertex by at most `snap` times the size of the face.
-  // (The library's distances from a point within about 1e-13 of an edge are not reliable: its exact edge
-  // points are, and so are points 3e-13 or more inside.)
-  const double snap = 1e-11;
+  // an edge may come out 1e-16 inside the face, which the library takes as the edge point); on a degenerate
+  // face, none at all.
   std::array<double, 3> b = l.second;
   double sum = 0.;
   bool finite = true;
@@ -60,10 +57,7 @@ Located_point Point_locator::locate(const std::array<double, 3>& p, const std::s
                      + vtp_tools::double_to_string(p[1]) + "," + vtp_tools::double_to_string(p[2]) + " of " + option
                      + " on the surface (its nearest face is degenerate)");
   for(double& x : b)
-    x = x < snap ? 0. : x;
-  sum = b[0] + b[1] + b[2];
-  for(double& x : b)
-    x /= sum;
+    x = (std::max)(0., x) / sum;
   Located_point r;
   r.location = Face_location(l.first, b);
   const vtp_tools::Mesh::Halfedge_index h = m_mesh.halfedge(l.first);
