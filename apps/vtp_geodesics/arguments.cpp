@@ -46,6 +46,48 @@ double parse_double(const std::string& option, const std::string& s)
   return v;
 }
 
+// "I,J,K": a non-empty list of indices.
+std::vector<std::size_t> parse_index_list(const std::string& option, const std::string& s)
+{
+  std::vector<std::size_t> r;
+  std::string::size_type begin = 0;
+  for(;;)
+  {
+    const std::string::size_type end = s.find(',', begin);
+    const std::string item = s.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+    if(item.empty())
+      throw Tool_error("invalid list '" + s + "' for " + option + ": empty item (expected indices separated by commas, "
+                       "e.g. 0,17,42)");
+    r.push_back(parse_index(option, item));
+    if(end == std::string::npos)
+      return r;
+    begin = end + 1;
+  }
+}
+
+// "X,Y,Z": three finite numbers.
+std::array<double, 3> parse_point(const std::string& option, const std::string& s)
+{
+  std::array<double, 3> p = { { 0., 0., 0. } };
+  std::string::size_type begin = 0;
+  for(int k = 0; k < 3; ++k)
+  {
+    const std::string::size_type end = s.find(',', begin);
+    if((k < 2) != (end != std::string::npos))
+      throw Tool_error("invalid value '" + s + "' for " + option + " (expected three numbers X,Y,Z)");
+    p[k] = parse_double(option, s.substr(begin, end == std::string::npos ? std::string::npos : end - begin));
+    if(!std::isfinite(p[k]))
+      throw Tool_error("invalid value '" + s + "' for " + option + " (expected finite numbers)");
+    begin = end + 1;
+  }
+  return p;
+}
+
+void append(std::vector<std::size_t>& list, const std::vector<std::size_t>& more)
+{
+  list.insert(list.end(), more.begin(), more.end());
+}
+
 std::string file_name(const std::string& option, const std::string& s)
 {
   if(s.empty())
@@ -67,20 +109,83 @@ std::string methods_help()
 const std::vector<Option>& option_table()
 {
   static const std::vector<Option> table = {
-    { "--source", "V", "index of the source vertex, in file order (default: 0)",
-      [](Arguments& a, const std::string& n, const std::string& v) { a.source = parse_index(n, v); } },
+    { "--source", "V[,V...]",
+      "source vertices: indices in file order, separated by commas\n"
+      "(default: 0, unless --source-point is given); may be repeated\n"
+      "(the lists are joined). The distance of a vertex is to its\n"
+      "nearest source",
+      [](Arguments& a, const std::string& n, const std::string& v) { append(a.sources, parse_index_list(n, v)); } },
+    { "--source-point", "X,Y,Z",
+      "adds as a source the point of the surface nearest to (X,Y,Z),\n"
+      "located with CGAL's locate_with_AABB_tree; may be repeated",
+      [](Arguments& a, const std::string& n, const std::string& v) { a.source_points.push_back(parse_point(n, v)); } },
     { "--output", "FILE",
       "write the distances; the format follows the extension of FILE:\n"
-      "  .ply: the mesh as read (file vertex order) with per-vertex properties\n"
-      "        'distance' (double, inf if unreachable) and red/green/blue colours\n"
-      "        (viridis; grey: unreachable), binary little-endian\n"
-      "  anything else (.txt): one distance per line, in file vertex order\n"
-      "        (shortest text that reads back exactly; \"inf\" if unreachable)\n"
+      "  .ply: the mesh as read (file vertex order) with per-vertex\n"
+      "        properties 'distance' (double, inf if unreachable),\n"
+      "        with several sources 'source' (int, as --labels), and\n"
+      "        red/green/blue colours (viridis; grey: unreachable),\n"
+      "        binary little-endian\n"
+      "  anything else (.txt): one distance per line, in file vertex\n"
+      "        order (shortest text that reads back exactly; \"inf\" if\n"
+      "        unreachable)\n"
       "  -: the text format on standard output",
       [](Arguments& a, const std::string& n, const std::string& v) { a.output = file_name(n, v); } },
+    { "--labels", "FILE",
+      "write, one line per vertex of the file, the index of its nearest\n"
+      "source (0-based, in the order the sources were given: the\n"
+      "--source vertices first, then each --source-point), or -1 where\n"
+      "the distance is inf",
+      [](Arguments& a, const std::string& n, const std::string& v) { a.labels = file_name(n, v); } },
+    { "--max-distance", "R",
+      "distance limit (>= 0): every vertex at distance <= R gets its\n"
+      "exact distance, every other vertex inf (as if unreachable); the\n"
+      "propagation stops there, its work is that of the region within R",
+      [](Arguments& a, const std::string& n, const std::string& v) {
+        a.max_distance = parse_double(n, v);
+        if(!(a.max_distance >= 0.))
+          throw Tool_error(n + " must be >= 0");
+        a.has_max_distance = true;
+      } },
+    { "--target", "V[,V...]",
+      "target vertices (file order; may be repeated): the propagation\n"
+      "stops as soon as the distance of every target is final; the\n"
+      "other outputs then have the exact distance where it is final,\n"
+      "inf elsewhere",
+      [](Arguments& a, const std::string& n, const std::string& v) { append(a.targets, parse_index_list(n, v)); } },
+    { "--target-point", "X,Y,Z",
+      "adds as a target the point of the surface nearest to (X,Y,Z)\n"
+      "(its exact distance, inside its face); may be repeated",
+      [](Arguments& a, const std::string& n, const std::string& v) { a.target_points.push_back(parse_point(n, v)); } },
+    { "--target-output", "FILE",
+      "write the distance of each target, one per line, in this order:\n"
+      "the --target vertices in their list order, then each\n"
+      "--target-point; the text of --output (inf if unreachable or\n"
+      "beyond --max-distance); - for standard output",
+      [](Arguments& a, const std::string& n, const std::string& v) { a.target_output = file_name(n, v); } },
+    { "--path-to", "V[,V...]",
+      "geodesic path from vertex V (file order) back to its nearest\n"
+      "source; may be repeated",
+      [](Arguments& a, const std::string& n, const std::string& v) { append(a.path_to, parse_index_list(n, v)); } },
+    { "--path-to-point", "X,Y,Z",
+      "geodesic path from the point of the surface nearest to (X,Y,Z)\n"
+      "back to its nearest source; may be repeated",
+      [](Arguments& a, const std::string& n, const std::string& v) { a.path_to_points.push_back(parse_point(n, v)); } },
+    { "--path-output", "FILE",
+      "write the paths (the --path-to vertices in their list order, then\n"
+      "each --path-to-point), from the target to the source; by name:\n"
+      "  .obj: OBJ 'v' lines (the points of all paths), then one 'l'\n"
+      "        line per path (a path of one point: 'l i i')\n"
+      "  anything else: CGAL's polylines text, one path per line,\n"
+      "        N x1 y1 z1 ... xN yN zN (shortest text that reads back\n"
+      "        exactly)\n"
+      "A path to a source itself is the single point. A vertex or point\n"
+      "that no source reaches (or beyond --max-distance) is an error",
+      [](Arguments& a, const std::string& n, const std::string& v) { a.path_output = file_name(n, v); } },
     { "--picture", "FILE",
       "draw the distances as a PNG picture: the mesh coloured by distance\n"
-      "(viridis), shaded, with isolines, a colour bar and the source marked",
+      "(viridis), shaded, with isolines, a colour bar, the sources marked\n"
+      "and the paths drawn",
       [](Arguments& a, const std::string& n, const std::string& v) { a.picture = file_name(n, v); } },
     { "--isolines", "N", "about N isolines on the picture, at round distances (default: 10;\n0: none)",
       [](Arguments& a, const std::string& n, const std::string& v) {
@@ -93,17 +198,7 @@ const std::vector<Option>& option_table()
       "viewing direction of the picture (default: along the shortest side\n"
       "of the bounding box)",
       [](Arguments& a, const std::string& n, const std::string& v) {
-        std::string::size_type begin = 0;
-        for(int k = 0; k < 3; ++k)
-        {
-          const std::string::size_type end = v.find(',', begin);
-          if((k < 2) != (end != std::string::npos))
-            throw Tool_error("invalid value '" + v + "' for " + n + " (expected three numbers X,Y,Z)");
-          a.view[k] = parse_double(n, v.substr(begin, end == std::string::npos ? std::string::npos : end - begin));
-          if(!std::isfinite(a.view[k]))
-            throw Tool_error("invalid value '" + v + "' for " + n + " (expected finite numbers)");
-          begin = end + 1;
-        }
+        a.view = parse_point(n, v);
         if(a.view[0] == 0. && a.view[1] == 0. && a.view[2] == 0.)
           throw Tool_error("the direction given to " + n + " is zero");
         a.has_view = true;
@@ -111,8 +206,10 @@ const std::vector<Option>& option_table()
     { "--stats-json", "FILE|-", "write statistics as one JSON object to FILE, or to stdout with \"-\"",
       [](Arguments& a, const std::string& n, const std::string& v) { a.stats_json = file_name(n, v); } },
     { "--check-cgal", nullptr,
-      "also run CGAL::Surface_mesh_shortest_path from the same source and\n"
-      "report the largest absolute and relative differences",
+      "also run CGAL::Surface_mesh_shortest_path from the same sources and\n"
+      "report the largest absolute and relative differences (with\n"
+      "--max-distance, its distances beyond the limit count as inf; with\n"
+      "--target, only the vertices whose distance is final are compared)",
       [](Arguments& a, const std::string&, const std::string&) { a.check_cgal = true; } },
     { "--method", "M", nullptr, // help made from the table of methods in print_usage()
       [](Arguments& a, const std::string&, const std::string& v) { a.method = v; } },
@@ -167,10 +264,17 @@ void check_arguments(const Arguments& a)
     throw Tool_error("unknown method '" + a.method + "' (expected " + vtp_tools::method_names() + ")");
   if((a.has_lambda || a.has_lambda_g) && !m->approximate)
     throw Tool_error("--lambda and --lambda-g need --method avtp or pavtp");
-  const std::string* files[] = { &a.output, &a.stats_json, &a.picture };
-  const char* names[] = { "--output", "--stats-json", "--picture" };
-  for(int i = 0; i < 3; ++i)
-    for(int j = i + 1; j < 3; ++j)
+  if(!a.target_output.empty() && !a.has_targets())
+    throw Tool_error("--target-output needs --target or --target-point");
+  if(!a.path_output.empty() && !a.has_paths())
+    throw Tool_error("--path-output needs --path-to or --path-to-point");
+  if(a.has_paths() && a.path_output.empty() && a.picture.empty())
+    throw Tool_error("--path-to and --path-to-point need --path-output (or --picture, which draws the paths)");
+  const std::string* files[] = { &a.output, &a.stats_json, &a.picture, &a.labels, &a.target_output, &a.path_output };
+  const char* names[] = { "--output", "--stats-json", "--picture", "--labels", "--target-output", "--path-output" };
+  const int n = static_cast<int>(sizeof(names) / sizeof(names[0]));
+  for(int i = 0; i < n; ++i)
+    for(int j = i + 1; j < n; ++j)
       if(!files[i]->empty() && *files[i] == *files[j])
         throw Tool_error(std::string(names[i]) + " and " + names[j] + " must name different files");
 }
@@ -223,6 +327,8 @@ Arguments parse_arguments(int argc, char** argv)
       has_mesh = true;
     }
   }
+  if(a.sources.empty() && a.source_points.empty())
+    a.sources.push_back(0);
   if(!a.help)
     check_arguments(a);
   return a;
@@ -232,10 +338,12 @@ void print_usage(std::ostream& os, const std::string& default_mesh)
 {
   os << "usage: vtp_geodesics [MESH] [options]\n"
         "\n"
-        "Computes exact geodesic distances from one source vertex to all vertices of a triangle mesh\n"
-        "by vertex-oriented triangle propagation (VTP).\n"
+        "Computes exact geodesic distances from sources (vertices or points of the surface) to all\n"
+        "vertices of a triangle mesh by vertex-oriented triangle propagation (VTP): the distance of a\n"
+        "vertex is its distance to the nearest source. Optionally: the nearest source of each vertex,\n"
+        "a distance limit, distances at targets, and geodesic paths.\n"
         "\n";
-  const std::size_t column = 23;
+  const std::size_t column = 25;
   auto item = [&](const std::string& left, const std::string& help) {
     std::string line = "  " + left;
     line += (line.size() + 1 < column) ? std::string(column - line.size(), ' ') : std::string(" ");
@@ -267,9 +375,12 @@ void print_usage(std::ostream& os, const std::string& default_mesh)
         "    is cut at non-manifold vertices and edges, which duplicates their vertices.\n"
         "The distances are then computed on the repaired surface (a shortest path does not go from\n"
         "one side of a cut to the other) and mapped back to the vertices of the file: a duplicated\n"
-        "vertex gets the smallest distance over its copies (and, as the source, all its copies are\n"
-        "sources), merged points share their distance, and a vertex left in no face is unreachable\n"
-        "(\"inf\"). Outputs always have one value per vertex of the file, in file order.\n"
+        "vertex gets the smallest distance over its copies (and the nearest source of that copy;\n"
+        "as a source or a target, all its copies are; a path starts from its nearest copy), merged\n"
+        "points share their distance, and a vertex left in no face is unreachable (\"inf\", label\n"
+        "-1) unless it is a source itself. Points (--source-point, --target-point, --path-to-point)\n"
+        "are located on the repaired surface. Outputs always have one value per vertex of the\n"
+        "file, in file order.\n"
         "Input that cannot be repaired (no face left, faces that cannot be triangulated, bad\n"
         "indices, non-finite coordinates) is refused.\n"
         "\n"
@@ -277,9 +388,10 @@ void print_usage(std::ostream& os, const std::string& default_mesh)
         "in the same folder, then renamed over the target (a symbolic link is followed and stays);\n"
         "standard output (-, /dev/stdout), pipes and devices are written directly.\n"
         "\n"
-        "Without --output and --stats-json, a short summary is printed. On error, one line\n"
-        "\"vtp_geodesics: error: ...\" is printed on stderr, no output file is written, and the\n"
-        "exit code is 2.\n";
+        "Without --output and --stats-json, a short summary is printed. On error (a bad index or\n"
+        "list, a point that cannot be located, a path to a vertex or point that no source reaches\n"
+        "or that lies beyond --max-distance, ...), one line \"vtp_geodesics: error: ...\" is\n"
+        "printed on stderr, no output file is written, and the exit code is 2.\n";
 }
 
 } // namespace vtp_geodesics_app

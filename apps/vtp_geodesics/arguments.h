@@ -33,7 +33,21 @@ struct Tool_error : std::runtime_error
 struct Arguments
 {
   std::string mesh;                       // empty: the default mesh
-  std::size_t source = 0;                 // source vertex, in file order
+  // Sources: the vertices of --source (file order indices), then the points of --source-point; vertex 0 if
+  // neither is given. Their order numbers the sources (the labels).
+  std::vector<std::size_t> sources;
+  std::vector<std::array<double, 3> > source_points;
+  std::string labels;                     // empty: none
+  double max_distance = std::numeric_limits<double>::infinity();
+  bool has_max_distance = false;
+  // Targets: --target vertices, then --target-point points (the order of --target-output).
+  std::vector<std::size_t> targets;
+  std::vector<std::array<double, 3> > target_points;
+  std::string target_output;              // empty: none
+  // Paths: --path-to vertices, then --path-to-point points (the order of --path-output).
+  std::vector<std::size_t> path_to;
+  std::vector<std::array<double, 3> > path_to_points;
+  std::string path_output;                // empty: none
   std::string output;                     // empty: none; "-": standard output
   std::string stats_json;                 // empty: none; "-": standard output
   std::string picture;                    // empty: none
@@ -49,6 +63,10 @@ struct Arguments
   double lambda_g = 1.0;
   bool has_lambda_g = false;
   bool help = false;
+
+  std::size_t number_of_sources() const { return sources.size() + source_points.size(); }
+  bool has_targets() const { return !targets.empty() || !target_points.empty(); }
+  bool has_paths() const { return !path_to.empty() || !path_to_points.empty(); }
 };
 
 struct Option

@@ -9,12 +9,15 @@
 
 // vtp_geodesics: command-line front end of the VTP_geodesics package.
 //
-//   vtp_geodesics [MESH] [--source V] [--output FILE] [--picture FILE.png] [--stats-json FILE|-] ...
+//   vtp_geodesics [MESH] [--source V[,V...]] [--source-point X,Y,Z] [--output FILE] [--picture FILE.png] ...
 //
-// Computes the geodesic distances from one source vertex to all vertices of a triangle mesh, and writes them
-// in the vertex order of the file. Run `vtp_geodesics --help` for details. The program is split by role:
+// Computes the geodesic distances from sources (vertices, points of the surface) to all vertices of a triangle
+// mesh, and writes them in the vertex order of the file; optionally the nearest source of each vertex, a
+// distance limit, distances at targets, geodesic paths. Run `vtp_geodesics --help` for details. The program is
+// split by role:
 //   arguments.cpp   the command line (one table of options)
 //   vtp_tools/read_mesh.h (apps/common)   reading and repair
+//   locate.cpp      points of the command line located on the mesh (AABB tree)
 //   run.cpp         the computation: every call into the library
 //   outputs.cpp     text, PLY, picture, JSON, summary
 //   main.cpp        the stages, their timing, the output files (vtp_tools/output_file.h) and the errors
@@ -22,9 +25,11 @@
 // exits with code 2.
 
 #include "arguments.h"
+#include "locate.h"
 #include "outputs.h"
 #include "run.h"
 
+#include <vtp_tools/number_format.h>
 #include <vtp_tools/output_file.h>
 #include <vtp_tools/read_mesh.h>
 #include <vtp_tools/shortest_path_reference.h>
@@ -33,10 +38,12 @@
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <iostream>
 #include <memory>
 #include <new>
@@ -117,36 +124,140 @@ int run(int argc, char** argv)
   }
   vtp_tools::Input_mesh input;
   vtp_tools::read_input_mesh(mesh_file, input);
-  if(args.source >= input.file_vertices)
-    throw Tool_error("source vertex " + std::to_string(args.source) + " is out of range (the mesh has "
-                     + std::to_string(input.file_vertices) + " vertices)");
+  auto check_vertex = [&input](std::size_t v, const char* what) {
+    if(v >= input.file_vertices)
+      throw Tool_error(std::string(what) + " vertex " + std::to_string(v) + " is out of range (the mesh has "
+                       + std::to_string(input.file_vertices) + " vertices)");
+  };
+  for(std::size_t v : args.sources)
+    check_vertex(v, "source");
+  for(std::size_t v : args.targets)
+    check_vertex(v, "target");
+  for(std::size_t v : args.path_to)
+    check_vertex(v, "path");
 
-  // The computation. The mesh vertices standing for the source: one, several if the repair duplicated it (then
-  // all are sources), none if the repair removed it (a vertex in no face: only itself is reachable).
+  // Points, located on the mesh of the computation (the repaired mesh, if the file needed a repair).
+  std::unique_ptr<Point_locator> locator;
+  if(!args.source_points.empty() || !args.target_points.empty() || !args.path_to_points.empty())
+    locator.reset(new Point_locator(input.mesh));
+  auto locate_all = [&locator](const std::vector<std::array<double, 3> >& points, const char* option) {
+    std::vector<Located_point> r;
+    for(const std::array<double, 3>& p : points)
+      r.push_back(locator->locate(p, option));
+    return r;
+  };
+  const std::vector<Located_point> source_points = locate_all(args.source_points, "--source-point");
+  const std::vector<Located_point> target_points = locate_all(args.target_points, "--target-point");
+  const std::vector<Located_point> path_points = locate_all(args.path_to_points, "--path-to-point");
+
+  // The computation. The mesh vertices standing for a file vertex: one, several if the repair duplicated it (as
+  // a source or a target, all are), none if the repair removed it (a vertex in no face: only itself is reachable).
   Run_request request;
   request.method = &method;
   request.threads = args.threads;
   request.has_lambda = args.has_lambda;
   request.lambda = args.lambda;
   request.lambda_g = args.lambda_g;
-  request.sources = input.mesh_vertices_of(args.source);
+  for(std::size_t i = 0; i < args.sources.size(); ++i)
+    for(vtp_tools::Vertex_index v : input.mesh_vertices_of(args.sources[i]))
+    {
+      request.source_vertices.push_back(v);
+      request.source_vertex_labels.push_back(i);
+    }
+  for(std::size_t j = 0; j < source_points.size(); ++j)
+  {
+    request.source_locations.push_back(source_points[j].location);
+    request.source_location_labels.push_back(args.sources.size() + j);
+  }
+  const bool several_sources = args.number_of_sources() > 1;
+  request.want_labels = several_sources || !args.labels.empty();
+  request.max_distance = args.max_distance;
+  for(std::size_t v : args.targets)
+    for(vtp_tools::Vertex_index c : input.mesh_vertices_of(v))
+      request.target_vertices.push_back(c);
+  for(const Located_point& p : target_points)
+    request.target_locations.push_back(p.location);
+  request.stop_at_targets = args.has_targets();
+  // Paths: to a source vertex itself, the single point; from a vertex the repair removed (and not a source),
+  // none; the others are traced after the run (`traced[k]`: the index of path k among them, or -1).
+  std::vector<std::vector<std::array<double, 3> > > paths(args.path_to.size() + path_points.size());
+  std::vector<long long> traced(paths.size(), -1);
+  const std::string beyond = args.has_max_distance ? " (or it lies beyond --max-distance)" : "";
+  for(std::size_t k = 0; k < args.path_to.size(); ++k)
+  {
+    const std::size_t v = args.path_to[k];
+    if(std::find(args.sources.begin(), args.sources.end(), v) != args.sources.end())
+    {
+      const vtp_tools::Point_3& p = input.file_point(v);
+      paths[k].push_back({ { p.x(), p.y(), p.z() } });
+      continue;
+    }
+    Run_request::Path path;
+    path.name = "vertex " + std::to_string(v) + " (--path-to)";
+    path.copies = input.mesh_vertices_of(v);
+    if(path.copies.empty())
+      throw Tool_error("no path from " + path.name + ": no source reaches it (it is in no face of the mesh)");
+    traced[k] = static_cast<long long>(request.paths.size());
+    request.paths.push_back(path);
+  }
+  for(std::size_t j = 0; j < path_points.size(); ++j)
+  {
+    Run_request::Path path;
+    path.name = "point " + vtp_tools::double_to_string(args.path_to_points[j][0]) + ","
+                + vtp_tools::double_to_string(args.path_to_points[j][1]) + ","
+                + vtp_tools::double_to_string(args.path_to_points[j][2]) + " (--path-to-point)";
+    path.is_point = true;
+    path.location = path_points[j].location;
+    traced[args.path_to.size() + j] = static_cast<long long>(request.paths.size());
+    request.paths.push_back(path);
+  }
   request.check_cgal = args.check_cgal;
   Run_result result = run_propagation(input.mesh, request);
+  for(std::size_t k = 0; k < paths.size(); ++k)
+    if(traced[k] >= 0)
+      paths[k] = std::move(result.paths[static_cast<std::size_t>(traced[k])]);
 
   // Results per vertex of the file.
   const bool picture = !args.picture.empty();
   std::vector<double> mesh_distances;
-  if(picture && !input.direct)
+  if((picture || request.want_labels) && !input.direct)
     mesh_distances = result.distances;
+  std::vector<int> labels;
+  if(request.want_labels)
+  {
+    labels = input.labels_on_file_vertices(result.labels, input.direct ? result.distances : mesh_distances, -1);
+  }
   std::vector<double> distances = input.on_file_vertices(std::move(result.distances));
-  distances[args.source] = 0.;
+  for(std::size_t i = args.sources.size(); i-- > 0;) // the first source at a vertex gives its label
+  {
+    distances[args.sources[i]] = 0.;
+    if(request.want_labels)
+      labels[args.sources[i]] = static_cast<int>(i);
+  }
+  std::vector<double> target_distances;
+  for(std::size_t v : args.targets)
+    target_distances.push_back(distances[v]);
+  target_distances.insert(target_distances.end(), result.target_location_distances.begin(),
+                          result.target_location_distances.end());
+
   Report report;
   report.mesh = mesh_file;
   report.reader = input.reader;
   report.repairs = input.repairs.summary();
   report.vertices = input.file_vertices;
   report.faces = input.file_faces;
-  report.source = args.source;
+  report.sources = args.number_of_sources();
+  report.single_vertex_source = args.number_of_sources() == 1 && args.sources.size() == 1;
+  report.source = args.sources.empty() ? 0 : args.sources.front();
+  for(std::size_t i = 0; i < args.sources.size(); ++i)
+    report.sources_text += (i == 0 ? "" : ", ") + std::to_string(args.sources[i]);
+  if(!args.source_points.empty())
+    report.sources_text += (args.sources.empty() ? "" : " and ") + std::to_string(args.source_points.size())
+                           + (args.source_points.size() == 1 ? " surface point" : " surface points");
+  report.has_max_distance = args.has_max_distance;
+  report.max_distance_limit = args.max_distance;
+  report.targets = target_distances.size();
+  report.paths = paths.size();
   report.run = &result;
   report.read_seconds = input.read_seconds;
   report.repair_seconds = input.repair_seconds;
@@ -158,54 +269,84 @@ int run(int argc, char** argv)
     }
   if(args.check_cgal)
   {
-    const std::vector<double> reference = input.on_file_vertices(std::move(result.reference));
-    std::vector<double> reference_on_file = reference;
-    reference_on_file[args.source] = 0.;
-    report.comparison = vtp_tools::compare_distances(distances, reference_on_file);
+    // Compared where the result is defined: within the distance limit, and (with targets) where it is final.
+    std::vector<double> reference = input.on_file_vertices(std::move(result.reference));
+    for(std::size_t v : args.sources)
+      reference[v] = 0.;
+    for(std::size_t i = 0; i < reference.size(); ++i)
+      if(reference[i] > args.max_distance || (args.has_targets() && !std::isfinite(distances[i])))
+        reference[i] = std::numeric_limits<double>::infinity();
+    report.comparison = vtp_tools::compare_distances(distances, reference);
     report.checked = true;
   }
 
   // Outputs: every file is written completely (regular files to a temporary file), and only then are they
   // renamed over their targets.
   const Clock::time_point write_start = Clock::now();
-  std::unique_ptr<vtp_tools::Output_file> output_file, picture_file, json_file;
+  std::vector<std::unique_ptr<vtp_tools::Output_file> > files;
+  auto open_output = [&files](const std::string& name) -> vtp_tools::Output_file& {
+    files.emplace_back(new vtp_tools::Output_file(name));
+    return *files.back();
+  };
   if(!args.output.empty())
   {
-    output_file.reset(new vtp_tools::Output_file(args.output));
-    write_distances(output_file->stream(), distance_format(args.output), input, distances, nullptr,
+    vtp_tools::Output_file& f = open_output(args.output);
+    write_distances(f.stream(), distance_format(args.output), input, distances, several_sources ? &labels : nullptr,
                     report.max_distance);
-    output_file->close();
+    f.close();
+  }
+  if(!args.labels.empty())
+  {
+    vtp_tools::Output_file& f = open_output(args.labels);
+    write_labels(f.stream(), labels);
+    f.close();
+  }
+  if(!args.target_output.empty())
+  {
+    vtp_tools::Output_file& f = open_output(args.target_output);
+    vtp_tools::write_values_text(f.stream(), target_distances);
+    f.close();
+  }
+  if(!args.path_output.empty())
+  {
+    vtp_tools::Output_file& f = open_output(args.path_output);
+    write_paths(f.stream(), path_format(args.path_output), paths);
+    f.close();
   }
   if(picture)
   {
-    picture_file.reset(new vtp_tools::Output_file(args.picture));
+    vtp_tools::Output_file& f = open_output(args.picture);
     Picture_request p;
     p.isolines = args.isolines;
     p.has_view = args.has_view;
     p.view = args.view;
-    for(vtp_tools::Vertex_index v : request.sources)
-      p.source_vertices.push_back(static_cast<std::size_t>(v));
-    write_picture(picture_file->stream(), input.mesh, input.direct ? distances : mesh_distances, report.max_distance,
-                  p);
-    picture_file->close();
+    for(std::size_t v : args.sources)
+    {
+      const vtp_tools::Point_3& q = input.file_point(v);
+      p.markers.push_back({ { q.x(), q.y(), q.z() } });
+    }
+    for(const Located_point& q : source_points)
+      p.markers.push_back(q.point);
+    p.polylines = paths;
+    write_picture(f.stream(), input.mesh, input.direct ? distances : mesh_distances, report.max_distance, p);
+    f.close();
   }
   report.write_seconds = seconds_since(write_start);
   report.total_seconds = seconds_since(start);
   report.peak_rss_mb = peak_rss_mb();
   if(!args.stats_json.empty())
   {
-    json_file.reset(new vtp_tools::Output_file(args.stats_json));
-    json_file->stream() << stats_json(report);
-    json_file->close();
+    vtp_tools::Output_file& f = open_output(args.stats_json);
+    f.stream() << stats_json(report);
+    f.close();
   }
-  for(vtp_tools::Output_file* f : { output_file.get(), picture_file.get(), json_file.get() })
-    if(f != nullptr)
-      f->commit();
+  for(const std::unique_ptr<vtp_tools::Output_file>& f : files)
+    f->commit();
 
   // Text for people, on standard output unless it carries data.
   bool stdout_has_data = false;
-  for(vtp_tools::Output_file* f : { output_file.get(), picture_file.get(), json_file.get() })
-    stdout_has_data = stdout_has_data || (f != nullptr && f->writes_to_stdout());
+  for(const std::unique_ptr<vtp_tools::Output_file>& f : files)
+    stdout_has_data = stdout_has_data || f->writes_to_stdout();
   if(args.output.empty() && args.stats_json.empty() && !stdout_has_data)
     print_summary(std::cout, report);
   if(report.checked)

@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <sstream>
 
 namespace vtp_geodesics_app {
@@ -40,6 +41,72 @@ void write_distances(std::ostream& os, Distance_format format, const vtp_tools::
   comment += "\ncolours: " + std::string(vtp_tools::colour_map_name()) + " from 0 to "
              + vtp_tools::double_to_string(max_distance) + "; grey: unreachable";
   vtp_tools::write_distance_ply(os, input, distances, labels, max_distance, comment);
+}
+
+void write_labels(std::ostream& os, const std::vector<int>& labels)
+{
+  std::string text;
+  text.reserve(labels.size() * 3);
+  for(int l : labels)
+  {
+    text += std::to_string(l);
+    text += '\n';
+  }
+  os.write(text.data(), static_cast<std::streamsize>(text.size()));
+}
+
+Path_format path_format(const std::string& file)
+{
+  return vtp_tools::lower_extension(file) == "obj" ? Path_format::OBJ : Path_format::POLYLINES;
+}
+
+void write_paths(std::ostream& os, Path_format format, const std::vector<std::vector<std::array<double, 3> > >& paths)
+{
+  std::string text;
+  char buffer[vtp_tools::max_double_chars];
+  auto number = [&](double x) { text.append(buffer, vtp_tools::format_double(buffer, x)); };
+  if(format == Path_format::POLYLINES)
+  {
+    for(const std::vector<std::array<double, 3> >& path : paths)
+    {
+      text += std::to_string(path.size());
+      for(const std::array<double, 3>& p : path)
+        for(double x : p)
+        {
+          text += ' ';
+          number(x);
+        }
+      text += '\n';
+    }
+  }
+  else
+  {
+    text += "# vtp_geodesics: " + std::to_string(paths.size())
+            + " geodesic paths, one 'l' element each, from the target to the source\n";
+    for(const std::vector<std::array<double, 3> >& path : paths)
+      for(const std::array<double, 3>& p : path)
+      {
+        text += 'v';
+        for(double x : p)
+        {
+          text += ' ';
+          number(x);
+        }
+        text += '\n';
+      }
+    std::size_t next = 1; // OBJ numbers vertices from 1
+    for(const std::vector<std::array<double, 3> >& path : paths)
+    {
+      text += 'l';
+      for(std::size_t k = 0; k < path.size(); ++k)
+        text += ' ' + std::to_string(next + k);
+      if(path.size() == 1)
+        text += ' ' + std::to_string(next);
+      text += '\n';
+      next += path.size();
+    }
+  }
+  os.write(text.data(), static_cast<std::streamsize>(text.size()));
 }
 
 void write_picture(std::ostream& os, const vtp_tools::Mesh& mesh, const std::vector<double>& mesh_distances,
@@ -69,11 +136,10 @@ void write_picture(std::ostream& os, const vtp_tools::Mesh& mesh, const std::vec
                                              static_cast<std::uint32_t>(mesh.target(mesh.next(h))) } };
     },
     mesh_distances, max_distance);
-  for(std::size_t v : request.source_vertices)
-  {
-    const vtp_tools::Point_3& p = mesh.point(vtp_tools::Vertex_index(static_cast<vtp_tools::Mesh::size_type>(v)));
-    picture.add_marker({ { p.x(), p.y(), p.z() } });
-  }
+  for(const std::vector<std::array<double, 3> >& line : request.polylines)
+    picture.add_polyline(line);
+  for(const std::array<double, 3>& p : request.markers)
+    picture.add_marker(p);
   picture.write_png(os);
 }
 
@@ -118,7 +184,12 @@ std::string stats_json(const Report& r)
      << ", \"mesh_faces\": " << s.mesh_faces
      << ", \"reader\": " << json_string(r.reader)
      << ", \"repairs\": " << json_string(r.repairs)
-     << ", \"source\": " << r.source
+     << ", \"sources\": " << r.sources
+     << ", \"source\": " << (r.single_vertex_source ? std::to_string(r.source) : std::string("null"))
+     << ", \"max_distance_limit\": " << (r.has_max_distance ? json_number(r.max_distance_limit) : std::string("null"))
+     << ", \"targets\": " << r.targets
+     << ", \"paths\": " << r.paths
+     << ", \"stopped_early\": " << (s.stopped_early ? "true" : "false")
      << ", \"method\": " << json_string(s.method)
      << ", \"threads\": " << s.threads
      << ", \"seconds\": " << json_number(s.propagation_seconds)
@@ -154,12 +225,13 @@ void print_summary(std::ostream& os, const Report& r)
 {
   const Run_result& s = *r.run;
   os << "mesh: " << r.mesh << "\n"
-     << "vertices: " << r.vertices << ", faces: " << r.faces << ", source: " << r.source << "\n"
+     << "vertices: " << r.vertices << ", faces: " << r.faces << (r.sources == 1 ? ", source: " : ", sources: ")
+     << r.sources_text << "\n"
      << "method: " << s.method << ", propagation: " << s.propagation_seconds
      << " s, preprocessing: " << s.preprocessing_seconds << " s, reading: " << r.read_seconds + r.repair_seconds
      << " s\n"
      << "max distance: " << r.max_distance << " (" << r.reached_vertices << " of " << r.vertices
-     << " vertices reached)\n"
+     << " vertices reached" << (s.stopped_early ? "; stopped early" : "") << ")\n"
      << "windows: " << s.windows_created << " created, " << s.windows_propagated << " propagated, peak "
      << s.peak_live_windows << " alive (" << s.peak_window_bytes << " bytes)\n";
   if(!r.repairs.empty())

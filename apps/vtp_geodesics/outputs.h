@@ -32,7 +32,13 @@ struct Report
   std::string reader;                      // which reader read it
   std::string repairs;                     // what the repair did; empty if nothing
   std::size_t vertices = 0, faces = 0;     // of the file
-  std::size_t source = 0;                  // file vertex
+  std::size_t sources = 0;                 // number of sources (vertices and points of the command line)
+  bool single_vertex_source = false;       // one source, a vertex:
+  std::size_t source = 0;                  // that vertex (file order)
+  std::string sources_text;                // for people: "0, 17, 42 and 1 surface point"
+  bool has_max_distance = false;
+  double max_distance_limit = 0.;
+  std::size_t targets = 0, paths = 0;
   std::size_t reached_vertices = 0;
   double max_distance = 0.;
   const Run_result* run = nullptr;         // statistics of the computation
@@ -52,12 +58,25 @@ Distance_format distance_format(const std::string& file);
 void write_distances(std::ostream& os, Distance_format format, const vtp_tools::Input_mesh& input,
                      const std::vector<double>& distances, const std::vector<int>* labels, double max_distance);
 
+// One value per line: the nearest source of each vertex of the file (-1: none).
+void write_labels(std::ostream& os, const std::vector<int>& labels);
+
+enum class Path_format { POLYLINES, OBJ };
+
+// The format of `--path-output FILE`: OBJ for a .obj extension, else CGAL's polylines text.
+Path_format path_format(const std::string& file);
+
+// Writes geodesic paths (each: its points, target first) as CGAL's polylines text (one path per line:
+// N x1 y1 z1 ... xN yN zN) or as OBJ ('v' lines, then one 'l' line per path; a path of one point is 'l i i').
+void write_paths(std::ostream& os, Path_format format, const std::vector<std::vector<std::array<double, 3> > >& paths);
+
 struct Picture_request
 {
   int isolines = 10;
   bool has_view = false;
   std::array<double, 3> view = { { 0., 0., -1. } };
-  std::vector<std::size_t> source_vertices; // mesh vertices to mark
+  std::vector<std::array<double, 3> > markers;                // the sources
+  std::vector<std::vector<std::array<double, 3> > > polylines; // the paths
 };
 
 // Draws the distance field on the mesh of the computation (`mesh_distances`: per mesh vertex) as a PNG picture.

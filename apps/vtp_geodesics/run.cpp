@@ -18,34 +18,65 @@
 
 #include <CGAL/property_map.h>
 
+#include <boost/property_map/property_map.hpp>
+
 #include <vtp_tools/shortest_path_reference.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <iterator>
 #include <limits>
+#include <string>
 
 namespace vtp_geodesics_app {
 
 namespace {
 
 typedef CGAL::VTP_geodesics::Geodesic_distance_solver<vtp_tools::Mesh> Solver;
+namespace VTP = CGAL::VTP_geodesics;
 
-// Runs `method` from `sources`; the distances stay in the solver (read with distances()).
+// Runs `method` from the source set of `solver`; the distances stay in the solver (read with distances()).
 template <class NamedParameters>
-void run_method(const vtp_tools::Method_info& method, Solver& solver, const std::vector<vtp_tools::Vertex_index>& sources,
-                const NamedParameters& np)
+void run_method(const vtp_tools::Method_info& method, Solver& solver, const NamedParameters& np)
 {
   const CGAL::Constant_property_map<vtp_tools::Vertex_index, double> no_map;
   if(!method.parallel)
   {
-    solver.compute<CGAL::Sequential_tag>(no_map, sources, np);
+    solver.compute<CGAL::Sequential_tag>(no_map, np);
     return;
   }
 #ifdef _OPENMP
-  solver.compute<CGAL::Parallel_tag>(no_map, sources, np);
+  solver.compute<CGAL::Parallel_tag>(no_map, np);
 #else
   throw Tool_error(std::string("method ") + method.name + " needs OpenMP, and this program was built without it");
 #endif
+}
+
+// A vertex as a face location: a corner of one of its faces (the library takes such a location as the vertex).
+Face_location location_of_vertex(const vtp_tools::Mesh& mesh, vtp_tools::Vertex_index v)
+{
+  const vtp_tools::Mesh::Halfedge_index h = mesh.halfedge(v); // a half-edge whose target is v
+  const vtp_tools::Mesh::Halfedge_index g = mesh.is_border(h) ? mesh.opposite(h) : h;
+  const vtp_tools::Mesh::Face_index f = mesh.face(g);
+  const vtp_tools::Mesh::Halfedge_index first = mesh.halfedge(f);
+  std::array<double, 3> b = { { 0., 0., 0. } };
+  if(mesh.source(first) == v)
+    b[0] = 1.;
+  else if(mesh.target(first) == v)
+    b[1] = 1.;
+  else
+    b[2] = 1.;
+  return Face_location(f, b);
+}
+
+std::vector<std::array<double, 3> > to_arrays(const std::vector<vtp_tools::Point_3>& points)
+{
+  std::vector<std::array<double, 3> > r;
+  r.reserve(points.size());
+  for(const vtp_tools::Point_3& p : points)
+    r.push_back({ { p.x(), p.y(), p.z() } });
+  return r;
 }
 
 } // namespace
@@ -57,8 +88,6 @@ Run_result run_propagation(const vtp_tools::Mesh& mesh, const Run_request& reque
   const vtp_tools::Method_info& method = *request.method;
   const double lambda = !method.approximate ? std::numeric_limits<double>::infinity()
                        : (request.has_lambda ? request.lambda : recommended_lambda());
-  const auto options = CGAL::VTP_geodesics::parameters::number_of_threads(request.threads)
-                         .lambda(lambda).lambda_g(request.lambda_g);
 
   Solver solver(mesh);
   Run_result r;
@@ -69,15 +98,65 @@ Run_result run_propagation(const vtp_tools::Mesh& mesh, const Run_request& reque
   r.mean_edge_length = solver.mean_edge_length();
   r.anisotropy = solver.anisotropy();
 
-  // The solver numbers the vertices in the order of vertices(mesh), which is the index order of a
-  // Surface_mesh without removed elements. Several sources: one run from all of them.
+  // The source set: the label of the library (the order of add_source()) maps to the label of the command line.
+  std::vector<std::size_t> label_of_source;
+  for(std::size_t i = 0; i < request.source_vertices.size(); ++i)
+  {
+    solver.add_source(request.source_vertices[i]);
+    label_of_source.push_back(request.source_vertex_labels[i]);
+  }
+  for(std::size_t i = 0; i < request.source_locations.size(); ++i)
+  {
+    solver.add_source(request.source_locations[i]);
+    label_of_source.push_back(request.source_location_labels[i]);
+  }
+  r.sources = label_of_source.size();
+
+  // The targets, all as face locations: the target vertices (but isolated ones, which no propagation reaches),
+  // the target points, then the end points of the paths (so that the run records their trace-back).
+  std::vector<Face_location> targets;
+  for(vtp_tools::Vertex_index v : request.target_vertices)
+    if(!mesh.is_isolated(v))
+      targets.push_back(location_of_vertex(mesh, v));
+  const std::size_t first_target_location = targets.size();
+  targets.insert(targets.end(), request.target_locations.begin(), request.target_locations.end());
+  for(const Run_request::Path& p : request.paths)
+  {
+    if(p.is_point)
+      targets.push_back(p.location);
+    else
+      for(vtp_tools::Vertex_index v : p.copies)
+        if(!mesh.is_isolated(v))
+          targets.push_back(location_of_vertex(mesh, v));
+  }
+
   const double infinity = std::numeric_limits<double>::infinity();
-  if(request.sources.empty())
+  std::vector<std::size_t> labels;
+  if(label_of_source.empty())
+  {
     r.distances.assign(r.mesh_vertices, infinity);
+    r.target_location_distances.assign(request.target_locations.size(), infinity);
+    if(request.want_labels)
+      r.labels.assign(r.mesh_vertices, -1);
+  }
   else
   {
-    run_method(method, solver, request.sources, options);
-    const CGAL::VTP_geodesics::Propagation_statistics& st = solver.statistics();
+    if(request.want_labels)
+      labels.assign(r.mesh_vertices, VTP::no_source);
+    const auto options = VTP::parameters::number_of_threads(request.threads)
+                           .lambda(lambda)
+                           .lambda_g(request.lambda_g)
+                           .maximum_distance(request.max_distance)
+                           .targets(targets)
+                           .stop_at_targets(request.stop_at_targets)
+                           .record_paths(!request.paths.empty());
+    if(request.want_labels)
+      run_method(method, solver,
+                 options.nearest_source_map(boost::make_iterator_property_map(labels.begin(),
+                                                                              get(boost::vertex_index, mesh))));
+    else
+      run_method(method, solver, options);
+    const VTP::Propagation_statistics& st = solver.statistics();
     r.threads = st.threads;
     r.propagation_seconds = st.seconds;
     r.windows_created = st.windows_created;
@@ -87,19 +166,56 @@ Run_result run_propagation(const vtp_tools::Mesh& mesh, const Run_request& reque
     r.vertices_processed = st.vertices_processed;
     r.pseudo_sources = st.pseudo_sources;
     r.resets = st.resets;
+    r.stopped_early = st.stopped_early;
     r.distances = solver.distances();
+    for(std::size_t i = 0; i < request.target_locations.size(); ++i)
+      r.target_location_distances.push_back(solver.target_distance(first_target_location + i));
+    if(request.want_labels)
+    {
+      r.labels.resize(r.mesh_vertices);
+      for(std::size_t i = 0; i < r.mesh_vertices; ++i)
+        r.labels[i] = labels[i] == VTP::no_source ? -1 : static_cast<int>(label_of_source[labels[i]]);
+    }
+  }
+
+  // The paths, from the trace-back recorded by the run; a vertex path from its copy nearest to a source.
+  const std::string beyond = request.max_distance < infinity ? " (or it lies beyond --max-distance)" : "";
+  for(const Run_request::Path& p : request.paths)
+  {
+    std::vector<vtp_tools::Point_3> points;
+    if(p.is_point)
+    {
+      if(label_of_source.empty())
+        throw Tool_error("no path from " + p.name + ": no source reaches it" + beyond);
+      try
+      {
+        solver.shortest_path_points(p.location, std::back_inserter(points));
+      }
+      catch(const VTP::Invalid_input_error& e)
+      {
+        throw Tool_error("no path from " + p.name + ": " + e.what());
+      }
+    }
+    else
+    {
+      CGAL_assertion(!p.copies.empty());
+      vtp_tools::Vertex_index start = p.copies.front();
+      for(vtp_tools::Vertex_index v : p.copies)
+        if(r.distances[std::size_t(v)] < r.distances[std::size_t(start)])
+          start = v;
+      if(!(r.distances[std::size_t(start)] < infinity))
+        throw Tool_error("no path from " + p.name + ": no source reaches it" + beyond);
+      solver.shortest_path_points(start, std::back_inserter(points));
+    }
+    if(points.empty())
+      throw Tool_error("no path from " + p.name + ": the library returned an empty path");
+    r.paths.push_back(to_arrays(points));
   }
 
   if(request.check_cgal)
   {
     const auto t0 = std::chrono::steady_clock::now();
-    r.reference.assign(mesh.number_of_vertices(), infinity);
-    for(vtp_tools::Vertex_index s : request.sources)
-    {
-      const std::vector<double> d = vtp_tools::shortest_path_reference_distances(mesh, s);
-      for(std::size_t j = 0; j < r.reference.size(); ++j)
-        r.reference[j] = (std::min)(r.reference[j], d[j]);
-    }
+    r.reference = vtp_tools::shortest_path_reference_distances(mesh, request.source_vertices, request.source_locations);
     r.cgal_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   return r;

@@ -13,10 +13,14 @@
 // The computation: the only part of vtp_geodesics that calls the VTP_geodesics library (run.cpp). Everything
 // it returns is plain data.
 
+#include "locate.h"
+
 #include <vtp_tools/methods.h>
 #include <vtp_tools/read_mesh.h>
 
+#include <array>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -29,13 +33,38 @@ struct Run_request
   bool has_lambda = false;                // approximate methods: reset period (default: the recommended one)
   double lambda = 0.;
   double lambda_g = 1.;                   // approximate methods: guard band
-  std::vector<vtp_tools::Vertex_index> sources; // several: the distance to the nearest one
+  // The sources: mesh vertices, then points of the surface, each with the index of the source of the command
+  // line it stands for (its label; the copies of a vertex share one). None: nothing is computed (all +inf).
+  std::vector<vtp_tools::Vertex_index> source_vertices;
+  std::vector<std::size_t> source_vertex_labels;
+  std::vector<Face_location> source_locations;
+  std::vector<std::size_t> source_location_labels;
+  bool want_labels = false;               // fill Run_result::labels
+  double max_distance = std::numeric_limits<double>::infinity();
+  // Targets: mesh vertices and points of the surface whose distance must be final when the run stops (with
+  // stop_at_targets; else the run goes on to the end).
+  std::vector<vtp_tools::Vertex_index> target_vertices;
+  std::vector<Face_location> target_locations;
+  bool stop_at_targets = true;
+  // Paths to trace after the run; their end points must be among the targets (so that the run records
+  // them). A vertex path starts at its copy nearest to a source.
+  struct Path
+  {
+    std::string name;                     // for the errors: "vertex 12 (--path-to)"
+    std::vector<vtp_tools::Vertex_index> copies; // a vertex: the mesh vertices standing for it (not empty)
+    bool is_point = false;                // else a point of the surface:
+    Face_location location;
+  };
+  std::vector<Path> paths;
   bool check_cgal = false;                // also run CGAL::Surface_mesh_shortest_path
 };
 
 struct Run_result
 {
   std::vector<double> distances;          // per mesh vertex (index order); +inf if unreachable
+  std::vector<int> labels;                // want_labels: per mesh vertex, the nearest source's label or -1
+  std::vector<double> target_location_distances; // per target location
+  std::vector<std::vector<std::array<double, 3> > > paths; // per path: its points, target first, source last
   std::vector<double> reference;          // CGAL::Surface_mesh_shortest_path's, if check_cgal
   double cgal_seconds = 0.;
   // statistics
@@ -47,9 +76,12 @@ struct Run_result
   double mean_edge_length = 0., anisotropy = 0.;
   std::size_t windows_created = 0, windows_propagated = 0, peak_live_windows = 0, peak_window_bytes = 0;
   std::size_t vertices_processed = 0, pseudo_sources = 0, resets = 0;
+  std::size_t sources = 0;                // the sources of the propagation (the copies of a vertex count)
+  bool stopped_early = false;             // at the distance limit or the targets
 };
 
-// Runs `request` on `mesh`; throws Tool_error or the library's exceptions.
+// Runs `request` on `mesh`; throws Tool_error (e.g. a path to a vertex that no source reaches) or the
+// library's exceptions.
 Run_result run_propagation(const vtp_tools::Mesh& mesh, const Run_request& request);
 
 // The lambda used by the approximate methods when none is given.

@@ -2,13 +2,14 @@
 #
 #   cmake -DEXE=<program> -DARGS="a|b|c" -DEXPECTED_EXIT=<n>
 #         [-DOUTPUT=<file>] [-DJSON=<file>] [-DEXPECTED_LINES=<n>] [-DSOURCE=<n>] [-DJSON_KEYS="k1|k2"]
-#         [-DEXPECTED_VALUES="line=text|line=text"] [-DEXPECTED_NOTE=<regex>]
+#         [-DEXPECTED_VALUES="line=text|line=text"] [-DEXPECTED_NOTE=<regex>] [-DJSON_MATCH="<regex> && <regex>"]
 #         -P run_cli_test.cmake
 #
 # ARGS, JSON_KEYS, EXPECTED_VALUES: lists separated by '|'. OUTPUT / JSON are removed before the run.
 # Exit code 0 expected: OUTPUT (if given) must exist, with EXPECTED_LINES lines if given, and
-# line SOURCE (default 0) of OUTPUT must be "0", and each listed line (0-based) must be exactly the
-# given text; JSON (if given) must exist and contain every key of JSON_KEYS. If EXPECTED_NOTE is
+# line SOURCE (default 0; "none": no such line) of OUTPUT must be "0", and each listed line (0-based) must be
+# exactly the given text; JSON (if given) must exist and contain every key of JSON_KEYS, and match each regular
+# expression of JSON_MATCH (separated by " && "). If EXPECTED_NOTE is
 # defined, stderr must be empty when it is empty, and else one line "vtp_geodesics: note: ..." whose
 # text matches the regular expression EXPECTED_NOTE.
 # Non-zero exit code expected: stderr must be one line "vtp_geodesics: error: ..." (matching the regular
@@ -22,7 +23,8 @@
 #   existing  OUTPUT is a regular file with mode 640
 # CHECK (after the run; '|'-separated): symlink (OUTPUT is still a link, its target exists), fifo (OUTPUT is
 # still a FIFO), mode640 (OUTPUT kept its mode), chardev:<path> (<path> is still a character device),
-# ply (OUTPUT is a binary PLY with the properties distance, red, green, blue), png (OUTPUT is a PNG file).
+# ply (OUTPUT is a binary PLY with the properties distance, red, green, blue), ply_source (its vertices also
+# have the property 'source'), png (OUTPUT is a PNG file).
 # Every file these tests create is in the build tree.
 
 if(NOT DEFINED EXE OR NOT DEFINED EXPECTED_EXIT)
@@ -104,9 +106,11 @@ if(EXPECTED_EXIT EQUAL 0)
       if(NOT DEFINED SOURCE)
         set(SOURCE 0)
       endif()
-      list(GET lines ${SOURCE} source_line)
-      if(NOT source_line STREQUAL "0")
-        message(FATAL_ERROR "distance of the source is '${source_line}', expected 0")
+      if(NOT SOURCE STREQUAL "none")
+        list(GET lines ${SOURCE} source_line)
+        if(NOT source_line STREQUAL "0")
+          message(FATAL_ERROR "line ${SOURCE} (the source) is '${source_line}', expected 0")
+        endif()
       endif()
       string(REPLACE "|" ";" values "${EXPECTED_VALUES}")
       foreach(value IN LISTS values)
@@ -160,7 +164,7 @@ if(EXPECTED_EXIT EQUAL 0)
         message(FATAL_ERROR "${CMAKE_MATCH_1} is no longer a character device")
       endif()
     elseif(check STREQUAL "ply")
-      file(STRINGS "${OUTPUT}" header LIMIT_COUNT 16)
+      file(STRINGS "${OUTPUT}" header LIMIT_COUNT 24)
       foreach(line IN ITEMS "ply" "format binary_little_endian 1.0" "property double distance"
                             "property uchar red" "property uchar green" "property uchar blue"
                             "property list uchar int vertex_indices" "end_header")
@@ -169,6 +173,12 @@ if(EXPECTED_EXIT EQUAL 0)
           message(FATAL_ERROR "the PLY header has no line '${line}': ${header}")
         endif()
       endforeach()
+    elseif(check STREQUAL "ply_source")
+      file(STRINGS "${OUTPUT}" header LIMIT_COUNT 24)
+      list(FIND header "property int source" found)
+      if(found EQUAL -1)
+        message(FATAL_ERROR "the PLY header has no line 'property int source': ${header}")
+      endif()
     elseif(check STREQUAL "png")
       file(READ "${OUTPUT}" signature LIMIT 8 HEX)
       if(NOT signature STREQUAL "89504e470d0a1a0a")
@@ -193,6 +203,14 @@ if(EXPECTED_EXIT EQUAL 0)
       message(FATAL_ERROR "key '${key}' missing in the JSON statistics: ${json}")
     endif()
   endforeach()
+  if(DEFINED JSON_MATCH)
+    string(REPLACE " && " ";" patterns "${JSON_MATCH}")
+    foreach(pattern IN LISTS patterns)
+      if(NOT json MATCHES "${pattern}")
+        message(FATAL_ERROR "the JSON statistics do not match '${pattern}': ${json}")
+      endif()
+    endforeach()
+  endif()
 else()
   if(NOT err MATCHES "^vtp_geodesics: error: ([^\n]+)\n$")
     message(FATAL_ERROR "stderr is not one line 'vtp_geodesics: error: ...': '${err}'")

@@ -445,7 +445,10 @@ private:
                                     m_mesh_y + (m_y1 - dot(q, m_up)) * m_scale, dot(q, m_forward) } };
   }
 
-  // Whether a point at picture position (x, y) and depth z is in front of the surface (within a tolerance).
+  // Whether a point at picture position (x, y) and depth z is in front of the surface (within a tolerance). A
+  // point on the surface has a depth between those of the samples around it, whatever the slope of the surface:
+  // it is visible unless it lies behind every sample of the 3 x 3 samples around it (background samples do not
+  // hide anything).
   bool visible(double x, double y, double z) const
   {
     const int ss = (std::max)(1, m_options.supersampling);
@@ -455,12 +458,20 @@ private:
     const int cx = static_cast<int>(std::floor(fx));
     const int cy = static_cast<int>(std::floor(fy));
     const double tolerance = 2e-3 * m_depth_range;
-    float nearest = std::numeric_limits<float>::infinity();
-    for(int j = cy - ss; j <= cy + ss; ++j)
-      for(int i = cx - ss; i <= cx + ss; ++i)
+    float farthest = -std::numeric_limits<float>::infinity();
+    bool covered = false;
+    for(int j = cy - 1; j <= cy + 1; ++j)
+      for(int i = cx - 1; i <= cx + 1; ++i)
         if(i >= 0 && j >= 0 && i < m_sw && j < m_sh)
-          nearest = (std::min)(nearest, m_depth[static_cast<std::size_t>(j) * m_sw + i]);
-    return z <= nearest + tolerance;
+        {
+          const float d = m_depth[static_cast<std::size_t>(j) * m_sw + i];
+          if(d < std::numeric_limits<float>::infinity())
+          {
+            farthest = (std::max)(farthest, d);
+            covered = true;
+          }
+        }
+    return !covered || z <= farthest + tolerance;
   }
 
   void draw_overlay()

@@ -101,17 +101,31 @@ struct Input_mesh
     return r;
   }
 
-  // Same for integer labels (e.g. the nearest source): the label of the first copy, `missing` without copy.
+  // Per-vertex labels of the mesh (e.g. the nearest source) reported on the vertices of the file: the label of
+  // the copy with the smallest distance in `per_mesh_distance` (the first such copy), `missing` without copy.
   template <class Label>
-  std::vector<Label> labels_on_file_vertices(const std::vector<Label>& per_mesh_vertex, Label missing) const
+  std::vector<Label> labels_on_file_vertices(const std::vector<Label>& per_mesh_vertex,
+                                             const std::vector<double>& per_mesh_distance, Label missing) const
   {
     if(direct)
       return per_mesh_vertex;
     std::vector<Label> r(file_vertices, missing);
     for(std::size_t i = 0; i < file_vertices; ++i)
       if(copy_begin[i] < copy_begin[i + 1])
-        r[i] = per_mesh_vertex[std::size_t(copies[copy_begin[i]])];
+      {
+        std::size_t best = std::size_t(copies[copy_begin[i]]);
+        for(std::size_t k = copy_begin[i] + 1; k < copy_begin[i + 1]; ++k)
+          if(per_mesh_distance[std::size_t(copies[k])] < per_mesh_distance[best])
+            best = std::size_t(copies[k]);
+        r[i] = per_mesh_vertex[best];
+      }
     return r;
+  }
+
+  // The point of file vertex `i`.
+  const Point_3& file_point(std::size_t i) const
+  {
+    return direct ? mesh.point(Vertex_index(static_cast<Mesh::size_type>(i))) : file_points[i];
   }
 };
 

@@ -16,10 +16,12 @@
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace vtp_tools {
@@ -90,6 +92,75 @@ shortest_path_reference_distances(const CGAL::Surface_mesh<Point>& mesh,
 }
 
 // Result of `compare_distances()`.
+// The same from several sources at once (the distance to the nearest one): mesh vertices, and points of the
+// surface given as face locations (a face and barycentric coordinates with respect to source(halfedge(f)),
+// target(halfedge(f)), target(next(halfedge(f))), as CGAL::Polygon_mesh_processing::locate gives them).
+// Vertices outside the connected components of the sources get +infinity.
+template <class Point>
+std::vector<double>
+shortest_path_reference_distances(
+  const CGAL::Surface_mesh<Point>& mesh,
+  const std::vector<typename CGAL::Surface_mesh<Point>::Vertex_index>& vertex_sources,
+  const std::vector<std::pair<typename CGAL::Surface_mesh<Point>::Face_index, std::array<double, 3> > >& point_sources)
+{
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  typedef typename Mesh::Vertex_index Vertex_index;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
+  typedef CGAL::Surface_mesh_shortest_path_traits<Kernel, Mesh> Traits;
+  typedef CGAL::Surface_mesh_shortest_path<Traits> Shortest_path;
+
+  if(mesh.has_garbage())
+    throw std::invalid_argument("shortest_path_reference_distances: the mesh has garbage");
+  const std::size_t n = static_cast<std::size_t>(mesh.number_of_vertices());
+  std::vector<double> distances(n, std::numeric_limits<double>::infinity());
+
+  // The connected components of the sources, by a breadth-first search over the edges.
+  std::vector<unsigned char> in_component(n, 0);
+  std::vector<Vertex_index> component;
+  auto reach = [&](Vertex_index v) {
+    if(!in_component[static_cast<std::size_t>(v)])
+    {
+      in_component[static_cast<std::size_t>(v)] = 1;
+      component.push_back(v);
+    }
+  };
+  for(Vertex_index s : vertex_sources)
+  {
+    if(!(static_cast<std::size_t>(s) < n) || mesh.is_removed(s))
+      throw std::invalid_argument("shortest_path_reference_distances: invalid source vertex");
+    distances[static_cast<std::size_t>(s)] = 0.;
+    if(!mesh.is_isolated(s))
+      reach(s);
+  }
+  for(const auto& l : point_sources)
+    for(Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(l.first), mesh))
+      reach(v);
+  if(component.empty())
+    return distances;
+  for(std::size_t i = 0; i < component.size(); ++i)
+    for(typename Mesh::Halfedge_index h : CGAL::halfedges_around_target(mesh.halfedge(component[i]), mesh))
+      reach(mesh.source(h));
+
+  Shortest_path shortest_path(mesh);
+  for(Vertex_index s : vertex_sources)
+    if(!mesh.is_isolated(s))
+      shortest_path.add_source_point(s);
+  for(const auto& l : point_sources)
+  {
+    typename Traits::Barycentric_coordinates b = { { l.second[0], l.second[1], l.second[2] } };
+    shortest_path.add_source_point(l.first, b);
+  }
+  shortest_path.build_sequence_tree();
+  for(Vertex_index v : component)
+  {
+    const double d = CGAL::to_double(shortest_path.shortest_distance_to_source_points(v).first);
+    distances[static_cast<std::size_t>(v)] = (d < 0. || std::isnan(d)) ? std::numeric_limits<double>::infinity() : d;
+  }
+  for(Vertex_index s : vertex_sources)
+    distances[static_cast<std::size_t>(s)] = 0.;
+  return distances;
+}
+
 struct Distance_comparison
 {
   // Largest |a[i] - b[i]| over the entries that are finite in both vectors.
