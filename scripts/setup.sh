@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs everything needed to build, test and benchmark VTP_geodesics on a fresh Debian 12
-# machine: compiler, CMake, CGAL 5.5 (header-only) and its dependencies, GoogleTest, and
-# Python with matplotlib for the benchmark plots. Safe to run again (apt-get install is idempotent).
+# machine: compiler, CMake, CGAL 5.5 (header-only) and its dependencies, GoogleTest, Python with
+# matplotlib for the benchmark plots, and for vtp_distance_matrix: HDF5 (the serial C library: all MPI
+# ranks write the one file through MPI-IO, see apps/vtp_distance_matrix/matrix_store.h), Open MPI, and
+# h5py and SciPy to read its files back in the tests. Safe to run again (apt-get install is idempotent).
 set -euo pipefail
 
 PACKAGES=(
@@ -15,6 +17,12 @@ PACKAGES=(
   libgtest-dev
   python3
   python3-matplotlib
+  libhdf5-dev
+  libopenmpi-dev
+  openmpi-bin
+  python3-h5py
+  python3-numpy
+  python3-scipy
 )
 
 if [ "$(id -u)" -eq 0 ]; then
