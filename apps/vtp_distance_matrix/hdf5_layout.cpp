@@ -39,11 +39,14 @@ private:
 };
 
 // HDF5 prints its error stack on stderr by default: the tool reports its own one-line errors.
+// HDF5's clean-up at exit is turned off (every file is closed explicitly before): after a failed
+// H5Fclose (a full disk), HDF5 1.10.8 crashes in that clean-up.
 void silence_hdf5()
 {
   static bool done = false;
   if(!done)
   {
+    H5dont_atexit();
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     done = true;
   }
