@@ -11,6 +11,7 @@
 #include <utility>
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 namespace vtp_matrix {
@@ -36,6 +37,8 @@ struct Byte_writer
   }
   void raw(const void* data, std::size_t n)
   {
+    if(n == 0)
+      return;
     const char* p = static_cast<const char*>(data);
     bytes.insert(bytes.end(), p, p + n);
   }
@@ -53,6 +56,8 @@ struct Byte_reader
   }
   void raw(void* data, std::size_t n)
   {
+    if(n == 0)
+      return;
     if(at + n > bytes.size())
       throw Tool_error("internal error: truncated message between ranks");
     std::memcpy(data, bytes.data() + at, n);
@@ -137,7 +142,37 @@ Matrix_store::Matrix_store(Job& job, const Matrix_spec& spec)
   static_assert(sizeof(Entry) == entry_bytes, "a journal entry is 32 bytes");
 }
 
-Matrix_store::~Matrix_store() = default;
+Matrix_store::~Matrix_store()
+{
+  unlock();
+}
+
+void Matrix_store::lock()
+{
+  const std::string path = m_part + ".lock";
+  m_lock_fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+  if(m_lock_fd < 0)
+    throw Tool_error("cannot create '" + path + "': " + std::strerror(errno));
+  if(::flock(m_lock_fd, LOCK_EX | LOCK_NB) != 0)
+  {
+    const int e = errno;
+    ::close(m_lock_fd);
+    m_lock_fd = -1;
+    if(e == EWOULDBLOCK)
+      throw Tool_error("another run is writing '" + m_spec.output + "' ('" + path + "' is locked)");
+    throw Tool_error("cannot lock '" + path + "': " + std::strerror(e));
+  }
+}
+
+void Matrix_store::unlock()
+{
+  if(m_lock_fd < 0)
+    return;
+  // removed while still held: a run that opened it meanwhile has failed to lock it (no waiting)
+  ::unlink((m_part + ".lock").c_str());
+  ::close(m_lock_fd);
+  m_lock_fd = -1;
+}
 
 std::string Matrix_store::spool_path(std::uint32_t generation, std::uint32_t rank) const
 {
@@ -345,6 +380,7 @@ void Matrix_store::open(bool resume, bool force)
   {
     try
     {
+      lock();
       const Plan plan = make_plan(resume, force);
       Byte_writer w;
       w.u64(plan.complete ? 1 : 0);
@@ -508,6 +544,7 @@ void Matrix_store::finish()
           throw Tool_error("internal error: row " + std::to_string(row) + " was not recorded");
       rename_file(m_part, m_spec.output);
       remove_partial_files();
+      unlock();
     }
     catch(const Tool_error& e)
     {
@@ -604,6 +641,7 @@ void Matrix_store::assemble_sparse()
     {
       rename_file(m_part, m_spec.output);
       remove_partial_files();
+      unlock();
     }
     catch(const Tool_error& e)
     {

@@ -7,6 +7,8 @@
 //   OUT.part.journal   the durable record of the completed rows: a header (the run's signature, the
 //                      number of rows, a generation counter) and one 32-byte entry per row, at a fixed
 //                      place, written only after the row's data is on disk
+//   OUT.part.lock      held (flock) by rank 0 while the run is on: a second run on the same output is
+//                      refused instead of mixing its rows with the first one's
 //   OUT.part.spool-G-R sparse runs only: the rows finished by rank R during the G-th start of the run,
 //                      appended in the order they finish (indices int64, then the values)
 //
@@ -100,6 +102,8 @@ private:
   void start_afresh(Plan& plan);
   void continue_partial(Plan& plan);
   void remove_partial_files();
+  void lock();
+  void unlock();
   void commit(bool force_now);
   std::uint64_t entry_check(std::int64_t row, const Entry& e) const;
   bool read_journal(std::uint64_t& generation, std::vector<Entry>& entries, std::string& signature);
@@ -120,6 +124,7 @@ private:
   std::int64_t m_done_before = 0, m_rows_written = 0;
   std::string m_note;
 
+  int m_lock_fd = -1;   // rank 0: OUT.part.lock, locked
   Raw_file m_data;      // dense: OUT.part; sparse: this rank's spool
   Raw_file m_journal_file;
   std::uint64_t m_spool_end = 0;

@@ -58,6 +58,17 @@ def tool_command(args, ranks=0):
     return command
 
 
+def tool_environment(ranks):
+    """The environment of a run; under mpirun in the ASan build, with LeakSanitizer suppressions for
+    Open MPI (VTP_TEST_MPI_LSAN_OPTIONS, set by CMakeLists.txt; see lsan_openmpi.supp)."""
+    env = dict(os.environ)
+    lsan = env.pop("VTP_TEST_MPI_LSAN_OPTIONS", "")
+    if ranks > 0 and lsan:
+        env["LSAN_OPTIONS"] = lsan
+        env["OMPI_MCA_mca_base_component_disable_dlclose"] = "1"
+    return env
+
+
 def run(args, expect=0, ranks=0, limit_file_size=None):
     """Runs the tool; checks its exit code; returns (stdout, stderr)."""
     def limit():
@@ -66,7 +77,7 @@ def run(args, expect=0, ranks=0, limit_file_size=None):
             signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
             resource.setrlimit(resource.RLIMIT_FSIZE, (limit_file_size, limit_file_size))
     p = subprocess.run(tool_command(args, ranks), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                       universal_newlines=True, preexec_fn=limit, timeout=600)
+                       universal_newlines=True, preexec_fn=limit, timeout=600, env=tool_environment(ranks))
     if not check(p.returncode == expect, "exit code %d, expected %d: %s\nstderr: %s"
                  % (p.returncode, expect, " ".join(tool_command(args, ranks)), p.stderr)):
         raise SystemExit(1)
@@ -254,10 +265,10 @@ def mpi_test(ranks):
     for extra in [[], ["--max-distance", "0.35"]]:
         single, multi = work("single%d.h5" % ranks), work("mpi%d.h5" % ranks)
         fresh("single%d.h5" % ranks, "mpi%d.h5" % ranks)
-        run([m, "--sources", "0:60", "--output", single, "--threads", 2] + extra)
-        _, err = run([m, "--sources", "0:60", "--output", multi, "--threads", 1, "--progress"] + extra, ranks=ranks)
+        run([m, "--sources", "0:40", "--output", single, "--threads", 2] + extra)
+        _, err = run([m, "--sources", "0:40", "--output", multi, "--threads", 1, "--progress"] + extra, ranks=ranks)
         same_file(single, multi, "mpirun -np %d %s" % (ranks, " ".join(extra)))
-        finals = [l for l in err.splitlines() if re.match(r"^%s: 60/60 rows \(100\.0%%\), [0-9.]+ rows/s, [0-9]+ s$"
+        finals = [l for l in err.splitlines() if re.match(r"^%s: 40/40 rows \(100\.0%%\), [0-9.]+ rows/s, [0-9]+ s$"
                                                           % PROGRAM, l)]
         check(len(finals) == 1, "one final progress line under MPI, got:\n" + err)
 
@@ -278,7 +289,7 @@ def interrupted_runs(args, reference, label, stops, ranks=0, resume_ranks=0):
     for k, (sig, wait) in enumerate(stops):
         command = tool_command(args + ["--progress"] + (["--resume"] if k > 0 else []), ranks if k == 0 else resume_ranks)
         p = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, universal_newlines=True,
-                             start_new_session=True)
+                             start_new_session=True, env=tool_environment(ranks if k == 0 else resume_ranks))
         start = time.time()
         err = ""
         first = None
@@ -466,16 +477,22 @@ def test_protect_output():
     s, d = read_dense(out)
     check(list(s) == [5, 6] and d.dtype == np.float32, "--force wrote the new output")
 
-    # a partial run is neither overwritten nor resumed with other arguments
+    # a partial run is neither overwritten, nor resumed with other arguments, nor run twice at once
     part_out = work("partial.h5")
     fresh("partial.h5")
-    args = [mesh("elephant.off"), "--sources", "0:300", "--output", part_out, "--threads", 2]
+    m = mesh("elephant.off")
+    rows = min(2775, max(60, int(4 * rows_per_second(m))))  # about 2 s on two threads
+    args = [m, "--sources", "0:%d" % rows, "--output", part_out, "--threads", 2]
+    start = time.time()
     p = subprocess.Popen(tool_command(args + ["--progress"]), stderr=subprocess.PIPE, universal_newlines=True)
     while True:
         line = p.stderr.readline()
         if not line or re.match(r"^%s: [1-9][0-9]*/" % PROGRAM, line):
             break
-    time.sleep(1.5)
+    err = expect_error(args + ["--resume"], "a second run on the same output")
+    check("another run is writing" in err, "the second run says why: " + err)
+    time.sleep(max(0, 1.3 - (time.time() - start)))  # some rows recorded in the journal
+    check(p.poll() is None, "the partial run ended too early")
     p.kill()
     p.communicate()
     journal = part_out + ".part.journal"
@@ -485,8 +502,9 @@ def test_protect_output():
     check("--resume" in err, "the message says how to continue: " + err)
     expect_error(args[:-2] + ["--resume", "--method", "avtp"], "resume a partial run with another method")
     check(file_hash(journal) == h, "the journal of the partial run was changed")
-    run(args + ["--force", "--quiet"])
-    check(os.path.exists(part_out) and not os.path.exists(journal), "--force started again and finished")
+    run([m, "--sources", "0:5", "--output", part_out, "--force", "--quiet"])
+    check(os.path.exists(part_out) and not [f for f in os.listdir(A.work) if f.startswith("partial.h5.")],
+          "--force discarded the partial run and finished")
 
 
 def test_full_disk():
