@@ -124,7 +124,7 @@ def rss(a):
     p.wait()
     print("# peak RSS seen %.1f MB; file size %.2f GB (reserved: a sparse file until written)"
           % (peak / 1024., os.path.getsize(out + ".part") / 1e9))
-    for f in [out + ".part", out + ".part.journal"]:
+    for f in [out + ".part", out + ".part.journal", out + ".part.lock"]:
         os.remove(f)
 
 

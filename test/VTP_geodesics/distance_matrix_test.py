@@ -67,6 +67,9 @@ def tool_environment(ranks):
     stack unwinding to match them (see lsan_openmpi.supp); it is done in the runs of test mpi2 only,
     and off in the other MPI runs (the same code runs without MPI, leak-checked, in the other tests)."""
     env = dict(os.environ)
+    if ranks > 0:
+        # in containers (CI), Open MPI's shared-memory single copy (CMA) may be forbidden: plain copies
+        env.setdefault("OMPI_MCA_btl_vader_single_copy_mechanism", "none")
     lsan = env.pop("VTP_TEST_MPI_LSAN_OPTIONS", "")
     if ranks > 0 and lsan:
         if MPI_LEAK_CHECK:
