@@ -16,6 +16,7 @@ removed afterwards.
 import argparse
 import os
 import re
+import resource
 import statistics
 import subprocess
 import sys
@@ -34,15 +35,22 @@ def mpirun():
     return command
 
 
+def cpu_seconds():
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
 def timed(command, out):
+    """Wall-clock and CPU seconds (of the process and its children) of one run."""
     for f in [out, out + ".part", out + ".part.journal"]:
         if os.path.exists(f):
             os.remove(f)
+    cpu = cpu_seconds()
     start = time.time()
     subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
     seconds = time.time() - start
     os.remove(out)
-    return seconds
+    return seconds, cpu_seconds() - cpu
 
 
 def rates(a, variants):
@@ -51,10 +59,11 @@ def rates(a, variants):
     results = {label: [] for label, _ in variants}
     for r in range(a.repeat):
         for label, command in variants:
-            s = timed(command(out), out)
+            s, cpu = timed(command(out), out)
             results[label].append(a.rows / s)
-            print("# repeat %d  %-22s %7.1f rows/s  (%.2f s, load %s)" % (r + 1, label, a.rows / s, s, load()),
-                  flush=True)
+            # rows per CPU second: what the rows cost, whatever else runs on the machine
+            print("# repeat %d  %-22s %7.1f rows/s  (%.2f s, %.2f CPU s, %.1f rows per CPU s, load %s)"
+                  % (r + 1, label, a.rows / s, s, cpu, a.rows / cpu, load()), flush=True)
     return {label: statistics.median(v) for label, v in results.items()}
 
 
@@ -81,15 +90,15 @@ def allpairs(a):
     for f in [out, out + ".part", out + ".part.journal"]:
         if os.path.exists(f):
             os.remove(f)
-    command = ["/usr/bin/time", "-f", "%e %M", a.tool, a.mesh, "--sources", "all", "--output", out,
+    command = ["/usr/bin/time", "-f", "%e %M %U %S", a.tool, a.mesh, "--sources", "all", "--output", out,
                "--threads", str(a.threads), "--quiet"] + (["--float32"] if a.float32 else [])
     print("# load before: %s" % load(), flush=True)
     p = subprocess.run(command, check=True, stderr=subprocess.PIPE, universal_newlines=True)
-    seconds, kb = p.stderr.split()[-2:]
+    seconds, kb, user, system = p.stderr.split()[-4:]
     size = os.path.getsize(out)
-    print("| %s | all pairs | %s | %d threads | %.1f s | %.0f MB file | peak RSS %.0f MB | load after %s |"
+    print("| %s | all pairs | %s | %d threads | %.1f s | %.0f CPU s | %.0f MB file | peak RSS %.0f MB | load after %s |"
           % (os.path.basename(a.mesh), "float32" if a.float32 else "float64", a.threads, float(seconds),
-             size / 1e6, int(kb) / 1024., load()))
+             float(user) + float(system), size / 1e6, int(kb) / 1024., load()))
     os.remove(out)
 
 
