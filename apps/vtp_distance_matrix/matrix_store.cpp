@@ -453,9 +453,8 @@ void Matrix_store::write_row(std::int64_t row, const double* d)
   }
   else
   {
-    // The library does not stop at the limit yet: the whole row is computed and the entries beyond
-    // the limit are dropped here. (With the named parameter maximum_distance(R), the propagation
-    // will stop at R and give +inf beyond it; this filter then changes nothing.)
+    // The library stops each propagation at the limit and gives +inf beyond it: the entries kept are
+    // the finite ones (<= the limit).
     m_sparse_indices.clear();
     m_sparse_values.clear();
     for(std::size_t j = 0; j < columns; ++j)

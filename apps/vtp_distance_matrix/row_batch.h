@@ -1,17 +1,16 @@
 // vtp_distance_matrix: computing the rows (the one place where the library is called).
 //
 //   compute_rows(input, sources, rows, method, threads, sink)
-// computes, for each row r of `rows`, the distances from the source vertex sources[r] to every vertex
-// of the file, on `threads` OpenMP threads with a dynamic schedule (one row at a time per thread),
-// and hands each finished row to sink(r, sources[r], distances), one call at a time, in any order.
+// computes, for each row r of `rows`, the distances from the file vertex sources[r] to every vertex of the
+// file, and hands each finished row to sink(r, sources[r], distances) (a std::vector<double> in file order,
+// +inf where unreachable or beyond the distance limit), one call at a time, in any order.
 //
-// Today it is written with the library's single-source solver: one Geodesic_distance_solver per
-// thread (each solver keeps its own per-mesh arrays and work space; the mesh is shared, read-only),
-// compute_dense<CGAL::Sequential_tag>() then distances(), and a critical section around the sink.
-// When the library has its batch call, the body becomes one call, roughly
-//   solver.compute_each<CGAL::Parallel_tag>(mesh_sources, sink, CGAL::parameters::number_of_threads(T)
-//                                           .maximum_distance(R) ...)
-// with the same sink, and the distance limit moves into the library (see Matrix_store::write_row).
+// The rows go through the library's batch call, Geodesic_distance_solver::compute_each(): rows in parallel
+// over the sources on `threads` OpenMP threads (dynamic schedule), one workspace per thread, the per-mesh
+// data shared; with a distance limit (maximum_distance), each propagation stops at the limit. A file vertex
+// that the repair of the input cut into several mesh vertices (a non-manifold vertex) is a source at all its
+// copies at once, in one multi-source run, as in vtp_geodesics; a file vertex that the repair removed reaches
+// nothing. The source itself is at distance 0 in its row.
 
 #ifndef VTP_DISTANCE_MATRIX_ROW_BATCH_H
 #define VTP_DISTANCE_MATRIX_ROW_BATCH_H
@@ -19,14 +18,13 @@
 #include "mesh_input.h"
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
+#include <CGAL/VTP_geodesics/parameters.h>
+#include <CGAL/property_map.h>
 #include <CGAL/tags.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cstdint>
-#include <exception>
 #include <limits>
-#include <memory>
 #include <vector>
 
 #ifdef _OPENMP
@@ -38,7 +36,8 @@ namespace vtp_matrix {
 struct Row_method
 {
   bool approximate = false;  // AVTP instead of VTP
-  double lambda = CGAL::VTP_geodesics::Propagation_options::recommended_lambda;
+  double lambda = CGAL::VTP_geodesics::recommended_lambda;
+  double max_distance = std::numeric_limits<double>::infinity();  // the distance limit (none: +inf)
 };
 
 // The number of threads when none is asked for: OpenMP's default.
@@ -51,133 +50,84 @@ inline int default_thread_count()
 #endif
 }
 
-namespace internal {
-
-typedef CGAL::VTP_geodesics::Geodesic_distance_solver<Mesh> Solver;
-
-// The distances from file vertex `source` to every file vertex, into `file_row`. A file vertex that
-// the repair cut into several mesh vertices is a source at each of its copies (one run each and the
-// minimum, as vtp_geodesics does); each file vertex gets the smallest distance over its copies, and
-// the source itself 0 (also when the repair removed it: then every other vertex is at +inf).
-inline void row_distances(const Mesh_input& input, Solver& solver, std::int64_t source,
-                          const CGAL::VTP_geodesics::Propagation_options& options,
-                          const std::vector<std::size_t>& id_of_mesh_vertex,
-                          std::vector<double>& mesh_row, std::vector<double>& file_row)
-{
-  const double infinity = std::numeric_limits<double>::infinity();
-  const std::size_t s = static_cast<std::size_t>(source);
-  file_row.resize(input.file_vertices);
-  if(input.same_vertices)
-  {
-    solver.compute_dense<CGAL::Sequential_tag>(input.copies[s], options);
-    const std::vector<double>& d = solver.distances();
-    for(std::size_t i = 0; i < input.file_vertices; ++i)
-      file_row[i] = d[id_of_mesh_vertex[i]];
-  }
-  else
-  {
-    mesh_row.assign(input.mesh.number_of_vertices(), infinity);
-    for(std::size_t k = input.copy_begin[s]; k < input.copy_begin[s + 1]; ++k)
-    {
-      solver.compute_dense<CGAL::Sequential_tag>(input.copies[k], options);
-      const std::vector<double>& d = solver.distances();
-      for(std::size_t j = 0; j < mesh_row.size(); ++j)
-        mesh_row[j] = (std::min)(mesh_row[j], d[j]);
-    }
-    for(std::size_t i = 0; i < input.file_vertices; ++i)
-    {
-      double m = infinity;
-      for(std::size_t k = input.copy_begin[i]; k < input.copy_begin[i + 1]; ++k)
-        m = (std::min)(m, mesh_row[id_of_mesh_vertex[static_cast<std::size_t>(input.copies[k])]]);
-      file_row[i] = m;
-    }
-  }
-  file_row[s] = 0.;
-}
-
-} // namespace internal
-
-// Throws whatever the solver or the sink threw (the first of them); once one threw, no new row starts.
+// Throws whatever the library or the sink threw (once one threw, no new row starts).
 template <class Sink>
 void compute_rows(const Mesh_input& input, const std::vector<std::int64_t>& sources,
                   const std::vector<std::int64_t>& rows, const Row_method& method, int threads, Sink&& sink)
 {
-  typedef internal::Solver Solver;
+  typedef CGAL::VTP_geodesics::Geodesic_distance_solver<Mesh> Solver;
   if(rows.empty())
     return;
-  const int team = static_cast<int>((std::min)(static_cast<std::size_t>((std::max)(threads, 1)), rows.size()));
+  const double infinity = std::numeric_limits<double>::infinity();
+  const auto np = CGAL::VTP_geodesics::parameters::number_of_threads((std::max)(threads, 1))
+                    .lambda(method.approximate ? method.lambda : infinity)
+                    .maximum_distance(method.max_distance);
+  Solver solver(input.mesh);
 
-  // The solvers are built one after the other: building one adds property maps to the mesh.
-  std::vector<std::unique_ptr<Solver> > solvers;
-  for(int t = 0; t < team; ++t)
-    solvers.emplace_back(new Solver(input.mesh));
-  // solver index of each mesh vertex (by Surface_mesh index); the same for every solver
-  std::vector<std::size_t> id_of_mesh_vertex(input.mesh.number_of_vertices());
-  for(Vertex_index v : vertices(input.mesh))
-    id_of_mesh_vertex[static_cast<std::size_t>(v)] = solvers[0]->vertex_id(v);
+  // The solver's index of each mesh vertex (by Surface_mesh index), and the file's vertex of each column.
+  std::vector<std::size_t> id(input.mesh.number_of_vertices());
+  for(Vertex_index v : input.mesh.vertices())
+    id[static_cast<std::size_t>(v)] = solver.vertex_id(v);
+  std::vector<double> file_row(input.file_vertices);
+  // a row of the solver (indexed by vertex_id) to file order: the minimum over the copies of each vertex
+  auto to_file_order = [&](const std::vector<double>& d, std::int64_t source) {
+    if(input.direct)
+      for(std::size_t i = 0; i < input.file_vertices; ++i)
+        file_row[i] = d[id[i]];
+    else
+      for(std::size_t i = 0; i < input.file_vertices; ++i)
+      {
+        double m = infinity;
+        for(std::size_t k = input.copy_begin[i]; k < input.copy_begin[i + 1]; ++k)
+          m = (std::min)(m, d[id[static_cast<std::size_t>(input.copies[k])]]);
+        file_row[i] = m;
+      }
+    file_row[static_cast<std::size_t>(source)] = 0.;
+  };
 
-  CGAL::VTP_geodesics::Propagation_options options;
-  if(method.approximate)
-    options.lambda = method.lambda;
-
-  std::exception_ptr error;
-  std::atomic<bool> failed(false);
-  const std::int64_t n = static_cast<std::int64_t>(rows.size());
-#ifdef _OPENMP
-#pragma omp parallel num_threads(team)
-#endif
+  // Rows whose source is one mesh vertex: the batch.
+  std::vector<Vertex_index> batch_sources;
+  std::vector<std::int64_t> batch_rows, other_rows;
+  for(std::int64_t r : rows)
   {
-#ifdef _OPENMP
-    Solver& solver = *solvers[static_cast<std::size_t>(omp_get_thread_num())];
-#else
-    Solver& solver = *solvers[0];
-#endif
-    std::vector<double> mesh_row, file_row;
-#ifdef _OPENMP
-#pragma omp for schedule(dynamic, 1)
-#endif
-    for(std::int64_t k = 0; k < n; ++k)
+    const std::vector<Vertex_index> copies = input.mesh_vertices_of(static_cast<std::size_t>(sources[static_cast<std::size_t>(r)]));
+    if(copies.size() == 1)
     {
-      if(failed.load())
-        continue;
-      const std::int64_t row = rows[static_cast<std::size_t>(k)];
-      const std::int64_t source = sources[static_cast<std::size_t>(row)];
-      std::exception_ptr row_error;
-      try
-      {
-        internal::row_distances(input, solver, source, options, id_of_mesh_vertex, mesh_row, file_row);
-      }
-      catch(...)
-      {
-        row_error = std::current_exception();
-      }
-#ifdef _OPENMP
-#pragma omp critical(vtp_matrix_sink)
-#endif
-      {
-        if(row_error)
-        {
-          if(!error)
-            error = row_error;
-          failed.store(true);
-        }
-        else if(!failed.load())
-        {
-          try
-          {
-            sink(row, source, static_cast<const std::vector<double>&>(file_row));
-          }
-          catch(...)
-          {
-            error = std::current_exception();
-            failed.store(true);
-          }
-        }
-      }
+      batch_sources.push_back(copies[0]);
+      batch_rows.push_back(r);
     }
+    else
+      other_rows.push_back(r);
   }
-  if(error)
-    std::rethrow_exception(error);
+  auto row_sink = [&](std::size_t i, Vertex_index, const std::vector<double>& d) {
+    const std::int64_t row = batch_rows[i], source = sources[static_cast<std::size_t>(row)];
+    to_file_order(d, source);
+    sink(row, source, static_cast<const std::vector<double>&>(file_row));
+  };
+#ifdef _OPENMP
+  solver.compute_each<CGAL::Parallel_tag>(batch_sources, row_sink, np);
+#else
+  solver.compute_each<CGAL::Sequential_tag>(batch_sources, row_sink, np);
+#endif
+
+  // The other rows (sources cut by the repair, or removed by it), one multi-source run each.
+  const CGAL::Constant_property_map<Vertex_index, double> no_map;
+  for(std::int64_t row : other_rows)
+  {
+    const std::int64_t source = sources[static_cast<std::size_t>(row)];
+    const std::vector<Vertex_index> copies = input.mesh_vertices_of(static_cast<std::size_t>(source));
+    if(copies.empty())
+    {
+      std::fill(file_row.begin(), file_row.end(), infinity);
+      file_row[static_cast<std::size_t>(source)] = 0.;
+    }
+    else
+    {
+      solver.compute<CGAL::Sequential_tag>(no_map, copies, np);
+      to_file_order(solver.distances(), source);
+    }
+    sink(row, source, static_cast<const std::vector<double>&>(file_row));
+  }
 }
 
 } // namespace vtp_matrix

@@ -10,7 +10,8 @@
 // written to the output as they finish, and recorded in a journal, so that a run killed at any moment
 // continues with --resume. See README.md, section "Many sources", and the files of this folder:
 //   arguments.*      the command line            source_list.*   --sources
-//   mesh_input.h     reading the mesh            row_batch.h     computing the rows (the library call)
+//   mesh_input.h     reading the mesh (apps/common) and its hash
+//   row_batch.h      computing the rows (the library's batch call, compute_each)
 //   matrix_store.*   output files, journal, resume, sparse assembly
 //   hdf5_layout.*    the HDF5 file               raw_file.*      positioned writes (POSIX or MPI-IO)
 //   job.*            MPI ranks, errors agreed by all ranks, progress counts   progress.*  the progress line
@@ -116,8 +117,8 @@ int run(Job& job, int argc, char** argv)
     return 0;
   }
   const bool talk = job.is_root() && args.progress != 0;
-  if(talk && !input.repairs.empty())
-    std::fprintf(stderr, "%s: note: %s\n", program_name, input.repairs.c_str());
+  if(talk && !input.repair_note.empty())
+    std::fprintf(stderr, "%s: note: %s\n", program_name, input.repair_note.c_str());
 
   // 2. the output: start, continue, or nothing to do
   Matrix_spec spec;
@@ -149,6 +150,7 @@ int run(Job& job, int argc, char** argv)
   Row_method method;
   method.approximate = args.approximate;
   method.lambda = args.lambda;
+  method.max_distance = args.max_distance;  // +inf without --max-distance
   const int threads = args.threads > 0 ? args.threads : default_thread_count();
   try
   {

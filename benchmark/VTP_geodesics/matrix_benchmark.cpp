@@ -4,17 +4,19 @@
 //
 // For K sources spread over the vertices of MESH, R times in turn (interleaved, so that a change of
 // the machine's load hits every variant alike):
-//   single    one Geodesic_distance_solver, compute_dense() for each source in turn: the library's
-//             single-source call;
+//   single    one Geodesic_distance_solver, compute() from each source in turn (no output map; the row
+//             read with distances()): the library's single-source call;
 //   batch 1   compute_rows() of vtp_distance_matrix (apps/vtp_distance_matrix/row_batch.h) on one
-//             thread: its per-thread solver, the row copied to file order, handed to a sink (here:
-//             converted to float32, as a dense float32 output does);
+//             thread: the library's batch call compute_each() on a new solver, each row copied to file
+//             order and handed to a sink (here: converted to float32, as a dense float32 output does);
 //   batch T   the same on T threads (default 2).
 // Prints the median time per source of each, rows per second, and the ratios. Writing the HDF5 file
 // is measured with the tool itself (see README.md, "Many sources").
 
 #include "mesh_input.h"
 #include "row_batch.h"
+
+#include <CGAL/property_map.h>
 
 #include <algorithm>
 #include <chrono>
@@ -86,7 +88,8 @@ int main(int argc, char** argv)
 
   std::vector<double> single, batch1, batchT;
   double checksum = 0.;  // keeps the sinks' work alive
-  internal::Solver solver(input.mesh);
+  CGAL::VTP_geodesics::Geodesic_distance_solver<Mesh> solver(input.mesh);
+  const CGAL::Constant_property_map<Vertex_index, double> no_map;
   std::vector<float> row32(nv);
   auto sink = [&](std::int64_t, std::int64_t, const std::vector<double>& d) {
     for(std::size_t j = 0; j < nv; ++j)
@@ -98,7 +101,7 @@ int main(int argc, char** argv)
     auto t0 = std::chrono::steady_clock::now();
     for(std::int64_t s : sources)
     {
-      solver.compute_dense<CGAL::Sequential_tag>(input.copies[input.copy_begin[static_cast<std::size_t>(s)]]);
+      solver.compute<CGAL::Sequential_tag>(no_map, input.mesh_vertices_of(static_cast<std::size_t>(s)));
       checksum += solver.distances()[nv / 2];
     }
     single.push_back(seconds_since(t0) / static_cast<double>(rows));

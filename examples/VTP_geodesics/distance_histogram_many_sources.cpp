@@ -1,12 +1,10 @@
 // Many sources in parallel: the rows of 100 source vertices, computed on all cores, summarized as a
 // histogram of geodesic distances (a shape descriptor), the mean distance and the farthest pair found.
 //
-// Each thread has its own solver (the per-mesh preprocessing is done once per solver; the mesh is
-// shared and only read), takes the next source when it is done with one (dynamic schedule), and hands
-// the finished row to a "sink" that folds it into the summary; only the summary is kept, never the
-// rows. The function for_each_row() below is the part that the library's batch call will replace:
-// with it, the whole function becomes one call with the same sink, roughly
-//   solver.compute_each<CGAL::Parallel_tag>(sources, sink, CGAL::parameters::number_of_threads(T));
+// Geodesic_distance_solver::compute_each() computes one row per source, in parallel over the sources with
+// CGAL::Parallel_tag (one workspace per thread; the per-mesh data is shared), and hands each finished row to
+// a "sink", one row at a time, in any order. The sink here folds the row into the summary: only the summary
+// is kept, never the rows.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -14,6 +12,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
+#include <CGAL/VTP_geodesics/parameters.h>
 
 #include <algorithm>
 #include <chrono>
@@ -22,7 +21,6 @@
 #include <iostream>
 #include <iterator>
 #include <limits>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -38,35 +36,6 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel   Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3>                   Triangle_mesh;
 typedef Triangle_mesh::Vertex_index                           vertex_descriptor;
 typedef CGAL::VTP_geodesics::Geodesic_distance_solver<Triangle_mesh> Solver;
-
-// Computes the distances from each of `sources` on `threads` threads, and calls
-// sink(i, sources[i], solver) once per source, one call at a time, in any order; the row is
-// solver.distances(), indexed by solver.vertex_id(v).
-template <class Sink>
-void for_each_row(const Triangle_mesh& tm, const std::vector<vertex_descriptor>& sources, int threads, Sink sink)
-{
-  // One solver per thread, built one after the other (building a solver adds property maps to the mesh).
-  std::vector<std::unique_ptr<Solver> > solvers;
-  for(int t = 0; t < threads; ++t)
-    solvers.emplace_back(new Solver(tm));
-  const int n = static_cast<int>(sources.size());
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-#endif
-  for(int i = 0; i < n; ++i)
-  {
-#ifdef _OPENMP
-    Solver& solver = *solvers[static_cast<std::size_t>(omp_get_thread_num())];
-#else
-    Solver& solver = *solvers[0];
-#endif
-    solver.compute_dense<CGAL::Sequential_tag>(sources[static_cast<std::size_t>(i)]);
-#ifdef _OPENMP
-#pragma omp critical(distance_rows)
-#endif
-    sink(i, sources[static_cast<std::size_t>(i)], static_cast<const Solver&>(solver));
-  }
-}
 
 int main(int argc, char* argv[])
 {
@@ -91,17 +60,18 @@ int main(int argc, char* argv[])
 
   // The summary: a histogram of the distances in bins of half a mean edge length (grown as needed),
   // their sum, and the farthest pair.
-  const double bin_width = 0.5 * Solver(tm).mean_edge_length();
+  Solver solver(tm);
+  const double bin_width = 0.5 * solver.mean_edge_length();
   std::vector<std::size_t> bins;
   double sum = 0., farthest = -1.;
   std::size_t reached = 0;
   vertex_descriptor far_source, far_target;
 
-  const auto t0 = std::chrono::steady_clock::now();
-  for_each_row(tm, sources, threads, [&](int, vertex_descriptor s, const Solver& solver) {
+  // One call of the sink per row: `row` is indexed by solver.vertex_id(v).
+  auto sink = [&](std::size_t, vertex_descriptor s, const std::vector<double>& row) {
     for(vertex_descriptor v : vertices(tm))
     {
-      const double d = solver.distance(v);
+      const double d = row[solver.vertex_id(v)];
       if(!(d < std::numeric_limits<double>::infinity()))
         continue;  // unreachable (another connected component)
       const std::size_t b = static_cast<std::size_t>(d / bin_width);
@@ -117,7 +87,13 @@ int main(int argc, char* argv[])
         far_target = v;
       }
     }
-  });
+  };
+  const auto t0 = std::chrono::steady_clock::now();
+#ifdef _OPENMP
+  solver.compute_each<CGAL::Parallel_tag>(sources, sink, CGAL::VTP_geodesics::parameters::number_of_threads(threads));
+#else
+  solver.compute_each<CGAL::Sequential_tag>(sources, sink);
+#endif
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   std::cout << sources.size() << " rows of " << nv << " distances on " << threads << " thread(s) in " << seconds

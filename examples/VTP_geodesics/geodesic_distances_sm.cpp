@@ -36,8 +36,9 @@ int main(int argc, char* argv[])
 
   // Exact geodesic distances from the first vertex.
   const vertex_descriptor source = *(vertices(tm).first);
-  const CGAL::VTP_geodesics::Propagation_statistics stats =
-    CGAL::VTP_geodesics::compute_geodesic_distances(tm, distance, source);
+  CGAL::VTP_geodesics::Propagation_statistics stats;  // optional
+  CGAL::VTP_geodesics::compute_geodesic_distances(tm, distance, source,
+                                                  CGAL::VTP_geodesics::parameters::statistics(stats));
 
   std::cout << "source: " << source << ", " << num_vertices(tm) << " vertices, "
             << stats.windows_created << " windows created in " << stats.seconds << " s" << std::endl;

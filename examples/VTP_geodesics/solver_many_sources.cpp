@@ -48,7 +48,8 @@ int main(int argc, char* argv[])
 
   for(vertex_descriptor s : sources)
   {
-    const CGAL::VTP_geodesics::Propagation_statistics& stats = solver.compute(s, distance);
+    solver.compute(distance, s);
+    const CGAL::VTP_geodesics::Propagation_statistics& stats = solver.statistics();
     // The distance between the first and the last source, seen from each source.
     std::cout << "source " << s << ": distance to " << sources.front() << " = " << distance[sources.front()]
               << ", to " << sources.back() << " = " << distance[sources.back()]

@@ -14,7 +14,9 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
-#include <CGAL/VTP_geodesics/options_and_statistics.h>
+#include <CGAL/VTP_geodesics/Invalid_input_error.h>
+#include <CGAL/VTP_geodesics/Propagation_statistics.h>
+#include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/Geodesic_traits_3.h>
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
 #include <CGAL/VTP_geodesics/geodesic_distances.h>

@@ -3,7 +3,7 @@
 
 Run by ctest, one test per name (see CMakeLists.txt):
   distance_matrix_test.py NAME --tool vtp_distance_matrix --geodesics vtp_geodesics --data DIR
-                          --examples-data DIR --work DIR [--mpirun mpirun]
+                          --cli-data DIR --work DIR [--mpirun mpirun]
 Names: rows_single_source symmetric dense_sparse float32 threads mpi2 mpi3 resume resume_mpi
        bad_input protect_output full_disk progress help
 Expected values come from invariants and from another program (vtp_geodesics, one source at a time),
@@ -167,7 +167,7 @@ def test_rows_single_source():
     boundaries and on a mesh that is repaired (a vertex cut in two copies, an isolated point)."""
     cases = [("elephant-with-holes.off", A.data, "0,17,1000,2797,1500", []),
              ("elephant-with-holes.off", A.data, "2000,5", ["--method", "avtp", "--lambda", "4"]),
-             ("nonmanifold_vertex.off", A.examples_data, "all", [])]
+             ("nonmanifold_vertex.off", A.cli_data, "all", [])]
     for name, folder, sources, method in cases:
         out = work("rows.h5")
         fresh("rows.h5")
@@ -223,7 +223,7 @@ def test_dense_sparse():
             if R == 0:
                 check(c.nnz == d.shape[0], "R = 0: only the sources themselves")
     # unreachable vertices are absent, also with an infinite limit
-    nmv = os.path.join(A.examples_data, "nonmanifold_vertex.off")
+    nmv = os.path.join(A.cli_data, "nonmanifold_vertex.off")
     a, b = work("nmv_dense.h5"), work("nmv_inf.h5")
     fresh("nmv_dense.h5", "nmv_inf.h5")
     run([nmv, "--sources", "all", "--output", a])
@@ -239,7 +239,7 @@ def test_dense_sparse():
 
 def test_float32():
     """float32 output is the float64 output rounded to nearest (inf kept)."""
-    m = os.path.join(A.examples_data, "nonmanifold_vertex.off")  # has unreachable vertices
+    m = os.path.join(A.cli_data, "nonmanifold_vertex.off")  # has unreachable vertices
     for name, mesh_file, sources in [("nmv", m, "all"), ("elephant", mesh("elephant.off"), "3,1,4,1,5,9,2,6")]:
         a, b = work(name + "64.h5"), work(name + "32.h5")
         fresh(name + "64.h5", name + "32.h5")
@@ -341,13 +341,14 @@ def interrupted_runs(args, reference, label, stops, ranks=0, resume_ranks=0):
     check(not leftovers, label + ": partial files left: %s" % leftovers)
 
 
-def rows_per_second(mesh_file):
-    """Rows per second of one thread on this machine (the interrupted runs must last a few seconds
-    whatever the speed of the machine or of the build)."""
+def rows_per_second(mesh_file, extra=()):
+    """Rows per second of one thread on this machine, with the options `extra` (the interrupted runs must
+    last a few seconds whatever the speed of the machine or of the build, and a distance limit makes rows
+    cheaper)."""
     out = work("calibration.h5")
     fresh("calibration.h5")
     start = time.time()
-    run([mesh_file, "--sources", "0:40", "--output", out, "--threads", 1])
+    run([mesh_file, "--sources", "0:40", "--output", out, "--threads", 1] + list(extra))
     return 40 / (time.time() - start)
 
 
@@ -355,9 +356,9 @@ def test_resume():
     """Stopped by SIGKILL / SIGTERM / SIGINT at various moments (also at the very start), then
     resumed: the same file as an uninterrupted run (dense float64, sparse float32)."""
     m = mesh("elephant.off")
-    # about 4 s of rows on one thread: two stops after ~1.4 s each, the rest for the last run
-    rows = min(2775, max(60, int(4 * rows_per_second(m))))
     for extra, label in [([], "dense"), (["--max-distance", "0.5", "--float32"], "sparse")]:
+        # about 4 s of rows on one thread: two stops after ~1.4 s each, the rest for the last run
+        rows = min(2775, max(60, int(4 * rows_per_second(m, extra))))
         ref, out = work("ref_%s.h5" % label), work("resumed_%s.h5" % label)
         fresh("ref_%s.h5" % label, "resumed_%s.h5" % label)
         run([m, "--sources", "0:%d" % rows, "--output", ref, "--threads", 2] + extra)
@@ -375,9 +376,9 @@ def test_resume_mpi():
         print("SKIP: built without MPI")
         return
     m = mesh("elephant.off")
-    # about 2 s of rows for two ranks of one thread
-    rows = min(2775, max(60, int(4 * rows_per_second(m))))
     for extra, label in [([], "dense"), (["--max-distance", "0.5"], "sparse")]:
+        # about 2 s of rows for two ranks of one thread
+        rows = min(2775, max(60, int(4 * rows_per_second(m, extra))))
         ref, out = work("ref_mpi_%s.h5" % label), work("resumed_mpi_%s.h5" % label)
         fresh("ref_mpi_%s.h5" % label, "resumed_mpi_%s.h5" % label)
         run([m, "--sources", "0:%d" % rows, "--output", ref, "--threads", 2] + extra)
@@ -404,7 +405,7 @@ def test_bad_input():
     m = mesh("sphere.off")
     out = work("bad.h5")
     fresh("bad.h5")
-    ed = A.examples_data
+    ed = A.cli_data
     with open(work("sources_ok.txt"), "w") as f:
         f.write("# a comment\n3, 4\n5\t6  # another\n")
     with open(work("sources_empty.txt"), "w") as f:
@@ -588,7 +589,7 @@ def main():
     parser.add_argument("--tool", required=True)
     parser.add_argument("--geodesics", default="")
     parser.add_argument("--data", required=True)
-    parser.add_argument("--examples-data", required=True)
+    parser.add_argument("--cli-data", required=True)
     parser.add_argument("--work", required=True)
     parser.add_argument("--mpirun", default="")
     A = parser.parse_args()

@@ -29,8 +29,8 @@
 #include "vtp_random_meshes.h"
 
 #include <CGAL/VTP_geodesics.h>
-#include <CGAL/VTP_geodesics/internal/tools/midpoint_subdivision.h>
-#include <CGAL/VTP_geodesics/internal/tools/shortest_path_reference.h>
+#include <vtp_tools/midpoint_subdivision.h>
+#include <vtp_tools/shortest_path_reference.h>
 
 #include <CGAL/IO/OFF.h>
 
@@ -54,7 +54,6 @@
 
 using namespace vtp_test;
 using CGAL::VTP_geodesics::Geodesic_distance_solver;
-using CGAL::VTP_geodesics::Propagation_options;
 
 namespace {
 
@@ -194,7 +193,7 @@ std::vector<Inserted_vertex> insert_degeneracies(Polygon_soup& soup, Polygon_sou
 // distance of that vertex).
 std::vector<double> reference_distances(const Case& c, Vertex_index s)
 {
-  using CGAL::VTP_geodesics::internal::shortest_path_reference_distances;
+  using vtp_tools::shortest_path_reference_distances;
   if(c.inserted.empty())
     return shortest_path_reference_distances(c.mesh, s);
   std::vector<double> d = shortest_path_reference_distances(c.reference_mesh, s);
@@ -418,8 +417,8 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
       {
         // CGAL itself errs on some meshes: tell whether it agrees on the subdivided mesh (same surface)
         Surface_mesh fine = c.mesh;
-        CGAL::VTP_geodesics::internal::midpoint_subdivide(fine, 1);
-        std::vector<double> fine_reference = CGAL::VTP_geodesics::internal::shortest_path_reference_distances(fine, s);
+        vtp_tools::midpoint_subdivide(fine, 1);
+        std::vector<double> fine_reference = vtp_tools::shortest_path_reference_distances(fine, s);
         fine_reference.resize(reference.size());
         std::cout << "  CGAL on the midpoint-subdivided mesh "
                   << (compare(d, fine_reference, std::size_t(s)).ok() ? "agrees with " : "disagrees with ") << method
@@ -430,7 +429,7 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
     // (VTP runs for PVTP too, which must equal it)
     set_current_case(where + ", vtp; " + reproduce);
     t0 = std::chrono::steady_clock::now();
-    solver.compute_dense<CGAL::Sequential_tag>(s);
+    solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), s);
     totals.vtp_seconds += seconds_since(t0);
     sequential = solver.distances();
     if(settings.vtp)
@@ -439,10 +438,8 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
     if(settings.pvtp)
     {
       set_current_case(where + ", pvtp; " + reproduce);
-      Propagation_options options;
-      options.number_of_threads = 2;
       t0 = std::chrono::steady_clock::now();
-      solver.compute_dense<CGAL::Parallel_tag>(s, options);
+      solver.compute<CGAL::Parallel_tag>(vtp_test::Discard_map(), s, CGAL::VTP_geodesics::parameters::number_of_threads(2));
       totals.pvtp_seconds += seconds_since(t0);
       const std::vector<double> parallel = solver.distances();
       check("pvtp", parallel, reference, "CGAL");

@@ -27,7 +27,6 @@
 using namespace vtp_test;
 using CGAL::VTP_geodesics::Geodesic_distance_solver;
 using CGAL::VTP_geodesics::Invalid_input_error;
-using CGAL::VTP_geodesics::Propagation_options;
 using CGAL::VTP_geodesics::Propagation_statistics;
 using CGAL::VTP_geodesics::compute_geodesic_distances;
 
@@ -46,7 +45,7 @@ std::vector<double> distances_through_assoc_map(const Mesh& mesh, std::size_t so
   const std::vector<vertex_descriptor> vs(vertices(mesh).begin(), vertices(mesh).end());
   Map map;
   Geodesic_distance_solver<Mesh> solver(mesh);
-  solver.compute(vs[source], boost::make_assoc_property_map(map));
+  solver.compute(boost::make_assoc_property_map(map), vs[source]);
   std::vector<double> d;
   for(vertex_descriptor v : vs)
   {
@@ -108,7 +107,7 @@ TEST(Genericity, surface_mesh_and_polyhedron_give_identical_distances)
       Surface_mesh sm_copy = sm;
       auto pmap = sm_copy.add_property_map<Vertex_index, double>("v:distance", -1.).first;
       Geodesic_distance_solver<Surface_mesh> solver(sm_copy);
-      solver.compute(Vertex_index(static_cast<Surface_mesh::size_type>(source)), pmap);
+      solver.compute(pmap, Vertex_index(static_cast<Surface_mesh::size_type>(source)));
       std::vector<double> d_pmap;
       for(Vertex_index v : vertices(sm_copy))
         d_pmap.push_back(pmap[v]);
@@ -152,13 +151,24 @@ TEST(Genericity, vertex_point_map_named_parameter)
     x *= 2.;
   std::vector<double> d(num_vertices(mesh), NOT_A_VERTEX);
   compute_geodesic_distances(mesh, boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), s,
-                             Propagation_options(), CGAL::parameters::vertex_point_map(vpm));
+                             CGAL::parameters::vertex_point_map(vpm));
   EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE, "free function, scaled vertex point map"));
 
   std::vector<double> d_solver(num_vertices(mesh), NOT_A_VERTEX);
   Geodesic_distance_solver<Surface_mesh, CGAL::Default, decltype(vpm)> solver(mesh, vpm);
-  solver.compute(s, boost::make_iterator_property_map(d_solver.begin(), get(boost::vertex_index, mesh)));
+  solver.compute(boost::make_iterator_property_map(d_solver.begin(), get(boost::vertex_index, mesh)), s);
   EXPECT_TRUE(identical(d, d_solver));
+
+  // the same with this package's named parameters, and through the solver's named-parameter constructor
+  std::vector<double> d_np(num_vertices(mesh), NOT_A_VERTEX);
+  compute_geodesic_distances(mesh, boost::make_iterator_property_map(d_np.begin(), get(boost::vertex_index, mesh)), s,
+                             CGAL::VTP_geodesics::parameters::vertex_point_map(vpm).minimum_window_length(1e-9));
+  EXPECT_TRUE(identical(d, d_np));
+  Geodesic_distance_solver<Surface_mesh, CGAL::Default, decltype(vpm)> solver_np(
+    mesh, CGAL::parameters::vertex_point_map(vpm));
+  std::vector<double> d_solver_np(num_vertices(mesh), NOT_A_VERTEX);
+  solver_np.compute(boost::make_iterator_property_map(d_solver_np.begin(), get(boost::vertex_index, mesh)), s);
+  EXPECT_TRUE(identical(d, d_solver_np));
 }
 
 TEST(Genericity, free_function_and_solver_agree)
@@ -167,10 +177,11 @@ TEST(Genericity, free_function_and_solver_agree)
   for(Vertex_index s : {Vertex_index(10), Vertex_index(2000)})
   {
     std::vector<double> d_free(num_vertices(mesh), NOT_A_VERTEX);
-    const Propagation_statistics st =
-      compute_geodesic_distances(mesh, boost::make_iterator_property_map(d_free.begin(), get(boost::vertex_index, mesh)), s);
+    Propagation_statistics st;
+    compute_geodesic_distances(mesh, boost::make_iterator_property_map(d_free.begin(), get(boost::vertex_index, mesh)), s,
+                               CGAL::VTP_geodesics::parameters::statistics(st));
     Propagation_statistics st_solver;
-    const std::vector<double> d_solver = vtp_distances(mesh, s, Propagation_options(), &st_solver);
+    const std::vector<double> d_solver = vtp_distances(mesh, s, CGAL::parameters::default_values(), &st_solver);
     EXPECT_TRUE(identical(d_free, d_solver));
     EXPECT_EQ(st.reached_vertices, st_solver.reached_vertices);
     EXPECT_EQ(st.max_distance, st_solver.max_distance);
@@ -187,7 +198,7 @@ TEST(Genericity, reused_solver_equals_fresh_solvers)
   for(Vertex_index s : {Vertex_index(0), Vertex_index(1234), Vertex_index(2774), Vertex_index(0)})
   {
     std::vector<double> d(num_vertices(mesh), NOT_A_VERTEX);
-    solver.compute(s, boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)));
+    solver.compute(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), s);
     EXPECT_TRUE(identical(d, vtp_distances(mesh, s))) << "source " << std::size_t(s);
 
     // the dense accessors report the same distances
@@ -196,11 +207,12 @@ TEST(Genericity, reused_solver_equals_fresh_solvers)
       ASSERT_EQ(solver.distance(v), d[v]);
       ASSERT_EQ(solver.distances()[solver.vertex_id(v)], d[v]);
     }
-    solver.compute_dense(s);
-    std::vector<double> dense(num_vertices(mesh));
-    for(Vertex_index v : vertices(mesh))
-      dense[v] = solver.distance(v);
-    EXPECT_TRUE(identical(d, dense));
+    // the source set of the solver gives the same
+    solver.clear_sources();
+    solver.add_source(s);
+    std::vector<double> from_set(num_vertices(mesh), NOT_A_VERTEX);
+    solver.compute(boost::make_iterator_property_map(from_set.begin(), get(boost::vertex_index, mesh)));
+    EXPECT_TRUE(identical(d, from_set));
   }
 }
 
@@ -213,12 +225,13 @@ TEST(Statistics, consistent_with_the_output)
   const Surface_mesh& mesh = elephant();
   Geodesic_distance_solver<Surface_mesh> solver(mesh);
   std::vector<double> d(num_vertices(mesh), NOT_A_VERTEX);
-  const Propagation_statistics st =
-    solver.compute(Vertex_index(77), boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)));
+  solver.compute(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), Vertex_index(77));
+  const Propagation_statistics st = solver.statistics();
 
   EXPECT_EQ(st.vertices, num_vertices(mesh));
   EXPECT_EQ(st.faces, num_faces(mesh));
   EXPECT_EQ(st.method, "vtp");
+  EXPECT_EQ(st.sources, 1u);
   EXPECT_EQ(st.threads, 1);
   EXPECT_GT(st.windows_created, 0u);
   EXPECT_GT(st.windows_propagated, 0u);
@@ -291,13 +304,18 @@ TEST(Bad_input, source_not_in_the_mesh_is_rejected)
   std::vector<double> d(num_vertices(mesh));
   auto map = boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh));
   const Vertex_index outside(static_cast<Surface_mesh::size_type>(num_vertices(mesh) + 10));
-  EXPECT_THROW(solver.compute(outside, map), Invalid_input_error);
-  EXPECT_THROW(solver.compute_dense(outside), Invalid_input_error);
-  EXPECT_THROW(solver.compute(Surface_mesh::null_vertex(), map), Invalid_input_error);
+  EXPECT_THROW(solver.compute(map, outside), Invalid_input_error);
+  EXPECT_THROW(solver.add_source(outside), Invalid_input_error);
+  EXPECT_THROW(solver.compute(map, Surface_mesh::null_vertex()), Invalid_input_error);
   EXPECT_THROW(compute_geodesic_distances(mesh, map, outside), Invalid_input_error);
+  EXPECT_THROW(compute_geodesic_distances(mesh, map, std::vector<Vertex_index>{Vertex_index(0), outside}),
+               Invalid_input_error);
+  // no source at all
+  EXPECT_THROW(solver.compute(map), Invalid_input_error);
+  EXPECT_THROW(compute_geodesic_distances(mesh, map, std::vector<Vertex_index>()), Invalid_input_error);
 
   // the solver is still usable after a rejected call
-  EXPECT_NO_THROW(solver.compute(Vertex_index(1), map));
+  EXPECT_NO_THROW(solver.compute(map, Vertex_index(1)));
   EXPECT_EQ(d[1], 0.);
 }
 
@@ -316,8 +334,8 @@ TEST(Bad_input, removed_source_vertex_is_rejected)
   Geodesic_distance_solver<Surface_mesh> solver(mesh);
   std::vector<double> d(index_range(mesh));
   auto map = boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh));
-  EXPECT_THROW(solver.compute(corner, map), Invalid_input_error);
-  EXPECT_NO_THROW(solver.compute(Vertex_index(0), map));
+  EXPECT_THROW(solver.compute(map, corner), Invalid_input_error);
+  EXPECT_NO_THROW(solver.compute(map, Vertex_index(0)));
 }
 
 TEST(Bad_input, invalid_options_are_rejected)
@@ -328,29 +346,24 @@ TEST(Bad_input, invalid_options_are_rejected)
   auto map = boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh));
   const double nan = std::numeric_limits<double>::quiet_NaN();
 
+  namespace VP = CGAL::VTP_geodesics::parameters;
   for(double lambda : {0., -0., -1., -INF, nan})
   {
-    Propagation_options o;
-    o.lambda = lambda;
-    EXPECT_THROW(solver.compute(Vertex_index(0), map, o), Invalid_input_error) << "lambda = " << lambda;
-    EXPECT_THROW(solver.compute_dense(Vertex_index(0), o), Invalid_input_error) << "lambda = " << lambda;
-    EXPECT_THROW(compute_geodesic_distances(mesh, map, Vertex_index(0), o), Invalid_input_error)
+    EXPECT_THROW(solver.compute(map, Vertex_index(0), VP::lambda(lambda)), Invalid_input_error) << "lambda = " << lambda;
+    EXPECT_THROW(compute_geodesic_distances(mesh, map, Vertex_index(0), VP::lambda(lambda)), Invalid_input_error)
       << "lambda = " << lambda;
   }
-  for(double lambda_g : {-1., -1e-300, nan})
-  {
-    Propagation_options o;
-    o.lambda = 2.;
-    o.lambda_g = lambda_g;
-    EXPECT_THROW(solver.compute(Vertex_index(0), map, o), Invalid_input_error) << "lambda_g = " << lambda_g;
-  }
+  for(double lambda_g : {-1., -1e-300, nan, INF})
+    EXPECT_THROW(solver.compute(map, Vertex_index(0), VP::lambda(2.).lambda_g(lambda_g)), Invalid_input_error)
+      << "lambda_g = " << lambda_g;
+  for(double length : {-1e-9, 1., nan})
+    EXPECT_THROW(solver.compute(map, Vertex_index(0), VP::minimum_window_length(length)), Invalid_input_error)
+      << "minimum_window_length = " << length;
+  EXPECT_THROW(solver.compute(map, Vertex_index(0), VP::number_of_threads(-1)), Invalid_input_error);
 
-  // valid options
-  Propagation_options o;
-  EXPECT_NO_THROW(solver.compute(Vertex_index(0), map, o));
-  o.lambda = 2.5;
-  o.lambda_g = 0.;
-  EXPECT_NO_THROW(solver.compute(Vertex_index(0), map, o));
+  // valid parameters
+  EXPECT_NO_THROW(solver.compute(map, Vertex_index(0)));
+  EXPECT_NO_THROW(solver.compute(map, Vertex_index(0), VP::lambda(2.5).lambda_g(0.)));
 }
 
 TEST(Bad_input, non_finite_or_huge_coordinates_are_rejected)
@@ -398,15 +411,14 @@ TEST(Parallel, matches_the_analytic_distances)
   Geodesic_distance_solver<Surface_mesh> solver(mesh);
   for(int threads : {0, 1, 2})
   {
-    Propagation_options o;
-    o.number_of_threads = threads;
     const std::size_t s = grid_vertex(n, 7, 11);
     std::vector<double> expected(soup.points.size()), d(soup.points.size(), NOT_A_VERTEX);
     for(std::size_t i = 0; i < soup.points.size(); ++i)
       expected[i] = distance(soup.points[s], soup.points[i]);
-    const Propagation_statistics& st = solver.compute<CGAL::Parallel_tag>(
-      Vertex_index(static_cast<Surface_mesh::size_type>(s)),
-      boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), o);
+    solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
+                                       Vertex_index(static_cast<Surface_mesh::size_type>(s)),
+                                       CGAL::VTP_geodesics::parameters::number_of_threads(threads));
+    const Propagation_statistics& st = solver.statistics();
     EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE, "parallel, " + std::to_string(threads) + " threads"));
     EXPECT_EQ(st.method, "pvtp");
     EXPECT_GE(st.threads, 1);
@@ -427,7 +439,7 @@ TEST(Parallel, matches_sequential_on_real_meshes)
     {
       const std::vector<double> sequential = vtp_distances(mesh, s);
       std::vector<double> parallel(num_vertices(mesh), NOT_A_VERTEX);
-      solver.compute<CGAL::Parallel_tag>(s, boost::make_iterator_property_map(parallel.begin(), get(boost::vertex_index, mesh)));
+      solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(parallel.begin(), get(boost::vertex_index, mesh)), s);
       EXPECT_TRUE(distances_near(parallel, sequential, EXACT_TOLERANCE,
                                  std::string(name) + ", parallel vs sequential, source " + std::to_string(std::size_t(s))));
     }
@@ -440,8 +452,10 @@ TEST(Parallel, unreachable_vertices)
   soup.append(regular_tetrahedron(), Vector_3(10, 0, 0));
   const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
   std::vector<double> d(num_vertices(mesh), NOT_A_VERTEX);
-  const Propagation_statistics st = compute_geodesic_distances<CGAL::Parallel_tag>(
-    mesh, boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), Vertex_index(0));
+  Propagation_statistics st;
+  compute_geodesic_distances<CGAL::Parallel_tag>(
+    mesh, boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), Vertex_index(0),
+    CGAL::VTP_geodesics::parameters::statistics(st));
   for(std::size_t i = 0; i < 49; ++i)
     EXPECT_NEAR(d[i], distance(soup.points[0], soup.points[i]), EXACT_TOLERANCE * std::sqrt(2.));
   for(std::size_t i = 49; i < 53; ++i)
@@ -457,12 +471,12 @@ TEST(Parallel, approximate_never_below_the_exact_distance)
   const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
   const std::size_t s = grid_vertex(n, 20, 5);
   Geodesic_distance_solver<Surface_mesh> solver(mesh);
-  Propagation_options o;
-  o.lambda = 1.;
+  const double lambda = 1.;
   std::vector<double> d(soup.points.size(), NOT_A_VERTEX);
-  const Propagation_statistics& st = solver.compute<CGAL::Parallel_tag>(
-    Vertex_index(static_cast<Surface_mesh::size_type>(s)),
-    boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), o);
+  solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
+                                     Vertex_index(static_cast<Surface_mesh::size_type>(s)),
+                                     CGAL::VTP_geodesics::parameters::lambda(lambda));
+  const Propagation_statistics& st = solver.statistics();
   EXPECT_EQ(st.method, "pavtp");
   EXPECT_EQ(st.reached_vertices, soup.points.size());
   double below = 0.;
@@ -472,7 +486,7 @@ TEST(Parallel, approximate_never_below_the_exact_distance)
     below = (std::max)(below, distance(soup.points[s], soup.points[i]) - d[i]);
   }
   EXPECT_LE(below, EXACT_TOLERANCE * std::sqrt(2.));
-  ASSERT_GT(st.max_distance, 5. * o.lambda * solver.mean_edge_length());
+  ASSERT_GT(st.max_distance, 5. * lambda * solver.mean_edge_length());
   EXPECT_GT(st.resets, 0u);
 }
 
@@ -496,12 +510,10 @@ TEST(Approximate, never_below_the_exact_distance)
   Geodesic_distance_solver<Surface_mesh> solver(mesh);
   for(double lambda : {0.5, 1., 3.})
   {
-    Propagation_options o;
-    o.lambda = lambda;
     std::vector<double> d(soup.points.size(), NOT_A_VERTEX);
-    const Propagation_statistics& st = solver.compute(
-      Vertex_index(static_cast<Surface_mesh::size_type>(s)),
-      boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), o);
+    solver.compute(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
+                   Vertex_index(static_cast<Surface_mesh::size_type>(s)), CGAL::VTP_geodesics::parameters::lambda(lambda));
+    const Propagation_statistics& st = solver.statistics();
     EXPECT_EQ(st.method, "avtp");
     EXPECT_EQ(st.reached_vertices, soup.points.size());
     EXPECT_EQ(d[s], 0.);
@@ -515,5 +527,114 @@ TEST(Approximate, never_below_the_exact_distance)
     // the propagation radius (about 1.3) is many times lambda * h (h is about 0.05): windows were reset
     ASSERT_GT(st.max_distance, 5. * lambda * solver.mean_edge_length());
     EXPECT_GT(st.resets, 0u) << "lambda = " << lambda;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Many sources: compute_each()
+// ---------------------------------------------------------------------------------------------------
+
+namespace {
+
+// Rows of compute_each() by row index, with the number of times each row was handed over.
+struct Collected_rows
+{
+  std::vector<std::vector<double> > rows;
+  std::vector<int> calls;
+};
+
+template <class Tag, class Sources, class NP>
+Collected_rows collect_rows(Geodesic_distance_solver<Surface_mesh>& solver, const Sources& sources, const NP& np)
+{
+  Collected_rows c;
+  c.rows.resize(sources.size());
+  c.calls.assign(sources.size(), 0);
+  solver.compute_each<Tag>(sources, [&](std::size_t i, const typename Sources::value_type&, const std::vector<double>& d) {
+    c.rows[i] = d;
+    ++c.calls[i];
+  }, np);
+  return c;
+}
+
+} // namespace
+
+TEST(Compute_each, rows_equal_single_computations_bitwise)
+{
+  const Surface_mesh& mesh = elephant();
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  std::vector<Vertex_index> sources;
+  for(std::size_t i = 0; i < 12; ++i)
+    sources.push_back(Vertex_index(static_cast<Surface_mesh::size_type>(i * 229)));
+  namespace VP = CGAL::VTP_geodesics::parameters;
+  for(double lambda : { INF, 4. })
+    for(double limit : { INF, 0.3 })
+    {
+      const auto np = VP::lambda(lambda).maximum_distance(limit);
+      std::vector<std::vector<double> > expected;
+      for(Vertex_index s : sources)
+      {
+        solver.compute(vtp_test::Discard_map(), s, np);
+        expected.push_back(solver.distances());
+      }
+      const Collected_rows sequential = collect_rows<CGAL::Sequential_tag>(solver, sources, np);
+      EXPECT_EQ(solver.statistics().sources, sources.size());
+      for(std::size_t i = 0; i < sources.size(); ++i)
+      {
+        EXPECT_EQ(sequential.calls[i], 1);
+        EXPECT_TRUE(identical(sequential.rows[i], expected[i])) << "row " << i << ", lambda " << lambda << ", limit " << limit;
+      }
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+      for(int threads : { 1, 2, 3 })
+      {
+        const Collected_rows parallel = collect_rows<CGAL::Parallel_tag>(solver, sources, np.number_of_threads(threads));
+        EXPECT_EQ(solver.statistics().threads, threads);
+        for(std::size_t i = 0; i < sources.size(); ++i)
+        {
+          EXPECT_EQ(parallel.calls[i], 1);
+          EXPECT_TRUE(identical(parallel.rows[i], expected[i])) << "row " << i << ", " << threads << " threads";
+        }
+      }
+#endif
+    }
+  // face locations as sources
+  typedef std::pair<Surface_mesh::Face_index, std::array<double, 3> > Location;
+  const std::vector<Location> locations = { Location(Surface_mesh::Face_index(5), { { 0.2, 0.3, 0.5 } }),
+                                            Location(Surface_mesh::Face_index(900), { { 0., 0.5, 0.5 } }) };
+  const Collected_rows rows = collect_rows<CGAL::Sequential_tag>(solver, locations, CGAL::parameters::default_values());
+  for(std::size_t i = 0; i < locations.size(); ++i)
+  {
+    solver.compute(vtp_test::Discard_map(), locations[i]);
+    EXPECT_TRUE(identical(rows.rows[i], solver.distances()));
+  }
+}
+
+TEST(Compute_each, errors)
+{
+  const Surface_mesh& mesh = elephant();
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  std::vector<Vertex_index> sources(20, Vertex_index(3));
+  // a bad source: refused before any row
+  std::vector<Vertex_index> bad = sources;
+  bad[7] = Vertex_index(static_cast<Surface_mesh::size_type>(num_vertices(mesh) + 1));
+  int calls = 0;
+  EXPECT_THROW(solver.compute_each(bad, [&](std::size_t, Vertex_index, const std::vector<double>&) { ++calls; }),
+               Invalid_input_error);
+  EXPECT_EQ(calls, 0);
+  // a sink that throws: no row after that, and the exception comes out
+  for(int threads : { 1, 2 })
+  {
+    calls = 0;
+    auto sink = [&](std::size_t, Vertex_index, const std::vector<double>&) {
+      if(++calls == 3)
+        throw std::runtime_error("disk full");
+    };
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+    EXPECT_THROW(solver.compute_each<CGAL::Parallel_tag>(sources, sink,
+                                                         CGAL::VTP_geodesics::parameters::number_of_threads(threads)),
+                 std::runtime_error);
+#else
+    EXPECT_THROW(solver.compute_each(sources, sink), std::runtime_error);
+#endif
+    EXPECT_EQ(calls, 3);
   }
 }

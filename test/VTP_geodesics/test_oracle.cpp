@@ -5,8 +5,8 @@
 #include "vtp_test_meshes.h"
 #include "vtp_test_utils.h"
 
-#include <CGAL/VTP_geodesics/internal/tools/midpoint_subdivision.h>
-#include <CGAL/VTP_geodesics/internal/tools/shortest_path_reference.h>
+#include <vtp_tools/midpoint_subdivision.h>
+#include <vtp_tools/shortest_path_reference.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -18,8 +18,8 @@
 #include <vector>
 
 using namespace vtp_test;
-using CGAL::VTP_geodesics::internal::midpoint_subdivide;
-using CGAL::VTP_geodesics::internal::shortest_path_reference_distances;
+using vtp_tools::midpoint_subdivide;
+using vtp_tools::shortest_path_reference_distances;
 
 namespace {
 
@@ -213,7 +213,7 @@ TEST(Hard_input, two_components)
     std::vector<double> expected = shortest_path_reference_distances(mesh_a, s);
     expected.resize(na + nb, INF);
     CGAL::VTP_geodesics::Propagation_statistics st;
-    const std::vector<double> d = vtp_distances(mesh, s, CGAL::VTP_geodesics::Propagation_options(), &st);
+    const std::vector<double> d = vtp_distances(mesh, s, CGAL::parameters::default_values(), &st);
     EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE, "two components, source in the first"));
     EXPECT_EQ(st.reached_vertices, na);
   }
@@ -224,7 +224,7 @@ TEST(Hard_input, two_components)
     expected.insert(expected.end(), reference.begin(), reference.end());
     CGAL::VTP_geodesics::Propagation_statistics st;
     const std::vector<double> d = vtp_distances(mesh, Vertex_index(static_cast<Surface_mesh::size_type>(na + 5)),
-                                                CGAL::VTP_geodesics::Propagation_options(), &st);
+                                                CGAL::parameters::default_values(), &st);
     EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE, "two components, source in the second"));
     EXPECT_EQ(st.reached_vertices, nb);
   }
@@ -252,7 +252,7 @@ TEST(Hard_input, isolated_vertex)
     expected[n] = 0.;
     CGAL::VTP_geodesics::Propagation_statistics st;
     const std::vector<double> d = vtp_distances(mesh, Vertex_index(static_cast<Surface_mesh::size_type>(n)),
-                                                CGAL::VTP_geodesics::Propagation_options(), &st);
+                                                CGAL::parameters::default_values(), &st);
     EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE, "isolated source"));
     EXPECT_EQ(st.reached_vertices, 1u);
     EXPECT_EQ(st.max_distance, 0.);
@@ -300,7 +300,7 @@ TEST(Hard_input, surface_mesh_with_removed_elements)
     for(Vertex_index v : vertices(mesh))
       expected[v] = reference[new_index[v]];
     CGAL::VTP_geodesics::Propagation_statistics st;
-    const std::vector<double> d = vtp_distances(mesh, s, CGAL::VTP_geodesics::Propagation_options(), &st);
+    const std::vector<double> d = vtp_distances(mesh, s, CGAL::parameters::default_values(), &st);
     EXPECT_EQ(st.vertices, std::size_t(mesh.number_of_vertices()));
     EXPECT_EQ(st.faces, std::size_t(mesh.number_of_faces()));
     EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE,

@@ -11,8 +11,8 @@
 #include "vtp_test_meshes.h"
 #include "vtp_test_utils.h"
 
-#include <CGAL/VTP_geodesics/internal/tools/midpoint_subdivision.h>
-#include <CGAL/VTP_geodesics/internal/tools/shortest_path_reference.h>
+#include <vtp_tools/midpoint_subdivision.h>
+#include <vtp_tools/shortest_path_reference.h>
 
 #include <CGAL/Surface_mesh_shortest_path.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -29,10 +29,9 @@
 
 using namespace vtp_test;
 using CGAL::VTP_geodesics::Geodesic_distance_solver;
-using CGAL::VTP_geodesics::Propagation_options;
 using CGAL::VTP_geodesics::Propagation_statistics;
-using CGAL::VTP_geodesics::internal::midpoint_subdivide;
-using CGAL::VTP_geodesics::internal::shortest_path_reference_distances;
+using vtp_tools::midpoint_subdivide;
+using vtp_tools::shortest_path_reference_distances;
 
 namespace {
 
@@ -304,7 +303,7 @@ TEST(Components, several_components_and_isolated_vertices)
   for(std::size_t s : {std::size_t(2), grid_first + 10, grid_first + grid.points.size() + 4})
   {
     Propagation_statistics st;
-    const std::vector<double> d = vtp_distances(mesh, vertex(s), Propagation_options(), &st);
+    const std::vector<double> d = vtp_distances(mesh, vertex(s), CGAL::parameters::default_values(), &st);
     const std::vector<double> expected = shortest_path_reference_distances(mesh, vertex(s));
     EXPECT_TRUE(satisfies_invariants(mesh, d, vertex(s), "several components, source " + std::to_string(s)));
     EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE, "several components, source " + std::to_string(s)));
@@ -328,7 +327,7 @@ TEST(Components, several_components_and_isolated_vertices)
   for(std::size_t s : isolated)
   {
     Propagation_statistics st;
-    const std::vector<double> d = vtp_distances(mesh, vertex(s), Propagation_options(), &st);
+    const std::vector<double> d = vtp_distances(mesh, vertex(s), CGAL::parameters::default_values(), &st);
     std::vector<double> expected(num_vertices(mesh), INF);
     expected[s] = 0.;
     EXPECT_TRUE(distances_near(d, expected, 0., "isolated source " + std::to_string(s)));

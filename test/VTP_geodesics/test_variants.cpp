@@ -9,7 +9,7 @@
 
 #include "vtp_test_utils.h"
 
-#include <CGAL/VTP_geodesics/internal/tools/midpoint_subdivision.h>
+#include <vtp_tools/midpoint_subdivision.h>
 
 #include <cmath>
 #include <string>
@@ -17,12 +17,18 @@
 
 using namespace vtp_test;
 using CGAL::VTP_geodesics::Geodesic_distance_solver;
-using CGAL::VTP_geodesics::Propagation_options;
 using CGAL::VTP_geodesics::Propagation_statistics;
 
 namespace {
 
 typedef Geodesic_distance_solver<Surface_mesh> Solver;
+
+// The parameters the tests below vary.
+struct Variant
+{
+  double lambda = INF;   // window-reset period (infinity: exact)
+  int number_of_threads = 0;
+};
 
 const char* const all_meshes[] = { "elephant-with-holes.off", "elephant.off", "mushroom.off", "three_peaks.off",
                                    "knot1.off", "mech-holes-shark.off", "sphere.off" };
@@ -59,13 +65,13 @@ double below_exact(const std::vector<double>& d, const std::vector<double>& exac
 }
 
 template <class Tag>
-std::vector<double> run(Solver& solver, std::size_t source, const Propagation_options& o,
+std::vector<double> run(Solver& solver, std::size_t source, const Variant& o,
                         Propagation_statistics* st = nullptr)
 {
-  const Propagation_statistics& s =
-    solver.compute_dense<Tag>(Vertex_index(static_cast<Surface_mesh::size_type>(source)), o);
+  solver.template compute<Tag>(Discard_map(), Vertex_index(static_cast<Surface_mesh::size_type>(source)),
+                               CGAL::VTP_geodesics::parameters::lambda(o.lambda).number_of_threads(o.number_of_threads));
   if(st != nullptr)
-    *st = s;
+    *st = solver.statistics();
   return solver.distances();
 }
 
@@ -73,7 +79,7 @@ std::vector<double> run(Solver& solver, std::size_t source, const Propagation_op
 Surface_mesh fine_mesh(const char* name)
 {
   Surface_mesh mesh = load_mesh(name);
-  CGAL::VTP_geodesics::internal::midpoint_subdivide(mesh, 1);
+  vtp_tools::midpoint_subdivide(mesh, 1);
   return mesh;
 }
 
@@ -89,11 +95,11 @@ TEST(Approximate_variants, never_below_exact_and_error_shrinks_with_lambda)
   {
     const Surface_mesh mesh = fine_mesh(name);
     Solver solver(mesh);
-    const std::vector<double> exact = run<CGAL::Sequential_tag>(solver, 0, Propagation_options());
+    const std::vector<double> exact = run<CGAL::Sequential_tag>(solver, 0, Variant());
     std::vector<double> errors;
     for(double lambda : { 2., 8., 32. })
     {
-      Propagation_options o;
+      Variant o;
       o.lambda = lambda;
       Propagation_statistics st;
       const std::vector<double> d = run<CGAL::Sequential_tag>(solver, 0, o, &st);
@@ -119,8 +125,8 @@ TEST(Approximate_variants, equal_exact_when_lambda_h_exceeds_the_largest_distanc
     const Surface_mesh mesh = load_mesh(name);
     Solver solver(mesh);
     Propagation_statistics st;
-    const std::vector<double> exact = run<CGAL::Sequential_tag>(solver, 5, Propagation_options(), &st);
-    Propagation_options o;
+    const std::vector<double> exact = run<CGAL::Sequential_tag>(solver, 5, Variant(), &st);
+    Variant o;
     o.lambda = 1.01 * st.max_distance / solver.mean_edge_length();
     Propagation_statistics sa;
     const std::vector<double> d = run<CGAL::Sequential_tag>(solver, 5, o, &sa);
@@ -144,10 +150,10 @@ TEST(Parallel_variants, pvtp_equals_vtp_on_every_test_mesh_for_1_to_4_threads)
     for(std::size_t source : { std::size_t(0), std::size_t(num_vertices(mesh) / 3) })
     {
       Propagation_statistics vs;
-      const std::vector<double> exact = run<CGAL::Sequential_tag>(solver, source, Propagation_options(), &vs);
+      const std::vector<double> exact = run<CGAL::Sequential_tag>(solver, source, Variant(), &vs);
       for(int threads : { 1, 2, 3, 4 })
       {
-        Propagation_options o;
+        Variant o;
         o.number_of_threads = threads;
         Propagation_statistics ps;
         const std::vector<double> d = run<CGAL::Parallel_tag>(solver, source, o, &ps);
@@ -170,7 +176,7 @@ TEST(Parallel_variants, output_does_not_depend_on_thread_timing)
   for(int threads : { 2, 3, 4 })
     for(double lambda : { std::numeric_limits<double>::infinity(), 4. })
     {
-      Propagation_options o;
+      Variant o;
       o.number_of_threads = threads;
       o.lambda = lambda;
       Propagation_statistics first;
@@ -197,13 +203,13 @@ TEST(Parallel_variants, pavtp_meets_the_avtp_invariants)
     const Surface_mesh mesh = fine_mesh(name);
     Solver solver(mesh);
     Propagation_statistics vs;
-    const std::vector<double> exact = run<CGAL::Sequential_tag>(solver, 0, Propagation_options(), &vs);
+    const std::vector<double> exact = run<CGAL::Sequential_tag>(solver, 0, Variant(), &vs);
     for(int threads : { 1, 2, 4 })
     {
       std::vector<double> errors;
       for(double lambda : { 2., 8., 32. })
       {
-        Propagation_options o;
+        Variant o;
         o.lambda = lambda;
         o.number_of_threads = threads;
         Propagation_statistics st;
@@ -219,7 +225,7 @@ TEST(Parallel_variants, pavtp_meets_the_avtp_invariants)
       EXPECT_GE(errors[1], errors[2]) << name << ", " << threads << " threads";
       EXPECT_LT(errors[1], 2.5e-3) << name << ", " << threads << " threads";
       // lambda h above the largest distance: exact
-      Propagation_options o;
+      Variant o;
       o.number_of_threads = threads;
       o.lambda = 1.01 * vs.max_distance / solver.mean_edge_length();
       const std::vector<double> d = run<CGAL::Parallel_tag>(solver, 0, o);
@@ -235,14 +241,14 @@ TEST(Parallel_variants, pavtp_meets_the_avtp_invariants)
 TEST(Parallel_variants, pavtp_reaches_every_reachable_vertex)
 {
   Surface_mesh mesh = load_mesh("elephant.off");
-  CGAL::VTP_geodesics::internal::midpoint_subdivide(mesh, 2);
+  vtp_tools::midpoint_subdivide(mesh, 2);
   Solver solver(mesh);
   Propagation_statistics vs;
-  const std::vector<double> exact = run<CGAL::Sequential_tag>(solver, 0, Propagation_options(), &vs);
+  const std::vector<double> exact = run<CGAL::Sequential_tag>(solver, 0, Variant(), &vs);
   for(int threads : { 2, 3, 4 })
     for(double lambda : { 1., 2., 4. })
     {
-      Propagation_options o;
+      Variant o;
       o.lambda = lambda;
       o.number_of_threads = threads;
       Propagation_statistics st;

@@ -15,6 +15,7 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
+#include <CGAL/VTP_geodesics/parameters.h>
 
 #include <CGAL/disable_warnings.h>
 
@@ -26,21 +27,28 @@ namespace CGAL {
 namespace VTP_geodesics {
 
 /// \ingroup PkgVTPGeodesicsRef
-/// computes the geodesic distance from `source` to every vertex of `tm` and writes it into `vdm`;
-/// unreachable vertices get `+infinity`. For many sources on the same mesh, build one
-/// `Geodesic_distance_solver` and call its `compute()` instead: the per-mesh preprocessing is then done once.
+/// computes the geodesic distance from `sources` to every vertex of `tm` and writes it into `vdm`: the
+/// distance of a vertex is its distance to the nearest source; unreachable vertices get `+infinity`.
+/// For many computations on the same mesh, build one `Geodesic_distance_solver` and call its `compute()`
+/// instead: the per-mesh preprocessing is then done once.
 ///
-/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (VTP / AVTP) or `CGAL::Parallel_tag` (PVTP / PAVTP).
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (VTP / AVTP) or `CGAL::Parallel_tag` (PVTP / PAVTP, needs
+///   OpenMP; see the user manual).
 /// \tparam TriangleMesh a triangulated surface mesh, model of `FaceListGraph` and `HalfedgeListGraph`.
 /// \tparam VertexDistanceMap a `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
 ///   as key type and `double` as value type.
+/// \tparam SourceOrRange a `vertex_descriptor`, a face location
+///   (`CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, FT>`, i.e.
+///   `std::pair<face_descriptor, std::array<FT, 3> >`), or a range of either.
 /// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
 ///
 /// \param tm the triangle mesh
 /// \param vdm the output distance map
-/// \param source the source vertex
-/// \param options see `Propagation_options`; the defaults give the exact result
-/// \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+/// \param sources the source(s); a point of an edge or a vertex given as a face location gives the same
+///   result as that edge point or vertex, whichever face it is expressed in
+/// \param np an optional sequence of named parameters among the ones listed below: CGAL's
+///   (`CGAL::parameters::vertex_point_map(vpm)`) or this package's
+///   (`CGAL::VTP_geodesics::parameters::lambda(8).number_of_threads(4)`)
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{vertex_point_map}
@@ -54,36 +62,72 @@ namespace VTP_geodesics {
 ///     \cgalParamType{a class model of `VTPGeodesicTraits_3`}
 ///     \cgalParamDefault{a \cgal kernel deduced from the point type, wrapped in `Geodesic_traits_3`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{lambda}
+///     \cgalParamDescription{the window-reset period of the approximate variants (AVTP / PAVTP), in multiples
+///       of the mean edge length `h`; `recommended_lambda` is a good start}
+///     \cgalParamType{`double`, `> 0`}
+///     \cgalParamDefault{`+infinity`: windows are never reset, the result is exact}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{lambda_g}
+///     \cgalParamDescription{the guard band of the approximate variants, in multiples of `h`: at a reset, the
+///       windows next to wavefront vertices farther than `(R+1) lambda h + lambda_g h` are kept}
+///     \cgalParamType{`double`, finite and `>= 0`}
+///     \cgalParamDefault{`1`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads}
+///     \cgalParamDescription{the number of threads of the parallel scheduling; ignored with
+///       `CGAL::Sequential_tag`}
+///     \cgalParamType{`int`, `>= 0`}
+///     \cgalParamDefault{`0`: OpenMP's default}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{minimum_window_length}
+///     \cgalParamDescription{windows shorter than this times the length of their edge are dropped; they
+///       change distances by a second-order amount (below `1e-18` relative for the default)}
+///     \cgalParamType{`double`, in `[0, 1)`}
+///     \cgalParamDefault{`1e-9`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{nearest_source_map}
+///     \cgalParamDescription{a property map receiving, for each vertex, the index in `sources` of a nearest
+///       source (one of them, when several are at the same distance), or `no_source` for an unreachable
+///       vertex}
+///     \cgalParamType{a class model of `WritablePropertyMap` with
+///       `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{statistics}
+///     \cgalParamDescription{receives the statistics of the propagation}
+///     \cgalParamType{`Propagation_statistics&`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \returns the statistics of the propagation.
-/// \throws Invalid_input_error on invalid input (not a triangle mesh, source not a vertex of `tm`, invalid options).
+/// \throws Invalid_input_error on invalid input: not a triangle mesh, a source that is not a vertex or a
+/// point of `tm`, an empty range of sources, an invalid parameter.
 template <class ConcurrencyTag = CGAL::Sequential_tag,
           class TriangleMesh,
           class VertexDistanceMap,
-          class NamedParameters = parameters::Default_named_parameters>
-Propagation_statistics
-compute_geodesic_distances(const TriangleMesh& tm,
-                           VertexDistanceMap vdm,
-                           typename boost::graph_traits<TriangleMesh>::vertex_descriptor source,
-                           const Propagation_options& options = Propagation_options(),
-                           const NamedParameters& np = parameters::default_values())
+          class SourceOrRange,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+void compute_geodesic_distances(const TriangleMesh& tm,
+                                VertexDistanceMap vdm,
+                                const SourceOrRange& sources,
+                                const NamedParameters& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
 
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
   typedef typename boost::property_traits<VPM>::value_type Point;
   typedef typename Kernel_traits<Point>::Kernel Kernel;
-  typedef typename internal_np::Lookup_named_param_def<internal_np::geom_traits_t, NamedParameters,
-                                                       Geodesic_traits_3<Kernel> >::type GT;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters,
+                                                             Geodesic_traits_3<Kernel> >::type GT;
 
-  VPM vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
+  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                              get_const_property_map(CGAL::vertex_point, tm));
-  GT gt = choose_parameter<GT>(get_parameter(np, internal_np::geom_traits));
+  GT gt = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
 
   Geodesic_distance_solver<TriangleMesh, GT, VPM> solver(tm, vpm, gt);
-  return solver.template compute<ConcurrencyTag>(source, vdm, options);
+  solver.template compute<ConcurrencyTag>(vdm, sources, np);
 }
 
 } // namespace VTP_geodesics

@@ -11,6 +11,8 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <CGAL/property_map.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -30,6 +32,9 @@ typedef Kernel::Point_3 Point_3;
 typedef Kernel::Vector_3 Vector_3;
 typedef CGAL::Surface_mesh<Point_3> Surface_mesh;
 typedef Surface_mesh::Vertex_index Vertex_index;
+
+// A writable property map that discards what is written (the tests then read the solver's distances()).
+typedef CGAL::Constant_property_map<Vertex_index, double> Discard_map;
 
 const double PI = 3.14159265358979323846;
 

@@ -55,20 +55,21 @@ inline std::size_t index_range(const Surface_mesh& mesh)
   return static_cast<std::size_t>(mesh.number_of_vertices() + mesh.number_of_removed_vertices());
 }
 
-// Runs the solver from `source` and returns the distances indexed by vertex index, written through the
-// public output property map. Entries of removed vertices (and of vertices the solver did not write) are NaN.
-inline std::vector<double>
-vtp_distances(const Surface_mesh& mesh, Vertex_index source,
-              const CGAL::VTP_geodesics::Propagation_options& options = CGAL::VTP_geodesics::Propagation_options(),
+// Runs the solver from `source` (a vertex, a face location, or a range of either) with the named
+// parameters `np` and returns the distances indexed by vertex index, written through the public output
+// property map. Entries of removed vertices (and of vertices the solver did not write) are NaN.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class Sources,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+std::vector<double>
+vtp_distances(const Surface_mesh& mesh, const Sources& source, const NamedParameters& np = CGAL::parameters::default_values(),
               CGAL::VTP_geodesics::Propagation_statistics* statistics = nullptr)
 {
   std::vector<double> distances(index_range(mesh), NOT_A_VERTEX);
   CGAL::VTP_geodesics::Geodesic_distance_solver<Surface_mesh> solver(mesh);
-  const CGAL::VTP_geodesics::Propagation_statistics& st =
-    solver.compute(source, boost::make_iterator_property_map(distances.begin(), get(boost::vertex_index, mesh)),
-                   options);
+  solver.template compute<ConcurrencyTag>(
+    boost::make_iterator_property_map(distances.begin(), get(boost::vertex_index, mesh)), source, np);
   if(statistics != nullptr)
-    *statistics = st;
+    *statistics = solver.statistics();
   return distances;
 }
 

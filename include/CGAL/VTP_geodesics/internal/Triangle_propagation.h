@@ -190,6 +190,7 @@ inline void prune_pair(Window& a, Window& b)
 struct Propagation_result
 {
   double distance_to_C = std::numeric_limits<double>::infinity();
+  std::size_t best = 0;        // the window that gives distance_to_C (when finite)
   std::size_t propagated = 0;
 };
 
@@ -207,6 +208,7 @@ inline void emit_child(const Window& w, double p0, double p1,
   c.sx = rx * ux + ry * uy;
   c.sy = ux * ry - uy * rx;
   c.sigma = w.sigma;
+  c.origin = w.origin;
   if(!(c.sy < 0.))
     return; // source on the line of the edge (degenerate face): nothing crosses
   // intersection of the ray from the source through (p, 0) with the line of the child edge
@@ -253,6 +255,7 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
 
   // Rule 1: the window giving the shortest distance to C, and its separating point sp_s.
   double best = std::numeric_limits<double>::infinity();
+  std::size_t best_index = 0;
   double sp_s = 0.;
   for(std::size_t i = 0; i < n; ++i)
   {
@@ -276,10 +279,12 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
     if(dist < best)
     {
       best = dist;
+      best_index = i;
       sp_s = sp;
     }
   }
   res.distance_to_C = best;
+  res.best = best_index;
   res.propagated = n;
 
   const double lac = g.l_prev, lcb = g.l_next;
@@ -312,8 +317,8 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
 // how a vertex reaches the face beyond a zero-area face in which it lies inside the opposite edge
 // (a window cannot carry it: its source would be on the line of the edge). The whole triangle is
 // seen from the point, so each child covers its whole edge. Children are appended as in
-// propagate_list(); the distance to C is returned.
-inline double propagate_edge_point(const Halfedge_geometry& g, double t, double sigma,
+// propagate_list(), with the origin `origin`; the distance to C is returned.
+inline double propagate_edge_point(const Halfedge_geometry& g, double t, double sigma, Index origin,
                                    bool want_ac, bool want_cb,
                                    std::vector<Window>& out_ac, std::vector<Window>& out_cb)
 {
@@ -327,6 +332,7 @@ inline double propagate_edge_point(const Halfedge_geometry& g, double t, double 
     c.sx = t * ux;
     c.sy = -uy * t;
     c.sigma = sigma;
+    c.origin = origin;
     c.b0 = 0.;
     c.b1 = lac;
     if(c.sy < 0.)
@@ -341,6 +347,7 @@ inline double propagate_edge_point(const Halfedge_geometry& g, double t, double 
     c.sx = rx * ux + ry * uy;
     c.sy = ux * ry - uy * rx;
     c.sigma = sigma;
+    c.origin = origin;
     c.b0 = 0.;
     c.b1 = lcb;
     if(c.sy < 0.)

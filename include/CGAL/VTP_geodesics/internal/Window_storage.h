@@ -32,11 +32,14 @@ namespace internal {
 // straight in the unfolding, from the (pseudo-)source image (sx, sy), sy <= 0, whose own
 // distance to the source is sigma. The distance of a point (x, 0) of the window is
 // sigma + sqrt((x - sx)^2 + sy^2). The window is waiting to be propagated into face(h).
+// `origin` says which (pseudo-)source the image stands for: a vertex index, or the number of
+// vertices plus the index of a point source (see Seeding.h); children keep the origin of their parent.
 struct Window
 {
   double b0, b1;
   double sx, sy;
   double sigma;
+  Index origin;
 };
 
 // Window lists, one per half-edge, stored in fixed-size blocks linked by indices: windows of a

@@ -1,0 +1,259 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_ENGINE_PATH_TRACE_H
+#define CGAL_VTP_GEODESICS_INTERNAL_ENGINE_PATH_TRACE_H
+
+#include <CGAL/license/VTP_geodesics.h>
+
+#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/engine/Path_record.h>
+#include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
+#include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
+
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace VTP_geodesics {
+namespace internal {
+
+// A point of a path: a vertex, a point of an edge (abscissa x along a half-edge), or a point inside a
+// face (x, y in the frame of half-edge 3f).
+struct Trace_point
+{
+  enum Kind { AT_VERTEX, ON_EDGE, IN_FACE };
+  Kind kind = AT_VERTEX;
+  Index element = NO_INDEX;
+  double x = 0., y = 0.;
+};
+
+// The trace-back of geodesic paths from the record of a propagation (Path_record): from a vertex or a
+// target back to its nearest source, through the (pseudo-)sources its path turns at.
+//
+// Between two consecutive (pseudo-)sources the path is a straight line in the unfolding: from the point,
+// it goes straight to the image of its origin recorded with the offer that gave the point its distance
+// (possibly bent first at an end of that window), and is followed face by face: in each face, the line
+// leaves through the edge on its side of the third vertex; the image is re-expressed in the frame of the
+// half-edge across that edge. It ends in the face whose third vertex is the origin (or that holds the
+// source point). The length of the polyline is the distance, up to rounding.
+class Path_trace
+{
+public:
+  Path_trace(const Mesh_arrays& m, const Path_record& record, const std::vector<Seed>& seeds)
+    : m_mesh(m), m_record(record), m_seeds(seeds)
+  {}
+
+  // The path from vertex v (first) to its source (last). Returns false if it cannot be followed (which
+  // would be a defect: then `out` holds what was followed).
+  bool from_vertex(Index v, std::vector<Trace_point>& out) const
+  {
+    out.clear();
+    push(out, vertex_point(v));
+    return from_vertex_on(v, out);
+  }
+
+  // The path from target t (first) to its source (last).
+  bool from_target(const Target& target, const Offer& offer, std::vector<Trace_point>& out) const
+  {
+    out.clear();
+    if(target.vertex != NO_INDEX)
+      return from_vertex(target.vertex, out);
+    Trace_point p;
+    p.kind = Trace_point::IN_FACE;
+    p.element = target.face;
+    p.x = target.x[0];
+    p.y = target.y[0];
+    push(out, p);
+    if(offer.origin == NO_INDEX)
+      return false;
+    Index origin;
+    if(offer.halfedge == NO_INDEX)
+      origin = straight_to(offer.origin, out);
+    else
+    {
+      const std::size_t k = static_cast<std::size_t>(offer.halfedge % 3);
+      if(!follow(offer, target.x[k], target.y[k], out, origin))
+        return false;
+    }
+    return origin >= m_mesh.nv || from_vertex_on(origin, out);
+  }
+
+private:
+  static Trace_point vertex_point(Index v)
+  {
+    Trace_point p;
+    p.kind = Trace_point::AT_VERTEX;
+    p.element = v;
+    return p;
+  }
+
+  static bool same(const Trace_point& a, const Trace_point& b)
+  {
+    return a.kind == b.kind && a.element == b.element && a.x == b.x && a.y == b.y;
+  }
+
+  static void push(std::vector<Trace_point>& out, const Trace_point& p)
+  {
+    if(out.empty() || !same(out.back(), p))
+      out.push_back(p);
+  }
+
+  // Appends the point of `origin` (a vertex or a source point); returns it.
+  Index straight_to(Index origin, std::vector<Trace_point>& out) const
+  {
+    if(origin < m_mesh.nv)
+    {
+      push(out, vertex_point(origin));
+      return origin;
+    }
+    const Seed& s = m_seeds[static_cast<std::size_t>(origin - m_mesh.nv)];
+    Trace_point p;
+    p.kind = s.kind == Seed::IN_FACE ? Trace_point::IN_FACE : Trace_point::ON_EDGE;
+    p.element = s.element;
+    p.x = s.x;
+    p.y = s.y;
+    if(s.kind == Seed::AT_VERTEX)
+      p = vertex_point(s.element);
+    push(out, p);
+    return origin;
+  }
+
+  // From vertex v (already in `out`), through the (pseudo-)sources, to the source.
+  bool from_vertex_on(Index v, std::vector<Trace_point>& out) const
+  {
+    for(Index step = 0; step <= m_mesh.nv; ++step)
+    {
+      const Offer& offer = m_record.vertex[static_cast<std::size_t>(v)];
+      if(offer.origin == NO_INDEX)
+        return true;                       // a source vertex
+      Index origin;
+      if(offer.halfedge == NO_INDEX)
+        origin = straight_to(offer.origin, out);
+      else
+      {
+        const Halfedge_geometry& g = m_mesh.geometry[offer.halfedge];
+        if(!follow(offer, g.cx, g.cy, out, origin)) // from the vertex opposite to the list's half-edge
+          return false;
+      }
+      if(origin >= m_mesh.nv)
+        return true;                       // a source point
+      v = origin;
+    }
+    return false;
+  }
+
+  // Follows the straight path from the point (px, py) of the face of offer.halfedge (in its frame) to
+  // the image of offer.origin; appends the edge points and the origin; sets `origin`.
+  bool follow(const Offer& offer, double px, double py, std::vector<Trace_point>& out, Index& origin) const
+  {
+    const Mesh_arrays& m = m_mesh;
+    origin = offer.origin;
+    Index h = offer.halfedge;
+    double x;
+    if(offer.bend == offer.bend) // bent at an end of the window
+      x = offer.bend;
+    else
+    {
+      const double den = py - offer.sy;
+      x = den > 0. ? offer.sx + (px - offer.sx) * (-offer.sy / den) : px;
+    }
+    x = (std::min)((std::max)(x, 0.), m.geometry[h].length);
+    Trace_point p;
+    p.kind = Trace_point::ON_EDGE;
+    p.element = h;
+    p.x = x;
+    push(out, p);
+    double sx = offer.sx, sy = offer.sy;
+    for(Index step = 0; step < m.nf + 8; ++step)
+    {
+      // cross edge h into the face of its opposite o, in whose frame the image is above the edge
+      const Index o = m.opposite[h];
+      if(o == NO_INDEX)
+        return false;
+      const Halfedge_geometry& g = m.geometry[o];
+      const double xo = g.length - x;
+      sx = g.length - sx;
+      sy = -sy;
+      const Index f = Mesh_arrays::face(o);
+      if(reaches_origin(f, o, origin, out))
+        return true;
+      if(!(sy > 0.))
+        return false;
+      // leave through C-A or B-C, on the side of C opposite to the line
+      const double dx = sx - xo, dy = sy;
+      const double side = dx * g.cy - dy * (g.cx - xo);
+      double p0x, p0y, wx, wy;
+      Index e;
+      if(side >= 0.)
+      {
+        e = Mesh_arrays::next(o);  // B -> C
+        p0x = g.length; p0y = 0.; wx = g.cx - g.length; wy = g.cy;
+      }
+      else
+      {
+        e = Mesh_arrays::prev(o);  // C -> A
+        p0x = g.cx; p0y = g.cy; wx = -g.cx; wy = -g.cy;
+      }
+      const double den = dx * wy - dy * wx;
+      double v = den != 0. ? (dx * (0. - p0y) - dy * (xo - p0x)) / den : 0.;
+      v = (std::min)((std::max)(v, 0.), 1.);
+      const double w = std::sqrt(wx * wx + wy * wy);
+      if(!(w > 0.))
+        return false;
+      const double ux = wx / w, uy = wy / w;
+      // the image in the frame of e
+      const double rx = sx - p0x, ry = sy - p0y;
+      const double ex = rx * ux + ry * uy, ey = ux * ry - uy * rx;
+      h = e;
+      x = v * m.geometry[e].length;
+      sx = ex;
+      sy = ey;
+      p.element = e;
+      p.x = x;
+      push(out, p);
+    }
+    return false;
+  }
+
+  // Whether face f (entered through o) ends the straight part towards `origin`; appends its point.
+  bool reaches_origin(Index f, Index o, Index origin, std::vector<Trace_point>& out) const
+  {
+    const Mesh_arrays& m = m_mesh;
+    if(origin < m.nv)
+    {
+      if(m.source[Mesh_arrays::prev(o)] != origin)
+        return false;
+      push(out, vertex_point(origin));
+      return true;
+    }
+    const Seed& s = m_seeds[static_cast<std::size_t>(origin - m.nv)];
+    const bool in_this_face = (s.kind == Seed::IN_FACE && s.element == f)
+                              || (s.kind == Seed::ON_EDGE
+                                  && (Mesh_arrays::face(s.element) == f
+                                      || (m.opposite[s.element] != NO_INDEX && Mesh_arrays::face(m.opposite[s.element]) == f)));
+    if(!in_this_face)
+      return false;
+    straight_to(origin, out);
+    return true;
+  }
+
+  const Mesh_arrays& m_mesh;
+  const Path_record& m_record;
+  const std::vector<Seed>& m_seeds;
+};
+
+} // namespace internal
+} // namespace VTP_geodesics
+} // namespace CGAL
+
+#endif // CGAL_VTP_GEODESICS_INTERNAL_ENGINE_PATH_TRACE_H

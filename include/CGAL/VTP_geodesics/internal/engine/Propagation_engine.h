@@ -1,0 +1,178 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_ENGINE_PROPAGATION_ENGINE_H
+#define CGAL_VTP_GEODESICS_INTERNAL_ENGINE_PROPAGATION_ENGINE_H
+
+#include <CGAL/license/VTP_geodesics.h>
+
+#include <CGAL/VTP_geodesics/Propagation_statistics.h>
+#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/engine/Parallel_loop.h>
+#include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
+#include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
+#include <CGAL/VTP_geodesics/internal/engine/Sequential_loop.h>
+#include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
+
+#include <CGAL/tags.h>
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace CGAL {
+namespace VTP_geodesics {
+namespace internal {
+
+// One propagation engine, two orthogonal choices (and the seeding by sources):
+//
+// |                                      | never reset (exact) | reset every lambda h |
+// | Sequential_tag: vertex heap          | VTP                 | AVTP                 |
+// | Parallel_tag: buckets, K lists, T th.| PVTP                | PAVTP                |
+//
+// Seeding: Seeding.h; shared state and steps: Propagation_state.h; schedules: Vertex_schedule.h;
+// loops: Sequential_loop.h, Parallel_loop.h; reset policy: Window_reset.h.
+//
+// An engine is a workspace: it reads the mesh arrays (shared, read-only) and owns everything one
+// propagation writes, so that several engines can run on one mesh at the same time.
+class Propagation_engine
+{
+public:
+  template <class ConcurrencyTag>
+  void run(const Mesh_arrays& m, const std::vector<Seed>& seeds, std::vector<Target>&& targets,
+           const Propagation_settings& settings, int number_of_threads, Propagation_statistics& statistics)
+  {
+    const bool parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+#ifndef _OPENMP
+    static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                  "Parallel_tag is enabled but OpenMP is unavailable "
+                  "(link CGAL::VTP_geodesics_OpenMP_support, or compile with -fopenmp).");
+#endif
+    const auto t0 = std::chrono::steady_clock::now();
+    int threads = 1;
+    if(parallel)
+    {
+      threads = number_of_threads;
+#ifdef _OPENMP
+      if(threads <= 0)
+        threads = omp_get_max_threads();
+#endif
+      threads = (std::max)(1, (std::min)(threads, 126));
+    }
+    m_seeds = seeds;
+    m_state.start(m, settings, static_cast<std::size_t>(threads), std::move(targets));
+    if(parallel)
+    {
+      const double h = m.mean_edge_length;
+      m_state.schedule.start_buckets(h > 0. ? m.anisotropy / h : 1.);
+      seed_sources(m_state, seeds);
+      threads = m_parallel.run(m_state, threads);
+    }
+    else
+    {
+      m_state.schedule.start_heap();
+      seed_sources(m_state, seeds);
+      m_sequential.run(m_state);
+    }
+    apply_cutoff();
+    if(settings.unit != 1.)
+      for(double& d : m_state.dist)
+        d *= settings.unit;
+    const bool approximate = m_state.reset.is_active();
+    statistics = Propagation_statistics();
+    statistics.method = parallel ? (approximate ? "pavtp" : "pvtp") : (approximate ? "avtp" : "vtp");
+    statistics.threads = threads;
+    collect_statistics(parallel, statistics);
+    statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+
+  // the distances of the last run (per vertex, in the unit of the output: Propagation_settings::unit)
+  std::vector<double>& distances() { return m_state.dist; }
+  const std::vector<double>& distances() const { return m_state.dist; }
+  // the nearest-source labels of the last run (empty unless asked for; NO_INDEX where unreached)
+  const std::vector<Index>& labels() const { return m_state.label; }
+  // the distance of target t of the last run (+infinity if not final: beyond the limit or unreached)
+  double target_distance(std::size_t t) const
+  {
+    const Target& target = m_state.stop.targets()[t];
+    if(target.vertex != NO_INDEX)
+      return m_state.dist[target.vertex];
+    const double d = m_state.stop.target_value(t);
+    return d <= m_state.stop.cutoff() ? d * m_state.settings.unit : std::numeric_limits<double>::infinity();
+  }
+  std::size_t number_of_targets() const { return m_state.stop.targets().size(); }
+  // the sources, the targets and the trace-back record of the last run
+  const std::vector<Seed>& seeds() const { return m_seeds; }
+  const std::vector<Target>& targets() const { return m_state.stop.targets(); }
+  const Path_record& path_record() const { return m_state.record; }
+
+private:
+  // Distances that are not final when the propagation stopped early (or beyond the limit) become +infinity.
+  void apply_cutoff()
+  {
+    const double cutoff = m_state.stop.cutoff();
+    if(!(cutoff < std::numeric_limits<double>::infinity()))
+      return;
+    for(std::size_t v = 0; v < m_state.dist.size(); ++v)
+      if(m_state.dist[v] > cutoff)
+      {
+        m_state.dist[v] = std::numeric_limits<double>::infinity();
+        if(!m_state.label.empty())
+          m_state.label[v] = NO_INDEX;
+      }
+  }
+
+  void collect_statistics(bool parallel, Propagation_statistics& st) const
+  {
+    const Mesh_arrays& m = *m_state.mesh;
+    st.vertices = static_cast<std::size_t>(m.nv);
+    st.faces = static_cast<std::size_t>(m.nf);
+    st.windows_created = m_state.created;
+    st.windows_propagated = m_state.propagated;
+    st.peak_live_windows = m_state.store.peak_live_windows();
+    st.peak_window_bytes = m_state.store.peak_bytes();
+    st.vertices_processed = m_state.vertices_processed;
+    st.pseudo_sources = m_state.pseudo_sources;
+    st.resets = m_state.reset.number_of_resets();
+    st.stopped_early = m_state.stop.stopped_early();
+    if(parallel)
+    {
+      st.rounds = m_parallel.rounds;
+      st.parallel_rounds = m_parallel.parallel_rounds;
+      st.selection_seconds = m_parallel.selection_seconds;
+      st.propagation_seconds = m_parallel.propagation_seconds;
+      st.merge_seconds = m_parallel.merge_seconds;
+    }
+    for(double d : m_state.dist)
+      if(d < std::numeric_limits<double>::infinity())
+      {
+        ++st.reached_vertices;
+        st.max_distance = (std::max)(st.max_distance, d);
+      }
+  }
+
+  std::vector<Seed> m_seeds;
+  Propagation_state m_state;
+  Sequential_loop m_sequential;
+  Parallel_loop m_parallel;
+};
+
+} // namespace internal
+} // namespace VTP_geodesics
+} // namespace CGAL
+
+#endif // CGAL_VTP_GEODESICS_INTERNAL_ENGINE_PROPAGATION_ENGINE_H

@@ -1,0 +1,409 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_ENGINE_PROPAGATION_STATE_H
+#define CGAL_VTP_GEODESICS_INTERNAL_ENGINE_PROPAGATION_STATE_H
+
+#include <CGAL/license/VTP_geodesics.h>
+
+#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/Triangle_propagation.h>
+#include <CGAL/VTP_geodesics/internal/Window_storage.h>
+#include <CGAL/VTP_geodesics/internal/engine/Path_record.h>
+#include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
+#include <CGAL/VTP_geodesics/internal/engine/Vertex_schedule.h>
+#include <CGAL/VTP_geodesics/internal/engine/Window_reset.h>
+
+#include <CGAL/assertions.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace VTP_geodesics {
+namespace internal {
+
+// What the caller asks of one propagation, in the engine's unit of length.
+struct Propagation_settings
+{
+  double minimum_window_ratio = 1e-9;  // windows shorter than this times their edge are dropped
+  double reset_step = std::numeric_limits<double>::infinity();  // lambda h (AVTP / PAVTP)
+  double reset_guard = 0.;             // lambda_g h
+  bool want_labels = false;            // nearest-source labels
+  double limit = std::numeric_limits<double>::infinity();  // distance limit
+  bool stop_at_targets = false;        // stop once the targets are final
+  bool record_paths = false;           // keep what the path trace-back needs
+  double unit = 1.;                    // the engine's unit of length, in the unit of the output distances
+};
+
+// The buffers of one thread: a list being propagated, its children, and counters.
+struct alignas(64) Propagation_scratch
+{
+  std::vector<Window> in, out_ac, out_cb;
+  std::vector<double> xc, reach;
+  std::size_t propagated = 0, created = 0;
+  Stop_events events;
+};
+
+// The state of one propagation and the steps that the sequential and the parallel loops share.
+//
+// A distance upper bound per vertex (always the length of a real surface path), the set of swept faces
+// (the one-rings of the vertices taken so far), per half-edge the list of windows waiting to cross its
+// face, the schedule of the vertices waiting to be taken, and the reset policy. A vertex taken from the
+// schedule first emits windows if it is a pseudo-source (saddle or boundary vertex, or made one by a
+// reset), then sweeps its one-ring: every waiting list whose face is swept is queued; the loops
+// propagate the queued lists, and those they feed inside the swept region, until every window waits on
+// the wavefront (the border of the swept region).
+//
+// Exactness (without resets) does not depend on the order: windows are only cut where another real path
+// is shorter; the order only decides how many windows are created.
+class Propagation_state
+{
+public:
+  // ------------------------------------------------------------------------------------------
+  // per-run data (read by the loops)
+  // ------------------------------------------------------------------------------------------
+  const Mesh_arrays* mesh = nullptr;
+  Propagation_settings settings;
+  std::vector<double> dist;            // per vertex
+  std::vector<Index> label;            // per vertex, the nearest source found (if settings.want_labels)
+  std::vector<Index> seed_label;       // per point source (origin nv + i), its label
+  std::vector<unsigned char> swept;    // per face
+  std::vector<unsigned char> queued;   // per half-edge: its list is in a queue
+  std::vector<double> processed;       // per vertex: the distance it was taken at, -1 if never
+  Window_storage store;
+  Vertex_schedule schedule;
+  Window_reset reset;
+  Stop_rule stop;
+  Path_record record;
+  std::vector<Index> fifo;             // queued lists (sequential scheduling: FIFO order)
+
+  // counters
+  std::size_t created = 0, propagated = 0, vertices_processed = 0, pseudo_sources = 0;
+
+  // Prepares a run on `m` (the schedule is started by the loop).
+  void start(const Mesh_arrays& m, const Propagation_settings& s, std::size_t pools, std::vector<Target>&& targets)
+  {
+    mesh = &m;
+    settings = s;
+    const std::size_t nh = m.source.size();
+    dist.assign(static_cast<std::size_t>(m.nv), std::numeric_limits<double>::infinity());
+    if(s.want_labels)
+      label.assign(static_cast<std::size_t>(m.nv), NO_INDEX);
+    else
+      label.clear();
+    seed_label.clear();
+    swept.assign(static_cast<std::size_t>(m.nf), 0);
+    queued.assign(nh, 0);
+    processed.assign(static_cast<std::size_t>(m.nv), -1.);
+    store.reset(nh, pools);
+    fifo.clear();
+    reset.start(s.reset_step, s.reset_guard, static_cast<std::size_t>(m.nv));
+    const std::size_t number_of_targets = targets.size();
+    stop.start(m, s.limit, s.stop_at_targets, std::move(targets));
+    record.start(s.record_paths, static_cast<std::size_t>(m.nv), number_of_targets);
+    m_events.clear();
+    created = propagated = vertices_processed = pseudo_sources = 0;
+  }
+
+  // The label of a window origin.
+  Index label_of_origin(Index origin) const
+  {
+    const Index nv = mesh->nv;
+    return origin < nv ? label[origin] : seed_label[static_cast<std::size_t>(origin - nv)];
+  }
+
+  // ------------------------------------------------------------------------------------------
+  // shared steps
+  // ------------------------------------------------------------------------------------------
+
+  // Lowers the distance of v to what `offer` offers if that is shorter, and schedules v.
+  void light(Index v, const Offer& offer)
+  {
+    if(offer.distance < dist[v])
+    {
+      dist[v] = offer.distance;
+      if(!label.empty())
+        label[v] = label_of_origin(offer.origin);
+      if(record.is_active())
+        record.vertex[v] = offer;
+      schedule.push(v, offer.distance);
+    }
+  }
+
+  void light(Index v, double value, Index origin) { light(v, straight_offer(value, origin)); }
+
+  // Target t is reached at distance d straight from `origin` (serial).
+  void offer_to_target(Index t, double d, Index origin)
+  {
+    if(stop.offer(t, d) && record.is_active())
+      record.target[static_cast<std::size_t>(t)] = straight_offer(d, origin);
+  }
+
+  void enqueue(Index h)
+  {
+    if(!queued[h])
+    {
+      queued[h] = 1;
+      fifo.push_back(h);
+    }
+  }
+
+  // Processes vertex v taken from the schedule at distance dv; returns false for a stale entry.
+  bool take_vertex(Index v, double dv)
+  {
+    if(dv > dist[v] || processed[v] == dv)
+      return false; // stale entry, or already processed at this distance
+    if(reset.is_due(dv))
+      reset.apply(v, dv, *mesh, schedule, dist, processed, store, [&](Index h) { stop.on_list_emptied(h); });
+    processed[v] = dv;
+    ++vertices_processed;
+    if(mesh->is_pseudo_source[v] || reset.is_forced(v))
+      emit_pseudo_source(v);
+    sweep(v);
+    reach_targets_through(v);
+    return true;
+  }
+
+  // The targets of v and of the faces around v get what v offers (serial).
+  void reach_targets_through(Index v)
+  {
+    if(!stop.has_targets())
+      return;
+    stop.on_vertex_processed(v, dist[v], [&](Index t, Index) {
+      if(record.is_active())
+        record.target[static_cast<std::size_t>(t)] = straight_offer(stop.target_value(static_cast<std::size_t>(t)), v);
+    });
+  }
+
+  // A (pseudo-)source v: its neighbours are reached straight, and a window covering each edge opposite
+  // to v starts towards the face beyond that edge. Through a zero-area face, v reaches the face beyond as
+  // a point of its edge (emit_through_degenerate_faces()).
+  void emit_pseudo_source(Index v)
+  {
+    const Mesh_arrays& m = *mesh;
+    const double dv = dist[v];
+    if(dv > 0.)
+      ++pseudo_sources;
+    for(Index c = m.corner_begin[v]; c < m.corner_begin[v + 1]; ++c)
+    {
+      const Index h = m.corners[c];
+      light(m.target(h), dv + m.geometry[h].length, v);
+      light(m.source[Mesh_arrays::prev(h)], dv + m.geometry[h].l_prev, v);
+    }
+    for(Index c = m.corner_begin[v]; c < m.corner_begin[v + 1]; ++c)
+    {
+      const Index h = m.corners[c];
+      const Index e = Mesh_arrays::next(h);   // B -> C, the edge opposite to v
+      const Index o = m.opposite[e];          // C -> B, in the face beyond
+      if(o == NO_INDEX)
+        continue;
+      const Halfedge_geometry& ge = m.geometry[e];
+      if(m.is_degenerate_face[Mesh_arrays::face(h)])
+      {
+        // v lies on the line of B-C (up to rounding): no window can start from it
+        emit_point(o, ge.length - ge.cx, dv, v);
+        continue;
+      }
+      Window w;
+      w.b0 = 0.;
+      w.b1 = ge.length;
+      w.sx = ge.length - ge.cx;
+      w.sy = -ge.cy;
+      w.sigma = dv;
+      w.origin = v;
+      if(!(w.sy < 0.))
+        continue;
+      store_emitted(o, w);
+    }
+  }
+
+  // A point source at distance dv lying at abscissa t on the half-edge o: if it is inside the edge, it is
+  // a point source for face(o) (the windows it starts cover the two other edges of face(o)). When face(o)
+  // has zero area, the point is carried on through the edge of face(o) that contains it (lighting the
+  // third vertex, on the line), a bounded number of times.
+  void emit_point(Index o, double t, double dv, Index origin)
+  {
+    const Mesh_arrays& m = *mesh;
+    for(int step = 0; step < 64 && o != NO_INDEX; ++step)
+    {
+      const Halfedge_geometry& g = m.geometry[o];
+      if(!(t > 0. && t < g.length))
+        return;
+      const Index c = m.source[Mesh_arrays::prev(o)];
+      const Index h_ac = m.opposite[Mesh_arrays::prev(o)];
+      const Index h_cb = m.opposite[Mesh_arrays::next(o)];
+      if(!m.is_degenerate_face[Mesh_arrays::face(o)])
+      {
+        m_emit_ac.clear();
+        m_emit_cb.clear();
+        light(c, propagate_edge_point(g, t, dv, origin, h_ac != NO_INDEX, h_cb != NO_INDEX, m_emit_ac, m_emit_cb),
+              origin);
+        for(const Window& w : m_emit_ac)
+          store_emitted(h_ac, w);
+        for(const Window& w : m_emit_cb)
+          store_emitted(h_cb, w);
+        return;
+      }
+      const double dx = g.cx - t;
+      light(c, dv + std::sqrt(dx * dx + g.cy * g.cy), origin);
+      if(t < g.cx)
+        o = h_ac;            // A -> C, same abscissa
+      else if(t > g.cx)
+      {
+        o = h_cb;            // C -> B, from C
+        t -= g.cx;
+      }
+      else
+        return;              // the point is C itself
+    }
+  }
+
+  // Stores a window started by a (pseudo-)source on the list of h (trimmed by the ends of h).
+  void store_emitted(Index h, Window w)
+  {
+    const Mesh_arrays& m = *mesh;
+    const double length = m.geometry[h].length;
+    if(!trim_by_vertices(w, length, dist[m.source[h]], dist[m.target(h)]))
+      return;
+    if(!(w.b1 - w.b0 > settings.minimum_window_ratio * length))
+      return;
+    store.push(h, w);
+    ++created;
+    if(stop.is_tracking())
+    {
+      stop.on_windows_stored(h, &w, &w + 1, m_events);
+      stop.merge(m_events);
+    }
+    if(swept[Mesh_arrays::face(h)])
+      enqueue(h);
+  }
+
+  // Adds the one-ring of v to the swept region; the waiting lists of newly swept faces are queued.
+  void sweep(Index v)
+  {
+    const Mesh_arrays& m = *mesh;
+    for(Index c = m.corner_begin[v]; c < m.corner_begin[v + 1]; ++c)
+    {
+      const Index f = Mesh_arrays::face(m.corners[c]);
+      if(swept[f])
+        continue;
+      swept[f] = 1;
+      for(Index k = 0; k < 3; ++k)
+        if(!store.empty(3 * f + k))
+          enqueue(3 * f + k);
+    }
+  }
+
+  // Filters the list of h held in s.in and propagates it across face(h): the children are left in
+  // s.out_ac / s.out_cb; returns what the list offers to the opposite vertex. Reads the distances and
+  // the mesh, and writes only to s and to the targets of face(h) (and their records), so that the
+  // parallel scheduling can call it from many threads for lists of different faces.
+  Offer propagate_one(Index h, Propagation_scratch& s)
+  {
+    const Mesh_arrays& m = *mesh;
+    const Halfedge_geometry& g = m.geometry[h];
+    const Index a = m.source[h];
+    const Index b = m.source[Mesh_arrays::next(h)];
+    filter_list(s.in, g.length, dist[a], dist[b], settings.minimum_window_ratio * g.length, s.reach);
+    Offer offer;
+    if(s.in.empty())
+      return offer;
+    if(stop.has_targets())
+      stop.on_list_crossing(h, s.in, s.events, [&](Index t, const Window& w) {
+        if(record.is_active())
+          record.target[static_cast<std::size_t>(t)] = offer_of_window(h, w, stop.targets()[static_cast<std::size_t>(t)],
+                                                                      stop.target_value(static_cast<std::size_t>(t)));
+      });
+    const Index h_cb = m.opposite[Mesh_arrays::next(h)];
+    const Index h_ac = m.opposite[Mesh_arrays::prev(h)];
+    const Propagation_result r = propagate_list(g, s.in, settings.minimum_window_ratio, h_ac != NO_INDEX,
+                                                h_cb != NO_INDEX, s.out_ac, s.out_cb, s.xc);
+    s.propagated += r.propagated;
+    offer.distance = r.distance_to_C;
+    if(offer.distance < std::numeric_limits<double>::infinity())
+    {
+      const Window& w = s.in[r.best];
+      offer.origin = w.origin;
+      if(record.is_active())
+      {
+        offer.halfedge = h;
+        offer.sx = w.sx;
+        offer.sy = w.sy;
+        // as in propagate_list(): straight when C is seen through the window, else bent at its nearer end
+        const double den = g.cy - w.sy;
+        const double xc = den > 0. ? w.sx + (g.cx - w.sx) * (-w.sy / den) : g.cx;
+        if(!(xc >= w.b0 && xc <= w.b1))
+          offer.bend = (std::min)((std::max)(xc, w.b0), w.b1);
+      }
+    }
+    return offer;
+  }
+
+  // The offer of window w of the list of h to target t (as Stop_rule::on_list_crossing() evaluated it).
+  static Offer offer_of_window(Index h, const Window& w, const Target& t, double distance)
+  {
+    Offer o;
+    o.distance = distance;
+    o.origin = w.origin;
+    o.halfedge = h;
+    o.sx = w.sx;
+    o.sy = w.sy;
+    const std::size_t k = static_cast<std::size_t>(h % 3);
+    const double den = t.y[k] - w.sy;
+    const double xc = den > 0. ? w.sx + (t.x[k] - w.sx) * (-w.sy / den) : t.x[k];
+    if(!(xc >= w.b0 && xc <= w.b1))
+      o.bend = (std::min)((std::max)(xc, w.b0), w.b1);
+    return o;
+  }
+
+  // Appends children to the list of h with blocks of pool p; if the face of h is swept, h is queued into
+  // `to_queue` (the FIFO, or the queue of a face unit: the caller owns every list it writes). Returns the
+  // number of windows stored.
+  template <class Queue>
+  std::size_t store_children(Index h, const std::vector<Window>& children, std::size_t p, Queue& to_queue,
+                             Stop_events& events)
+  {
+    if(children.empty())
+      return 0;
+    for(const Window& w : children)
+      store.push(h, w, p);
+    if(stop.is_tracking())
+      stop.on_windows_stored(h, children.data(), children.data() + children.size(), events);
+    if(swept[Mesh_arrays::face(h)] && !queued[h])
+    {
+      queued[h] = 1;
+      to_queue.push_back(h);
+    }
+    return children.size();
+  }
+
+  // Stores the children of the list of h left in s by propagate_one(), as store_children() does.
+  template <class Queue>
+  void store_all_children(Index h, Propagation_scratch& s, std::size_t p, Queue& to_queue)
+  {
+    const Mesh_arrays& m = *mesh;
+    s.created += store_children(m.opposite[Mesh_arrays::prev(h)], s.out_ac, p, to_queue, s.events);
+    s.created += store_children(m.opposite[Mesh_arrays::next(h)], s.out_cb, p, to_queue, s.events);
+  }
+
+private:
+  std::vector<Window> m_emit_ac, m_emit_cb;
+  Stop_events m_events;  // of the serial steps
+};
+
+} // namespace internal
+} // namespace VTP_geodesics
+} // namespace CGAL
+
+#endif // CGAL_VTP_GEODESICS_INTERNAL_ENGINE_PROPAGATION_STATE_H

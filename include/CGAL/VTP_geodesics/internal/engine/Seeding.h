@@ -1,0 +1,289 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_ENGINE_SEEDING_H
+#define CGAL_VTP_GEODESICS_INTERNAL_ENGINE_SEEDING_H
+
+#include <CGAL/license/VTP_geodesics.h>
+
+#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/Window_storage.h>
+#include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
+
+#include <CGAL/assertions.h>
+
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace VTP_geodesics {
+namespace internal {
+
+// A source of the propagation, at distance 0: a vertex, a point inside an edge, or a point inside a face.
+// `label` is the index of the source in the user's list (the nearest-source label it gives).
+struct Seed
+{
+  enum Kind { AT_VERTEX, ON_EDGE, IN_FACE };
+  Kind kind = AT_VERTEX;
+  Index element = NO_INDEX;  // AT_VERTEX: the vertex; ON_EDGE: a half-edge of the edge; IN_FACE: the face
+  double x = 0., y = 0.;     // ON_EDGE: abscissa on the half-edge; IN_FACE: the point in the frame of 3f
+  Index label = 0;
+};
+
+// The seed of the point of face f with barycentric coordinates (b0, b1, b2) with respect to the vertices
+// source(3f), source(3f+1), source(3f+2) (non-negative, sum 1). A point with two zero coordinates is the
+// vertex it denotes; a point with one zero coordinate is a point of an edge, given on the lower of the two
+// half-edges of the edge, so that the same point gives the same seed from either face. A point of a face
+// of (almost) zero area is taken on the longest edge of the face.
+inline Seed seed_from_barycentric(const Mesh_arrays& m, Index f, double b0, double b1, double b2, Index label)
+{
+  Seed s;
+  s.label = label;
+  const Index h0 = 3 * f;
+  const double b[3] = { b0, b1, b2 };
+  // vertices
+  for(int k = 0; k < 3; ++k)
+    if(b[(k + 1) % 3] == 0. && b[(k + 2) % 3] == 0.)
+    {
+      s.kind = Seed::AT_VERTEX;
+      s.element = m.source[h0 + k];
+      return s;
+    }
+  auto on_edge = [&](Index h, double t) {
+    const double length = m.geometry[h].length;
+    if(!(t > 0.))
+    {
+      s.kind = Seed::AT_VERTEX;
+      s.element = m.source[h];
+      return s;
+    }
+    if(!(t < length))
+    {
+      s.kind = Seed::AT_VERTEX;
+      s.element = m.target(h);
+      return s;
+    }
+    const Index o = m.opposite[h];
+    s.kind = Seed::ON_EDGE;
+    if(o != NO_INDEX && o < h)
+    {
+      s.element = o;
+      s.x = length - t;
+    }
+    else
+    {
+      s.element = h;
+      s.x = t;
+    }
+    return s;
+  };
+  // edges: half-edge 3f+k goes from vertex k to vertex k+1; the point is on it when the third coordinate is 0
+  for(int k = 0; k < 3; ++k)
+    if(b[(k + 2) % 3] == 0.)
+      return on_edge(h0 + k, b[(k + 1) % 3] * m.geometry[h0 + k].length);
+  // the point in the frame of h0: A = (0,0), B = (L,0), C = (cx,cy)
+  const Halfedge_geometry& g = m.geometry[h0];
+  const double px = b1 * g.length + b2 * g.cx, py = b2 * g.cy;
+  if(m.is_degenerate_face[f])
+  {
+    // on the line of the longest edge: project
+    int k = 0;
+    for(int j = 1; j < 3; ++j)
+      if(m.geometry[h0 + j].length > m.geometry[h0 + k].length)
+        k = j;
+    const double vx[3] = { 0., g.length, g.cx }, vy[3] = { 0., 0., g.cy };
+    const double ex = vx[(k + 1) % 3] - vx[k], ey = vy[(k + 1) % 3] - vy[k];
+    const double e2 = ex * ex + ey * ey;
+    const double t = e2 > 0. ? ((px - vx[k]) * ex + (py - vy[k]) * ey) / std::sqrt(e2) : 0.;
+    return on_edge(h0 + k, t);
+  }
+  s.kind = Seed::IN_FACE;
+  s.element = f;
+  s.x = px;
+  s.y = py;
+  return s;
+}
+
+// The coordinates of the point (x, y) of the frame of half-edge 3f + j in the frame of half-edge 3f.
+inline void to_face_frame(const Mesh_arrays& m, Index f, int j, double x, double y, double& px, double& py)
+{
+  const Halfedge_geometry& g = m.geometry[3 * f];
+  const double vx[3] = { 0., g.length, g.cx }, vy[3] = { 0., 0., g.cy };
+  const double ex = vx[(j + 1) % 3] - vx[j], ey = vy[(j + 1) % 3] - vy[j];
+  const double e = std::sqrt(ex * ex + ey * ey);
+  const double ux = e > 0. ? ex / e : 1., uy = e > 0. ? ey / e : 0.;
+  px = vx[j] + x * ux - y * uy;
+  py = vy[j] + x * uy + y * ux;
+}
+
+// The target at the point (px, py) of face f, given in the frame of half-edge 3f: its coordinates in the
+// frames of the three half-edges of f, and its distances to the corners.
+inline Target face_target(const Mesh_arrays& m, Index f, double px, double py)
+{
+  Target t;
+  t.face = f;
+  const Halfedge_geometry& g = m.geometry[3 * f];
+  const double vx[3] = { 0., g.length, g.cx }, vy[3] = { 0., 0., g.cy };
+  for(int k = 0; k < 3; ++k)
+  {
+    const double ex = vx[(k + 1) % 3] - vx[k], ey = vy[(k + 1) % 3] - vy[k];
+    const double e = std::sqrt(ex * ex + ey * ey);
+    const double ux = e > 0. ? ex / e : 1., uy = e > 0. ? ey / e : 0.;
+    const double rx = px - vx[k], ry = py - vy[k];
+    t.x[k] = rx * ux + ry * uy;
+    t.y[k] = (std::max)(0., ux * ry - uy * rx);
+    t.corner_distance[k] = std::sqrt(rx * rx + ry * ry);
+  }
+  return t;
+}
+
+// The target at the point of face f with barycentric coordinates (b0, b1, b2) (see seed_from_barycentric()).
+// A point with two zero coordinates is the vertex it denotes. A point of a face of (almost) zero area is
+// taken on the longest edge of the face, in the face on the other side of that edge when that one is not
+// degenerate (windows cannot cross a face of zero area).
+inline Target target_from_barycentric(const Mesh_arrays& m, Index f, double b0, double b1, double b2)
+{
+  const Index h0 = 3 * f;
+  const double b[3] = { b0, b1, b2 };
+  for(int k = 0; k < 3; ++k)
+    if(b[(k + 1) % 3] == 0. && b[(k + 2) % 3] == 0.)
+    {
+      Target t;
+      t.vertex = m.source[h0 + k];
+      return t;
+    }
+  const Halfedge_geometry& g = m.geometry[h0];
+  double px = b1 * g.length + b2 * g.cx, py = b2 * g.cy;
+  if(m.is_degenerate_face[f])
+  {
+    int k = 0;
+    for(int j = 1; j < 3; ++j)
+      if(m.geometry[h0 + j].length > m.geometry[h0 + k].length)
+        k = j;
+    const double vx[3] = { 0., g.length, g.cx }, vy[3] = { 0., 0., g.cy };
+    const double ex = vx[(k + 1) % 3] - vx[k], ey = vy[(k + 1) % 3] - vy[k];
+    const double e = std::sqrt(ex * ex + ey * ey);
+    const double length = m.geometry[h0 + k].length;
+    double t = e > 0. ? ((px - vx[k]) * ex + (py - vy[k]) * ey) / e : 0.;
+    t = (std::min)((std::max)(t, 0.), length);
+    const Index o = m.opposite[h0 + k];
+    if(o != NO_INDEX && !m.is_degenerate_face[Mesh_arrays::face(o)])
+    {
+      const Index g2 = Mesh_arrays::face(o);
+      to_face_frame(m, g2, static_cast<int>(o % 3), length - t, 0., px, py);
+      return face_target(m, g2, px, py);
+    }
+    to_face_frame(m, f, k, t, 0., px, py);
+  }
+  return face_target(m, f, px, py);
+}
+
+// Starts the propagation from `seeds`: the vertices get distance 0 and act as pseudo-sources; a point
+// inside an edge or a face reaches the vertices of its face(s) straight and starts a window across each
+// edge of its face(s). The origin of the windows of point source i is nv + i.
+inline void seed_sources(Propagation_state& st, const std::vector<Seed>& seeds)
+{
+  const Mesh_arrays& m = *st.mesh;
+  st.seed_label.resize(seeds.size());
+  for(std::size_t i = 0; i < seeds.size(); ++i)
+    st.seed_label[i] = seeds[i].label;
+  // vertices first, all at distance 0 before any of them emits; a vertex given twice is one source
+  // (its label is the first one)
+  std::vector<Index> vertices;
+  for(const Seed& s : seeds)
+    if(s.kind == Seed::AT_VERTEX && st.dist[s.element] > 0.)
+    {
+      st.dist[s.element] = 0.;
+      st.processed[s.element] = 0.;
+      if(!st.label.empty())
+        st.label[s.element] = s.label;
+      vertices.push_back(s.element);
+    }
+  for(Index v : vertices)
+  {
+    st.emit_pseudo_source(v);
+    st.sweep(v);
+    st.reach_targets_through(v);
+  }
+  for(std::size_t i = 0; i < seeds.size(); ++i)
+  {
+    const Seed& s = seeds[i];
+    const Index origin = m.nv + static_cast<Index>(i);
+    if(s.kind == Seed::AT_VERTEX)
+      continue;
+    if(s.kind == Seed::ON_EDGE)
+    {
+      const Index h = s.element;
+      const double length = m.geometry[h].length;
+      st.light(m.source[h], s.x, origin);
+      st.light(m.target(h), length - s.x, origin);
+      st.emit_point(h, s.x, 0., origin);
+      if(m.opposite[h] != NO_INDEX)
+        st.emit_point(m.opposite[h], length - s.x, 0., origin);
+      // targets in the faces of the edge are reached straight
+      const Index sides[2] = { h, m.opposite[h] };
+      const double abscissa[2] = { s.x, length - s.x };
+      for(int j = 0; j < 2; ++j)
+        if(sides[j] != NO_INDEX)
+          st.stop.for_each_target_in_face(Mesh_arrays::face(sides[j]), [&](Index t) {
+            const Target& target = st.stop.targets()[static_cast<std::size_t>(t)];
+            const std::size_t k = static_cast<std::size_t>(sides[j] % 3);
+            const double dx = target.x[k] - abscissa[j], dy = target.y[k];
+            st.offer_to_target(t, std::sqrt(dx * dx + dy * dy), origin);
+          });
+    }
+    else
+    {
+      const Index h0 = 3 * s.element;
+      const Halfedge_geometry& g = m.geometry[h0];
+      const double vx[3] = { 0., g.length, g.cx }, vy[3] = { 0., 0., g.cy };
+      for(int k = 0; k < 3; ++k)
+      {
+        const double dx = s.x - vx[k], dy = s.y - vy[k];
+        st.light(m.source[h0 + k], std::sqrt(dx * dx + dy * dy), origin);
+      }
+      st.stop.for_each_target_in_face(s.element, [&](Index t) {
+        const Target& target = st.stop.targets()[static_cast<std::size_t>(t)];
+        const double dx = target.x[0] - s.x, dy = target.y[0] - s.y;
+        st.offer_to_target(t, std::sqrt(dx * dx + dy * dy), origin);
+      });
+      for(int k = 0; k < 3; ++k)
+      {
+        const Index o = m.opposite[h0 + k];
+        if(o == NO_INDEX)
+          continue;
+        // the point in the frame of h0 + k (from vertex k to vertex k+1), then in the frame of its opposite
+        const double ex = vx[(k + 1) % 3] - vx[k], ey = vy[(k + 1) % 3] - vy[k];
+        const double e = std::sqrt(ex * ex + ey * ey);
+        if(!(e > 0.))
+          continue;
+        const double ux = ex / e, uy = ey / e;
+        const double rx = s.x - vx[k], ry = s.y - vy[k];
+        const double x = rx * ux + ry * uy, y = ux * ry - uy * rx;
+        Window w;
+        w.b0 = 0.;
+        w.b1 = m.geometry[o].length;
+        w.sx = w.b1 - x;
+        w.sy = -y;
+        w.sigma = 0.;
+        w.origin = origin;
+        if(w.sy < 0.)
+          st.store_emitted(o, w);
+      }
+    }
+  }
+}
+
+} // namespace internal
+} // namespace VTP_geodesics
+} // namespace CGAL
+
+#endif // CGAL_VTP_GEODESICS_INTERNAL_ENGINE_SEEDING_H
