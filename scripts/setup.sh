@@ -2,8 +2,10 @@
 # Installs everything needed to build, test and benchmark VTP_geodesics on a fresh Debian 12
 # machine: compiler, CMake, CGAL 5.5 (header-only) and its dependencies, GoogleTest, Python with
 # matplotlib (benchmark plots, and the colour map of the tools, sampled at configure time), cairo, libpng and a
-# font for the tools' pictures, and Doxygen for the manual (`doc` target). Safe to run again (apt-get install
-# is idempotent).
+# font for the tools' pictures, Doxygen for the manual (`doc` target), and for vtp_distance_matrix: HDF5 (the
+# serial C library: all MPI ranks write the one file through MPI-IO, see apps/vtp_distance_matrix/matrix_store.h),
+# Open MPI, and h5py and SciPy to read its files back in the tests. Safe to run again (apt-get install is
+# idempotent).
 set -euo pipefail
 
 PACKAGES=(
@@ -22,6 +24,12 @@ PACKAGES=(
   libcairo2-dev
   fonts-dejavu-core
   doxygen
+  libhdf5-dev
+  libopenmpi-dev
+  openmpi-bin
+  python3-h5py
+  python3-numpy
+  python3-scipy
 )
 
 if [ "$(id -u)" -eq 0 ]; then

@@ -1,0 +1,37 @@
+// vtp_distance_matrix: command-line arguments.
+
+#ifndef VTP_DISTANCE_MATRIX_ARGUMENTS_H
+#define VTP_DISTANCE_MATRIX_ARGUMENTS_H
+
+#include <limits>
+#include <ostream>
+#include <string>
+
+namespace vtp_matrix {
+
+struct Arguments
+{
+  std::string mesh;
+  std::string sources;      // "all", "A:B", "V,V,...", or a file name (see source_list.h)
+  std::string output;
+  bool float32 = false;
+  bool has_max_distance = false;  // with a distance limit, the rows are sparse (CSR)
+  double max_distance = std::numeric_limits<double>::infinity();
+  bool approximate = false;       // --method avtp
+  double lambda = 8.;             // AVTP reset period (mean edge lengths), --lambda
+  bool has_lambda = false;
+  int threads = 0;                // 0: OpenMP's default
+  bool resume = false;
+  bool force = false;
+  int progress = -1;              // -1: on a terminal only; 0: --quiet; 1: --progress
+  bool help = false;
+};
+
+// Throws Tool_error on any bad argument.
+Arguments parse_arguments(int argc, char** argv);
+
+void print_usage(std::ostream& os);
+
+} // namespace vtp_matrix
+
+#endif // VTP_DISTANCE_MATRIX_ARGUMENTS_H

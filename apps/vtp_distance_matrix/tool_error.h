@@ -1,0 +1,24 @@
+// vtp_distance_matrix: the one error type of the tool.
+//
+// Every error the tool reports (bad arguments, unreadable mesh, bad source list, output that cannot
+// be written, a resume against another run, a full disk) is a Tool_error: main() prints its message as
+// one line "vtp_distance_matrix: error: ..." and exits with code 2.
+
+#ifndef VTP_DISTANCE_MATRIX_TOOL_ERROR_H
+#define VTP_DISTANCE_MATRIX_TOOL_ERROR_H
+
+#include <stdexcept>
+#include <string>
+
+namespace vtp_matrix {
+
+constexpr const char* program_name = "vtp_distance_matrix";
+
+struct Tool_error : std::runtime_error
+{
+  explicit Tool_error(const std::string& what) : std::runtime_error(what) {}
+};
+
+} // namespace vtp_matrix
+
+#endif // VTP_DISTANCE_MATRIX_TOOL_ERROR_H

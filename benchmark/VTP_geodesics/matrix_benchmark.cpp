@@ -1,0 +1,128 @@
+// matrix_benchmark: the row computation of vtp_distance_matrix, timed side by side (no file output).
+//
+//   matrix_benchmark [--rows K] [--repeat R] [--threads T] MESH
+//
+// For K sources spread over the vertices of MESH, R times in turn (interleaved, so that a change of
+// the machine's load hits every variant alike):
+//   single    one Geodesic_distance_solver, compute() from each source in turn (no output map; the row
+//             read with distances()): the library's single-source call;
+//   batch 1   compute_rows() of vtp_distance_matrix (apps/vtp_distance_matrix/row_batch.h) on one
+//             thread: the library's batch call compute_each() on a new solver, each row copied to file
+//             order and handed to a sink (here: converted to float32, as a dense float32 output does);
+//   batch T   the same on T threads (default 2).
+// Prints the median time per source of each, rows per second, and the ratios. Writing the HDF5 file
+// is measured with the tool itself (see README.md, "Many sources").
+
+#include "mesh_input.h"
+#include "row_batch.h"
+
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+using namespace vtp_matrix;
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double median(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0. : v[v.size() / 2];
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  std::size_t rows = 100;
+  int repeat = 3, threads = 2;
+  std::string file;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if(a == "--rows" && i + 1 < argc) rows = static_cast<std::size_t>(std::atol(argv[++i]));
+    else if(a == "--repeat" && i + 1 < argc) repeat = std::atoi(argv[++i]);
+    else if(a == "--threads" && i + 1 < argc) threads = std::atoi(argv[++i]);
+    else if(!a.empty() && a[0] != '-' && file.empty()) file = a;
+    else
+    {
+      std::fprintf(stderr, "usage: matrix_benchmark [--rows K] [--repeat R] [--threads T] MESH\n");
+      return 2;
+    }
+  }
+  if(file.empty() || rows == 0 || repeat < 1 || threads < 1)
+  {
+    std::fprintf(stderr, "usage: matrix_benchmark [--rows K] [--repeat R] [--threads T] MESH\n");
+    return 2;
+  }
+  Mesh_input input;
+  try
+  {
+    read_mesh_input(file, input);
+  }
+  catch(const Tool_error& e)
+  {
+    std::fprintf(stderr, "matrix_benchmark: %s\n", e.what());
+    return 2;
+  }
+  const std::size_t nv = input.file_vertices;
+  rows = (std::min)(rows, nv);
+  std::vector<std::int64_t> sources, all_rows;
+  for(std::size_t i = 0; i < rows; ++i)
+  {
+    sources.push_back(static_cast<std::int64_t>(i * nv / rows));
+    all_rows.push_back(static_cast<std::int64_t>(i));
+  }
+  std::printf("# %s: %zu vertices, %zu rows, %d repeats, batch threads 1 and %d\n", file.c_str(), nv, rows,
+              repeat, threads);
+
+  std::vector<double> single, batch1, batchT;
+  double checksum = 0.;  // keeps the sinks' work alive
+  CGAL::VTP_geodesics::Geodesic_distance_solver<Mesh> solver(input.mesh);
+  const CGAL::Constant_property_map<Vertex_index, double> no_map;
+  std::vector<float> row32(nv);
+  auto sink = [&](std::int64_t, std::int64_t, const std::vector<double>& d) {
+    for(std::size_t j = 0; j < nv; ++j)
+      row32[j] = static_cast<float>(d[j]);
+    checksum += row32[nv / 2];
+  };
+  for(int r = 0; r < repeat; ++r)
+  {
+    auto t0 = std::chrono::steady_clock::now();
+    for(std::int64_t s : sources)
+    {
+      solver.compute<CGAL::Sequential_tag>(no_map, input.mesh_vertices_of(static_cast<std::size_t>(s)));
+      checksum += solver.distances()[nv / 2];
+    }
+    single.push_back(seconds_since(t0) / static_cast<double>(rows));
+
+    t0 = std::chrono::steady_clock::now();
+    compute_rows(input, sources, all_rows, Row_method(), 1, sink);
+    batch1.push_back(seconds_since(t0) / static_cast<double>(rows));
+
+    t0 = std::chrono::steady_clock::now();
+    compute_rows(input, sources, all_rows, Row_method(), threads, sink);
+    batchT.push_back(seconds_since(t0) / static_cast<double>(rows));
+    std::printf("# repeat %d: single %.6f s, batch 1 %.6f s, batch %d %.6f s per source\n", r + 1, single.back(),
+                batch1.back(), threads, batchT.back());
+  }
+  const double s = median(single), b1 = median(batch1), bT = median(batchT);
+  std::printf("variant   seconds/source  rows/s\n");
+  std::printf("single    %.6f        %.1f\n", s, 1. / s);
+  std::printf("batch 1   %.6f        %.1f\n", b1, 1. / b1);
+  std::printf("batch %-2d  %.6f        %.1f\n", threads, bT, 1. / bT);
+  std::printf("batch 1 / single: %.3f (time per source)\n", b1 / s);
+  std::printf("batch %d / batch 1: %.2fx (rows per second)\n", threads, b1 / bT);
+  std::printf("# checksum %g\n", checksum);
+  return 0;
+}
