@@ -543,26 +543,6 @@ inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB,
   ends.resize(k);
 }
 
-// Transitional forms of the calls above (the scratch memory of the former interface), until the
-// engine passes a List_scratch: to be removed.
-inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB, double min_length,
-                        std::vector<double>&)
-{
-  static thread_local List_scratch scratch;
-  filter_list(ws, L, dA, dB, min_length, scratch);
-}
-
-inline Propagation_result
-propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws, double min_ratio,
-               bool want_ac, bool want_cb, std::vector<Window>& out_ac, std::vector<Window>& out_cb,
-               std::vector<double>& scratch_xc)
-{
-  std::vector<Window_ends> ends(ws.size());
-  for(std::size_t i = 0; i < ws.size(); ++i)
-    ends[i] = Window_ends{ window_distance(ws[i], ws[i].b0), window_distance(ws[i], ws[i].b1) };
-  return propagate_list(g, ws, ends, min_ratio, want_ac, want_cb, out_ac, out_cb, scratch_xc);
-}
-
 } // namespace internal
 } // namespace VTP_geodesics
 } // namespace CGAL
