@@ -106,6 +106,34 @@ inline int compare_distances(double fa, double fb)
   return (fa > fb + tol) ? 1 : ((fb > fa + tol) ? -1 : 0);
 }
 
+// Sign of window_distance(w, x) - F, as compare_distances() gives it (with the tolerance taken
+// from F), without the square root.
+inline int compare_distance_to(const Window& w, double x, double F)
+{
+  const double dx = x - w.sx;
+  const double q = dx * dx + w.sy * w.sy;
+  const double tol = 1e-13 * F;
+  const double above = F + tol - w.sigma;   // w is longer where sqrt(q) > above
+  if(above < 0. || q > above * above)
+    return 1;
+  const double below = F - tol - w.sigma;   // w is shorter where sqrt(q) < below
+  if(below > 0. && q < below * below)
+    return -1;
+  return 0;
+}
+
+// Sign of window_distance(a, x) - window_distance(b, x), where at least one of them is known
+// (fa, fb; `known_a`, `known_b`): one square root at most.
+inline int compare_at(const Window& a, bool known_a, double fa, const Window& b, bool known_b, double fb, double x)
+{
+  if(known_a && known_b)
+    return compare_distances(fa, fb);
+  if(known_b)
+    return compare_distance_to(a, x, fb);
+  CGAL_assertion(known_a);
+  return -compare_distance_to(b, x, fa);
+}
+
 // Whether the quadratic q(x) = (qa x + qb) x + qc may vanish inside (l, r); false only if it has
 // the same nonzero sign at l, r and (when it lies inside) at its apex. No square root.
 inline bool may_vanish_inside(double qa, double qb, double qc, double l, double r)
@@ -160,47 +188,50 @@ inline void lose_overlap(Window& w, Window_ends& e, double l, double r, double f
 // are settled first from the signs at the ends of the overlap alone: a near-tie at both ends (two
 // windows that meet at a point they reach at the same distance), or the same window shorter at
 // both ends (the other is cut off unless the overlap lies inside it, provided q keeps its sign).
-inline void prune_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb)
+//
+// prune_pair() settles those cases and leaves the others to settle_pair().
+inline void settle_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb, double l, double r, int sl, int sr)
 {
-  const double l = (std::max)(a.b0, b.b0);
-  const double r = (std::min)(a.b1, b.b1);
-  if(!(r > l))
-    return;
-
-  const double fal = (l == a.b0) ? ea.f0 : window_distance(a, l);
-  const double fbl = (l == b.b0) ? eb.f0 : window_distance(b, l);
-  const double far = (r == a.b1) ? ea.f1 : window_distance(a, r);
-  const double fbr = (r == b.b1) ? eb.f1 : window_distance(b, r);
-  const int sl = compare_distances(fal, fbl);
-  const int sr = compare_distances(far, fbr);
-  if(sl == 0 && sr == 0)
-    return;
-  if(sl == sr)
-  {
-    // the loser at both ends can only lose a piece at one of its own ends (and the winner
-    // cannot lose any piece at its ends)
-    Window& w = sl > 0 ? a : b;
-    if(!(w.b0 == l || w.b1 == r))
-      return;
-  }
-
+  const bool al = (l == a.b0), bl = (l == b.b0), ar = (r == a.b1), br = (r == b.b1);
   // q(x): sqrt(Qa) = beta + sqrt(Qb), beta = sigma_b - sigma_a, squared twice
   const double beta = b.sigma - a.sigma;
-  const double al = 2. * (b.sx - a.sx);
+  const double lin = 2. * (b.sx - a.sx);
   const double c = a.sx * a.sx + a.sy * a.sy - b.sx * b.sx - b.sy * b.sy - beta * beta;
   const double b2 = beta * beta;
-  const double qa = al * al - 4. * b2;
-  const double qb = 2. * al * c + 8. * b2 * b.sx;
+  const double qa = lin * lin - 4. * b2;
+  const double qb = 2. * lin * c + 8. * b2 * b.sx;
   const double qc = c * c - 4. * b2 * (b.sx * b.sx + b.sy * b.sy);
 
-  if(sl == sr && !may_vanish_inside(qa, qb, qc, l, r))
+  // The same window shorter at both ends, or at one end with a near-tie at the other: if q keeps
+  // its sign inside, so does fa - fb, and the other window loses the whole overlap.
+  const int s = (sl != 0) ? sl : sr;
+  if((sl == sr || sl == 0 || sr == 0) && !may_vanish_inside(qa, qb, qc, l, r))
   {
-    if(sl > 0)
-      lose_overlap(a, ea, l, r, fal, far);
+    // the distance at the new end of the loser is needed
+    Window& w = s > 0 ? a : b;
+    Window_ends& e = s > 0 ? ea : eb;
+    const bool starts = (w.b0 == l), ends = (w.b1 == r);
+    if(!starts && !ends)
+      return;
+    if(starts && ends)
+      w.b1 = w.b0 - 1.;
+    else if(starts)
+    {
+      e.f0 = window_distance(w, r);
+      w.b0 = r;
+    }
     else
-      lose_overlap(b, eb, l, r, fbl, fbr);
+    {
+      e.f1 = window_distance(w, l);
+      w.b1 = l;
+    }
     return;
   }
+  const double fal = al ? ea.f0 : window_distance(a, l);
+  const double fbl = bl ? eb.f0 : window_distance(b, l);
+  const double far = ar ? ea.f1 : window_distance(a, r);
+  const double fbr = br ? eb.f1 : window_distance(b, r);
+  CGAL_assertion(compare_distances(fal, fbl) == sl || sl == 0 || compare_distances(fal, fbl) == 0);
 
   // Candidate break points: the roots and the apex of the quadratic. Extra candidates are
   // harmless: the pieces are classified below by evaluating the distances themselves.
@@ -244,7 +275,7 @@ inline void prune_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb)
   int end_sign[5];
   fa[0] = fal;
   fb[0] = fbl;
-  end_sign[0] = sl;
+  end_sign[0] = compare_distances(fal, fbl);
   for(int i = 1; i < nc - 1; ++i)
   {
     fa[i] = window_distance(a, cuts[i]);
@@ -253,7 +284,7 @@ inline void prune_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb)
   }
   fa[nc - 1] = far;
   fb[nc - 1] = fbr;
-  end_sign[nc - 1] = sr;
+  end_sign[nc - 1] = compare_distances(far, fbr);
   int sign[4];
   const int np = nc - 1;
   for(int i = 0; i < np; ++i)
@@ -292,6 +323,32 @@ inline void prune_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb)
     }
   }
 }
+
+inline void prune_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb)
+{
+  const double l = (std::max)(a.b0, b.b0);
+  const double r = (std::min)(a.b1, b.b1);
+  if(!(r > l))
+    return;
+  // l is the start of a or b, r the end of a or b: there the distance is known
+  const int sl = compare_at(a, l == a.b0, ea.f0, b, l == b.b0, eb.f0, l);
+  const int sr = compare_at(a, r == a.b1, ea.f1, b, r == b.b1, eb.f1, r);
+  if(sl == 0 && sr == 0)
+    return;
+  if(sl == sr)
+  {
+    // the loser at both ends can only lose a piece at one of its own ends (and the winner
+    // cannot lose any piece at its ends)
+    const Window& w = sl > 0 ? a : b;
+    if(!(w.b0 == l || w.b1 == r))
+      return;
+  }
+  settle_pair(a, ea, b, eb, l, r, sl, sr);
+}
+
+// Whether a window of a list being filtered is still alive (filter_list() marks the windows
+// it cuts away by making them shorter than `min_length`).
+inline bool is_alive(const Window& w, double min_length) { return w.b1 - w.b0 > min_length; }
 
 // Output of the propagation of one list across one triangle.
 struct Propagation_result
@@ -487,35 +544,62 @@ struct List_scratch
   std::vector<Window_ends> ends;
   std::vector<Index> active;
   std::vector<double> xc;
+  std::vector<Window> buffer;
 };
 
-// Filters a list before propagation: vertex trimming (ICH), tiny windows, pairwise pruning.
+// Sorts a list by the starts of its windows. A list is made of a few batches of children, each
+// in the order of the starts already (geodesics do not cross): a list of one or two such runs is
+// merged in linear time.
+inline void sort_by_start(std::vector<Window>& ws, std::vector<Window>& buffer)
+{
+  const std::size_t n = ws.size();
+  std::size_t m = 1;
+  while(m < n && !(ws[m].b0 < ws[m - 1].b0))
+    ++m;
+  if(m >= n)
+    return;
+  std::size_t e = m + 1;
+  while(e < n && !(ws[e].b0 < ws[e - 1].b0))
+    ++e;
+  const auto by_start = [](const Window& x, const Window& y) { return x.b0 < y.b0; };
+  if(e < n)
+  {
+    std::sort(ws.begin(), ws.end(), by_start);
+    return;
+  }
+  buffer.resize(n);
+  std::merge(ws.begin(), ws.begin() + static_cast<std::ptrdiff_t>(m),
+             ws.begin() + static_cast<std::ptrdiff_t>(m), ws.end(), buffer.begin(), by_start);
+  ws.swap(buffer);
+}
+
+// Filters a list before propagation: vertex trimming (ICH), tiny windows, pairwise pruning. The
+// list is left sorted by the starts (up to the few starts that trimming moves), with the distances
+// at the ends of its windows in scratch.ends. During the filtering, a window that is cut away
+// stays in place, shorter than `min_length` (see is_alive()); it is dropped at the end.
 inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB, double min_length,
                         List_scratch& scratch)
 {
   const std::size_t n = ws.size();
-  if(n > 1)
-    std::sort(ws.begin(), ws.end(), [](const Window& x, const Window& y) { return x.b0 < y.b0; });
+  sort_by_start(ws, scratch.buffer);
   std::vector<Window_ends>& ends = scratch.ends;
   ends.resize(n);
-  std::size_t k = 0;
   for(std::size_t i = 0; i < n; ++i)
   {
-    Window w = ws[i];
-    if(trim_by_vertices(w, ends[k], L, dA, dB) && w.b1 - w.b0 > min_length)
-      ws[k++] = w;
+    Window& w = ws[i];
+    if(!trim_by_vertices(w, ends[i], L, dA, dB) || !is_alive(w, min_length))
+      w.b1 = w.b0 - 1.;
   }
-  ws.resize(k);
-  if(k < 2)
-    return;
   // Sweep in the order of the starts (trimming may have moved a few of them: skipping a pair is
   // always safe, pruning only removes redundant coverage), with the windows that still reach
   // beyond the current start: most lists are nearly disjoint, so few pairs are examined.
   std::vector<Index>& active = scratch.active;
   active.clear();
-  for(std::size_t i = 0; i < k; ++i)
+  for(std::size_t i = 0; i < n; ++i)
   {
     Window& w = ws[i];
+    if(!(w.b1 > w.b0))
+      continue;
     Window_ends& ew = ends[i];
     std::size_t kept = 0;
     for(std::size_t j = 0; j < active.size(); ++j)
@@ -531,9 +615,12 @@ inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB,
     if(w.b1 > w.b0)
       active.push_back(static_cast<Index>(i));
   }
-  k = 0;
-  for(std::size_t i = 0; i < ws.size(); ++i)
-    if(ws[i].b1 - ws[i].b0 > min_length)
+  // drop the windows cut away (most lists lose none)
+  std::size_t k = 0;
+  while(k < n && is_alive(ws[k], min_length))
+    ++k;
+  for(std::size_t i = k; i < n; ++i)
+    if(is_alive(ws[i], min_length))
     {
       ws[k] = ws[i];
       ends[k] = ends[i];
