@@ -376,8 +376,7 @@ public:
   {
     if(children.empty())
       return 0;
-    for(const Window& w : children)
-      store.push(h, w, p);
+    store.push(h, children.data(), children.data() + children.size(), p);
     if(stop.is_tracking())
       stop.on_windows_stored(h, children.data(), children.data() + children.size(), events);
     if(swept[Mesh_arrays::face(h)] && !queued[h])
