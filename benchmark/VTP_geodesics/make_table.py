@@ -33,6 +33,8 @@ COLUMNS = [
     ("peak_live_windows", "Peak windows", "{:.0f}"),
     ("ns_per_window", "ns / window", "{:.0f}"),
     ("pseudo_source_share", "Pseudo-sources (%)", "{:.1f}"),
+    ("cpu_seconds", "CPU time (s)", "{:.4g}"),
+    ("cpu_ratio_vs_vtp", "CPU time of vtp / method", "{:.2f}"),
 ]
 PERCENT_COLUMNS = {"mean_pointwise_rel_err_vs_vtp", "max_pointwise_rel_err_vs_vtp", "pseudo_source_share"}
 DEFAULT_COLUMNS = ["seconds", "preprocessing_seconds", "peak_rss_mb", "windows_created",

@@ -53,6 +53,7 @@
 #include <vector>
 
 #include <sys/resource.h> // getrusage, struct rusage
+#include <time.h>         // clock_gettime
 #include <sys/types.h>
 #include <sys/wait.h>     // wait4
 #include <unistd.h>       // fork, pipe, read, write, _exit, sysconf
@@ -247,7 +248,8 @@ void print_usage(std::ostream& os)
         "  --external NAME=COMMAND  also run an external program as method NAME (may be repeated): the\n"
         "                   mesh is written as an OFF file (vertices in index order) and COMMAND runs in\n"
         "                   /bin/sh with {mesh}, {source} (vertex index) and {output} replaced; it must\n"
-        "                   print seconds=<time of its propagation> (and may print windows_propagated=<n>)\n"
+        "                   print seconds=<time of its propagation> (and may print cpu_seconds=<t> and\n"
+        "                   windows_propagated=<n>)\n"
         "                   on standard output, and may write one distance per vertex into {output}\n"
         "  --csv FILE       also write the results as CSV\n"
         "  --repeat R       run each method R times per source and keep the fastest (default 1); the\n"
@@ -257,6 +259,9 @@ void print_usage(std::ostream& os)
         "\n"
         "Each method runs in its own child process: peak_rss_mb is the peak resident memory of that\n"
         "process (mesh included). Errors are measured against VTP, which is always run.\n"
+        "cpu_seconds is the processor time of the same work (all threads; for an external method, what it\n"
+        "prints as cpu_seconds=<time>), and cpu_ratio_vs_vtp the processor time of vtp divided by the\n"
+        "method's: on a machine busy with other work, it is steadier than the elapsed times.\n"
         "ns_per_window is the time divided by the number of windows the method propagated (for an\n"
         "external method, the count it prints). Before each mesh's rows, a line gives its share of\n"
         "pseudo-source vertices (saddle or boundary).\n"
@@ -367,6 +372,7 @@ Arguments parse_arguments(int argc, char** argv)
 struct Child_header
 {
   double seconds = nan_value;                // per-source work, fastest of the repeats
+  double cpu_seconds = nan_value;            // processor time of that work (all threads), fastest of the repeats
   double preprocessing_seconds = nan_value;  // per-mesh work (solver construction, factorization)
   double rss_at_start_kb = 0.;
   std::uint64_t windows_created = 0, windows_propagated = 0, peak_window_bytes = 0, peak_live_windows = 0;
@@ -376,6 +382,15 @@ struct Child_header
   std::uint64_t number_of_distances = 0;
   std::uint64_t error_length = 0;
 };
+
+// Processor time of the process (all its threads), in seconds.
+double cpu_now_seconds()
+{
+  struct timespec t;
+  if(::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t) != 0)
+    return nan_value;
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 double now_seconds()
 {
@@ -402,6 +417,7 @@ void run_vtp(const Mesh& mesh, Vertex_index source, const Method& method, int re
   // the distances are read from the solver: nothing to write through a map
   for(int r = 0; r < repeat; ++r)
   {
+    const double c0 = cpu_now_seconds();
     switch(method.kind)
     {
       case Method_kind::VTP:
@@ -415,9 +431,12 @@ void run_vtp(const Mesh& mesh, Vertex_index source, const Method& method, int re
         throw std::runtime_error("method " + method.label + " needs OpenMP");
 #endif
     }
+    const double cpu = cpu_now_seconds() - c0;
     const CGAL::VTP_geodesics::Propagation_statistics& s = solver.statistics();
     if(r == 0 || s.seconds < h.seconds)
       h.seconds = s.seconds;
+    if(r == 0 || cpu < h.cpu_seconds)
+      h.cpu_seconds = cpu;
     h.windows_created = s.windows_created;
     h.windows_propagated = s.windows_propagated;
     h.peak_window_bytes = (std::max)(h.peak_window_bytes, static_cast<std::uint64_t>(s.peak_window_bytes));
@@ -549,6 +568,7 @@ struct Run_result
   // Filled after all methods of the source ran.
   double max_abs_err = nan_value, max_rel_err = nan_value, mean_rel_err = nan_value, speedup_vs_cgal = nan_value;
   double mean_pointwise_rel_err = nan_value, max_pointwise_rel_err = nan_value, speedup_vs_vtp = nan_value;
+  double cpu_ratio_vs_vtp = nan_value;  // processor time of VTP / processor time of this method
   std::size_t mismatched_infinities = 0;
 };
 
@@ -726,6 +746,8 @@ Run_result run_external(const std::string& mesh_file, std::size_t source, std::s
     return result;
   }
   result.header.preprocessing_seconds = nan_value;
+  if(find_value(text, "cpu_seconds", value))
+    result.header.cpu_seconds = std::strtod(value.c_str(), nullptr);
   if(find_value(text, "windows_propagated", value))
   {
     result.header.windows_propagated = std::strtoull(value.c_str(), nullptr, 10);
@@ -810,7 +832,7 @@ const char* const csv_columns =
   "mesh,vertices,faces,source,method,threads,seconds,preprocessing_seconds,peak_rss_mb,windows_created,"
   "windows_propagated,peak_window_bytes,max_abs_err_vs_vtp,max_rel_err_vs_vtp,mean_rel_err_vs_vtp,speedup_vs_cgal,"
   "total_seconds,rss_at_start_mb,mean_pointwise_rel_err_vs_vtp,max_pointwise_rel_err_vs_vtp,speedup_vs_vtp,"
-  "peak_live_windows,ns_per_window,pseudo_source_share,status";
+  "peak_live_windows,ns_per_window,pseudo_source_share,cpu_seconds,cpu_ratio_vs_vtp,status";
 
 struct Mesh_info
 {
@@ -838,6 +860,7 @@ void write_csv_row(std::ostream& os, const Mesh_info& mesh, std::size_t source, 
      << number(r.speedup_vs_vtp, 6) << ','
      << (w && r.method.kind != Method_kind::EXTERNAL ? std::to_string(h.peak_live_windows) : "") << ','
      << number(ns_per_window(r), 6) << ',' << number(mesh.pseudo_source_share, 6) << ','
+     << (r.ok ? number(h.cpu_seconds, 9) : "") << ',' << number(r.cpu_ratio_vs_vtp, 6) << ','
      << csv_field(r.status) << '\n';
 }
 
@@ -1050,6 +1073,8 @@ int run(int argc, char** argv)
           }
           Child_header& h = results[j].header;
           h.seconds = (std::min)(h.seconds, again.header.seconds);
+          if(!(h.cpu_seconds <= again.header.cpu_seconds))
+            h.cpu_seconds = again.header.cpu_seconds;
           h.preprocessing_seconds = (std::min)(h.preprocessing_seconds, again.header.preprocessing_seconds);
           results[j].peak_rss_mb = (std::max)(results[j].peak_rss_mb, again.peak_rss_mb);
         }
@@ -1089,6 +1114,8 @@ int run(int argc, char** argv)
         }
         if(vtp.ok && r.header.seconds > 0.)
           r.speedup_vs_vtp = vtp.header.seconds / r.header.seconds;
+        if(vtp.ok && r.header.cpu_seconds > 0.)
+          r.cpu_ratio_vs_vtp = vtp.header.cpu_seconds / r.header.cpu_seconds;
         if(cgal != nullptr && total_seconds(r) > 0.)
           r.speedup_vs_cgal = total_seconds(*cgal) / total_seconds(r);
       }
