@@ -175,22 +175,36 @@ inline void lose_overlap(Window& w, Window_ends& e, double l, double r, double f
   }
 }
 
+// The right part of a window that the pruning cuts in two, with the distances at its ends: it goes
+// back into the sweep of filter_list() at its start.
+struct Window_piece
+{
+  Window w;
+  Window_ends e;
+};
+
+// Order of the pending pieces (a heap whose top is the piece that starts first).
+inline bool starts_later(const Window_piece& x, const Window_piece& y) { return x.w.b0 > y.w.b0; }
+
 // Pairwise pruning of two windows of the same list (Rule 2), by pointwise comparison on their
 // overlap: the part of a window where the other one is strictly shorter carries no shortest
-// path and is cut off, when it is at an end of the window (a window is never split in two).
-// Near-ties are left alone, and so may be any pair: skipping a pair only leaves redundant
-// coverage. Marks a window dead by setting b1 < b0. `ea` and `eb` are the distances at the ends
-// of a and b, updated with the cuts.
+// path and is cut off when it is at an end of the window. A window that loses the whole overlap
+// with a window lying inside it is cut in two: it keeps its left part and its right part is
+// pushed onto `pieces` (a heap, see starts_later()). Otherwise a window that loses only a middle
+// piece is kept whole. Near-ties are left alone, and so may be any pair: skipping a pair only
+// leaves redundant coverage. Marks a window dead by setting b1 < b0. `ea` and `eb` are the
+// distances at the ends of a and b, updated with the cuts.
 //
 // fa(x) = fb(x) is a quadratic equation q(x) = 0 once its square roots are squared away; its
 // roots (and its apex: a double root can be lost to rounding) cut the overlap into pieces on
 // which fa - fb has one sign, found by evaluating the distances themselves. The common cases
 // are settled first from the signs at the ends of the overlap alone: a near-tie at both ends (two
 // windows that meet at a point they reach at the same distance), or the same window shorter at
-// both ends (the other is cut off unless the overlap lies inside it, provided q keeps its sign).
+// both ends (the other loses the whole overlap, provided q keeps its sign).
 //
-// prune_pair() settles those cases and leaves the others to settle_pair().
-inline void settle_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb, double l, double r, int sl, int sr)
+// prune_pair() settles the ties and leaves the others to settle_pair().
+inline void settle_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb, double l, double r, int sl, int sr,
+                        std::vector<Window_piece>& pieces)
 {
   const bool al = (l == a.b0), bl = (l == b.b0), ar = (r == a.b1), br = (r == b.b1);
   // q(x): sqrt(Qa) = beta + sqrt(Qb), beta = sigma_b - sigma_a, squared twice
@@ -212,7 +226,20 @@ inline void settle_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb, 
     Window_ends& e = s > 0 ? ea : eb;
     const bool starts = (w.b0 == l), ends = (w.b1 == r);
     if(!starts && !ends)
+    {
+      // the overlap lies inside w: cut w in two (the parts keep their own lists of children,
+      // which no longer overlap those of the other window, and are pruned no more against them)
+      Window_piece piece;
+      piece.w = w;
+      piece.w.b0 = r;
+      piece.e.f0 = window_distance(w, r);
+      piece.e.f1 = e.f1;
+      pieces.push_back(piece);
+      std::push_heap(pieces.begin(), pieces.end(), starts_later);
+      e.f1 = window_distance(w, l);
+      w.b1 = l;
       return;
+    }
     if(starts && ends)
       w.b1 = w.b0 - 1.;
     else if(starts)
@@ -324,7 +351,7 @@ inline void settle_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb, 
   }
 }
 
-inline void prune_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb)
+inline void prune_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb, std::vector<Window_piece>& pieces)
 {
   const double l = (std::max)(a.b0, b.b0);
   const double r = (std::min)(a.b1, b.b1);
@@ -335,15 +362,7 @@ inline void prune_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb)
   const int sr = compare_at(a, r == a.b1, ea.f1, b, r == b.b1, eb.f1, r);
   if(sl == 0 && sr == 0)
     return;
-  if(sl == sr)
-  {
-    // the loser at both ends can only lose a piece at one of its own ends (and the winner
-    // cannot lose any piece at its ends)
-    const Window& w = sl > 0 ? a : b;
-    if(!(w.b0 == l || w.b1 == r))
-      return;
-  }
-  settle_pair(a, ea, b, eb, l, r, sl, sr);
+  settle_pair(a, ea, b, eb, l, r, sl, sr, pieces);
 }
 
 // Whether a window of a list being filtered is still alive (filter_list() marks the windows
@@ -545,6 +564,7 @@ struct List_scratch
   std::vector<Index> active;
   std::vector<double> xc;
   std::vector<Window> buffer;
+  std::vector<Window_piece> pieces;
 };
 
 // Sorts a list by the starts of its windows. A list is made of a few batches of children, each
@@ -574,8 +594,9 @@ inline void sort_by_start(std::vector<Window>& ws, std::vector<Window>& buffer)
 }
 
 // Filters a list before propagation: vertex trimming (ICH), tiny windows, pairwise pruning. The
-// list is left sorted by the starts (up to the few starts that trimming moves), with the distances
-// at the ends of its windows in scratch.ends. During the filtering, a window that is cut away
+// list is left sorted by the starts (up to the few starts that trimming moves), followed by the
+// right parts of the windows cut in two (sorted too), with the distances at the ends of its
+// windows in scratch.ends. During the filtering, a window that is cut away
 // stays in place, shorter than `min_length` (see is_alive()); it is dropped at the end.
 inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB, double min_length,
                         List_scratch& scratch)
@@ -593,10 +614,27 @@ inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB,
   // Sweep in the order of the starts (trimming may have moved a few of them: skipping a pair is
   // always safe, pruning only removes redundant coverage), with the windows that still reach
   // beyond the current start: most lists are nearly disjoint, so few pairs are examined.
+  // The right parts of windows cut in two are appended to the list when the sweep reaches their
+  // start.
   std::vector<Index>& active = scratch.active;
+  std::vector<Window_piece>& pieces = scratch.pieces;
   active.clear();
-  for(std::size_t i = 0; i < n; ++i)
+  pieces.clear();
+  for(std::size_t next = 0;;)
   {
+    std::size_t i;
+    if(!pieces.empty() && (next == n || !(ws[next].b0 < pieces.front().w.b0)))
+    {
+      std::pop_heap(pieces.begin(), pieces.end(), starts_later);
+      ws.push_back(pieces.back().w);
+      ends.push_back(pieces.back().e);
+      pieces.pop_back();
+      i = ws.size() - 1;
+    }
+    else if(next < n)
+      i = next++;
+    else
+      break;
     Window& w = ws[i];
     if(!(w.b1 > w.b0))
       continue;
@@ -607,7 +645,7 @@ inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB,
       const Index a = active[j];
       Window& v = ws[static_cast<std::size_t>(a)];
       if(w.b1 > w.b0 && v.b1 > w.b0)
-        prune_pair(v, ends[static_cast<std::size_t>(a)], w, ew);
+        prune_pair(v, ends[static_cast<std::size_t>(a)], w, ew, pieces);
       if(v.b1 > v.b0 && v.b1 > w.b0)
         active[kept++] = a;
     }
@@ -617,9 +655,10 @@ inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB,
   }
   // drop the windows cut away (most lists lose none)
   std::size_t k = 0;
-  while(k < n && is_alive(ws[k], min_length))
+  const std::size_t total = ws.size();
+  while(k < total && is_alive(ws[k], min_length))
     ++k;
-  for(std::size_t i = k; i < n; ++i)
+  for(std::size_t i = k; i < total; ++i)
     if(is_alive(ws[i], min_length))
     {
       ws[k] = ws[i];
