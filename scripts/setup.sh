@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs everything needed to build, test and benchmark VTP_geodesics on a fresh Debian 12
-# machine: compiler, CMake, CGAL 5.5 (header-only) and its dependencies, GoogleTest, and
-# Python with matplotlib for the benchmark plots. Safe to run again (apt-get install is idempotent).
+# machine: compiler, CMake, CGAL 5.5 (header-only) and its dependencies, GoogleTest, Python with
+# matplotlib (benchmark plots, and the colour map of the tools, sampled at configure time), cairo, libpng and a
+# font for the tools' pictures, and Doxygen for the manual (`doc` target). Safe to run again (apt-get install
+# is idempotent).
 set -euo pipefail
 
 PACKAGES=(
@@ -15,6 +17,11 @@ PACKAGES=(
   libgtest-dev
   python3
   python3-matplotlib
+  pkg-config
+  libpng-dev
+  libcairo2-dev
+  fonts-dejavu-core
+  doxygen
 )
 
 if [ "$(id -u)" -eq 0 ]; then

@@ -23,7 +23,7 @@ if [ "${#need[@]}" -gt 0 ]; then
 fi
 
 CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVTP_GEODESICS_SANITIZE=thread \
-  -DVTP_GEODESICS_BUILD_EXAMPLES=OFF -DVTP_GEODESICS_BUILD_BENCHMARK=OFF
+  -DVTP_GEODESICS_BUILD_EXAMPLES=OFF -DVTP_GEODESICS_BUILD_BENCHMARK=OFF -DVTP_GEODESICS_BUILD_APPS=OFF
 cmake --build "$build" -j"$(nproc)" --target vtp_geodesics_tests
 
 export TSAN_OPTIONS="ignore_noninstrumented_modules=1 halt_on_error=1 exitcode=66"

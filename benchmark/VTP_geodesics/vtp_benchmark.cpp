@@ -26,8 +26,9 @@
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
-#include <CGAL/VTP_geodesics/internal/tools/midpoint_subdivision.h>
-#include <CGAL/VTP_geodesics/internal/tools/shortest_path_reference.h>
+#include <vtp_tools/methods.h>
+#include <vtp_tools/midpoint_subdivision.h>
+#include <vtp_tools/shortest_path_reference.h>
 
 #ifdef CGAL_EIGEN3_ENABLED
 #define VTP_BENCHMARK_WITH_HEAT_METHOD 1
@@ -73,8 +74,8 @@ struct Usage_error : std::runtime_error
 };
 
 // ================================================================================================
-// Methods. To add one (e.g. "pvtp:T"), add an enumerator, a parser in `method_parsers`, and a case
-// in `run_in_child()`.
+// Methods. To add one, add an enumerator, a parser in `method_parsers` (or, for a method of the package, an
+// entry in vtp_tools/methods.h), and a case in `run_in_child()`.
 // ================================================================================================
 enum class Method_kind { VTP, PVTP, AVTP, PAVTP, CGAL_SMSP, HEAT_DIRECT, HEAT_IDT, EXTERNAL };
 
@@ -121,34 +122,29 @@ void expect_fields(const std::vector<std::string>& fields, std::size_t n, const 
     throw Usage_error("invalid method '" + fields[0] + "...' (expected " + syntax + ")");
 }
 
-#ifdef _OPENMP
-#define VTP_BENCHMARK_PARALLEL true
-#else
-#define VTP_BENCHMARK_PARALLEL false
-#endif
+// The VTP family (vtp, pvtp:T, avtp:lambda, pavtp:T:lambda) comes from the table of methods shared with the
+// command-line tools (vtp_tools/methods.h): the name, then ":T" for a parallel method and ":lambda" for an
+// approximate one. Returns false if `fields[0]` is not one of them.
+bool parse_vtp_method(const std::vector<std::string>& fields, Method& m)
+{
+  const vtp_tools::Method_info* info = vtp_tools::find_method(fields[0]);
+  if(info == nullptr)
+    return false;
+  const std::string syntax = std::string(info->name) + (info->parallel ? ":T" : "") + (info->approximate ? ":lambda" : "");
+  expect_fields(fields, 1 + (info->parallel ? 1 : 0) + (info->approximate ? 1 : 0), syntax.c_str());
+  m.kind = info->parallel ? (info->approximate ? Method_kind::PAVTP : Method_kind::PVTP)
+                          : (info->approximate ? Method_kind::AVTP : Method_kind::VTP);
+  std::size_t k = 1;
+  if(info->parallel)
+    m.threads = parse_int_field(m.label, fields[k++], 1);
+  if(info->approximate)
+    m.lambda = parse_positive_field(m.label, fields[k++]);
+  if(!vtp_tools::method_available(*info))
+    throw Usage_error("method " + std::string(info->name) + " is not available (vtp_benchmark was built without OpenMP)");
+  return true;
+}
 
 const Method_parser method_parsers[] = {
-  { "vtp", "vtp", true,
-    [](const std::vector<std::string>& f, Method& m) { expect_fields(f, 1, "vtp"); m.kind = Method_kind::VTP; } },
-  { "pvtp", "pvtp:T", VTP_BENCHMARK_PARALLEL,
-    [](const std::vector<std::string>& f, Method& m) {
-      expect_fields(f, 2, "pvtp:T");
-      m.kind = Method_kind::PVTP;
-      m.threads = parse_int_field(m.label, f[1], 1);
-    } },
-  { "avtp", "avtp:lambda", true,
-    [](const std::vector<std::string>& f, Method& m) {
-      expect_fields(f, 2, "avtp:lambda");
-      m.kind = Method_kind::AVTP;
-      m.lambda = parse_positive_field(m.label, f[1]);
-    } },
-  { "pavtp", "pavtp:T:lambda", VTP_BENCHMARK_PARALLEL,
-    [](const std::vector<std::string>& f, Method& m) {
-      expect_fields(f, 3, "pavtp:T:lambda");
-      m.kind = Method_kind::PAVTP;
-      m.threads = parse_int_field(m.label, f[1], 1);
-      m.lambda = parse_positive_field(m.label, f[2]);
-    } },
   { "cgal", "cgal", true,
     [](const std::vector<std::string>& f, Method& m) { expect_fields(f, 1, "cgal"); m.kind = Method_kind::CGAL_SMSP; } },
 #ifdef VTP_BENCHMARK_WITH_HEAT_METHOD
@@ -182,6 +178,12 @@ std::vector<std::string> split(const std::string& s, char separator)
 Method parse_method(const std::string& spec)
 {
   const std::vector<std::string> fields = split(spec, ':');
+  {
+    Method m;
+    m.label = spec;
+    if(parse_vtp_method(fields, m))
+      return m;
+  }
   for(const Method_parser& p : method_parsers)
   {
     if(fields[0] != p.name)
@@ -199,7 +201,7 @@ Method parse_method(const std::string& spec)
     }
     return m;
   }
-  std::string known;
+  std::string known = "vtp, pvtp:T, avtp:lambda, pavtp:T:lambda";
   for(const Method_parser& p : method_parsers)
     known += (known.empty() ? "" : ", ") + std::string(p.syntax);
   throw Usage_error("unknown method '" + spec + "' (known: " + known + ")");
@@ -454,7 +456,7 @@ void run_cgal(const Mesh& mesh, Vertex_index source, int repeat, Child_header& h
   for(int r = 0; r < repeat; ++r)
   {
     const double t0 = now_seconds();
-    d = CGAL::VTP_geodesics::internal::shortest_path_reference_distances(mesh, source);
+    d = vtp_tools::shortest_path_reference_distances(mesh, source);
     const double t = now_seconds() - t0;
     if(r == 0 || t < h.seconds)
       h.seconds = t;
@@ -927,7 +929,7 @@ std::string load_mesh(const std::string& file, const Arguments& args, Mesh& mesh
   }
   if(args.subdivide > 0)
   {
-    CGAL::VTP_geodesics::internal::midpoint_subdivide(mesh, args.subdivide);
+    vtp_tools::midpoint_subdivide(mesh, args.subdivide);
     label += "/s" + std::to_string(args.subdivide);
   }
   if(mesh.has_garbage())
@@ -1101,8 +1103,8 @@ int run(int argc, char** argv)
           continue;
         if(vtp.ok && (r.method.kind != Method_kind::EXTERNAL || !r.distances.empty()))
         {
-          const CGAL::VTP_geodesics::internal::Distance_comparison c =
-            CGAL::VTP_geodesics::internal::compare_distances(r.distances, vtp.distances);
+          const vtp_tools::Distance_comparison c =
+            vtp_tools::compare_distances(r.distances, vtp.distances);
           r.max_abs_err = c.max_abs_diff;
           r.max_rel_err = c.max_rel_diff;
           r.mean_rel_err = c.mean_rel_diff;

@@ -18,6 +18,8 @@
 // For every source, each method must give the distances of CGAL's exact algorithm (Epick):
 //   max |d - d_cgal| <= 1e-12 * (largest finite d_cgal), with the same unreachable (+infinity) vertices,
 // no NaN, no negative value, and 0 at the source; PVTP must also equal VTP within the same tolerance.
+// The queries are checked against the VTP run from the same source (check_queries()): a distance limit,
+// paths (length = distance), two sources (minimum of single runs, labels).
 // Any failure is printed with its seed and case (and whether CGAL, run on the midpoint subdivision of the
 // mesh, agrees with the method: CGAL itself errs on some meshes); the exit code is then 1. A case that runs longer than
 // --timeout seconds (default 120) is reported and ends the program with exit code 3. A crash prints the
@@ -29,8 +31,8 @@
 #include "vtp_random_meshes.h"
 
 #include <CGAL/VTP_geodesics.h>
-#include <CGAL/VTP_geodesics/internal/tools/midpoint_subdivision.h>
-#include <CGAL/VTP_geodesics/internal/tools/shortest_path_reference.h>
+#include <vtp_tools/midpoint_subdivision.h>
+#include <vtp_tools/shortest_path_reference.h>
 
 #include <CGAL/IO/OFF.h>
 
@@ -45,6 +47,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -193,7 +196,7 @@ std::vector<Inserted_vertex> insert_degeneracies(Polygon_soup& soup, Polygon_sou
 // distance of that vertex).
 std::vector<double> reference_distances(const Case& c, Vertex_index s)
 {
-  using CGAL::VTP_geodesics::internal::shortest_path_reference_distances;
+  using vtp_tools::shortest_path_reference_distances;
   if(c.inserted.empty())
     return shortest_path_reference_distances(c.mesh, s);
   std::vector<double> d = shortest_path_reference_distances(c.reference_mesh, s);
@@ -338,7 +341,7 @@ void dump_mesh(const Settings& settings, std::size_t index, const Surface_mesh& 
 
 struct Totals
 {
-  std::size_t cases = 0, sources = 0, comparisons = 0, failures = 0, vertices = 0;
+  std::size_t cases = 0, sources = 0, comparisons = 0, failures = 0, vertices = 0, query_checks = 0;
   double worst_vs_cgal = 0., worst_parallel = 0.;
   double cgal_seconds = 0., vtp_seconds = 0., pvtp_seconds = 0.;
 };
@@ -360,6 +363,82 @@ std::string size_options(const Settings& settings)
   if(settings.sources != defaults.sources)
     s += " --sources " + std::to_string(settings.sources);
   return s;
+}
+
+// The queries beyond one field, checked against the full run `full` from s (no reference needed): a distance
+// limit (the full run inside, +infinity outside), paths (length = distance, from the vertex to the source),
+// and two sources (the minimum of the single runs, labels achieving it). Returns a description of the first
+// failure, or an empty string.
+std::string check_queries(const Surface_mesh& mesh, Geodesic_distance_solver<Surface_mesh>& solver, Vertex_index s,
+                          const std::vector<double>& full, Totals& totals)
+{
+  namespace VP = CGAL::VTP_geodesics::parameters;
+  const std::size_t n = full.size();
+  double max_d = 0.;
+  for(double x : full)
+    if(std::isfinite(x))
+      max_d = (std::max)(max_d, x);
+  const double tolerance = TOLERANCE * (max_d > 0. ? max_d : 1.);
+  std::ostringstream failure;
+  failure.precision(17);
+  // distance limit
+  ++totals.query_checks;
+  const double R = 0.37 * max_d;
+  solver.compute(vtp_test::Discard_map(), s, VP::maximum_distance(R));
+  const std::vector<double> limited = solver.distances();
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    if(full[i] <= R - tolerance && !(std::abs(limited[i] - full[i]) <= tolerance))
+      failure << "limit " << R << ": vertex " << i << " at " << limited[i] << ", full run " << full[i];
+    else if(full[i] > R + tolerance && limited[i] != std::numeric_limits<double>::infinity())
+      failure << "limit " << R << ": vertex " << i << " beyond the limit at " << limited[i] << ", full run " << full[i];
+    if(!failure.str().empty())
+      return failure.str();
+  }
+  // paths of a few vertices
+  ++totals.query_checks;
+  solver.compute(vtp_test::Discard_map(), s, VP::record_paths(true));
+  for(std::size_t j = 0; j < 5; ++j)
+  {
+    const Vertex_index v(static_cast<Surface_mesh::size_type>((std::size_t(s) + 1 + j * (n / 5 + 1)) % n));
+    if(!std::isfinite(full[v]))
+      continue;
+    std::vector<vtp_test::Point_3> path;
+    try { solver.shortest_path_points(v, std::back_inserter(path)); }
+    catch(const std::exception& e) { return "path from vertex " + std::to_string(std::size_t(v)) + ": " + e.what(); }
+    double length = 0.;
+    for(std::size_t k = 1; k < path.size(); ++k)
+      length += std::sqrt(CGAL::squared_distance(path[k - 1], path[k]));
+    if(path.empty() || path.front() != mesh.point(v) || path.back() != mesh.point(s) || !(std::abs(length - full[v]) <= tolerance))
+    {
+      failure << "path from vertex " << std::size_t(v) << ": " << path.size() << " points, length " << length
+              << ", distance " << full[v];
+      return failure.str();
+    }
+  }
+  // two sources
+  ++totals.query_checks;
+  const Vertex_index s2(static_cast<Surface_mesh::size_type>((std::size_t(s) * 7 + 3) % n));
+  solver.compute(vtp_test::Discard_map(), s2);
+  const std::vector<double> second = solver.distances();
+  std::vector<std::size_t> labels(n);
+  solver.compute(vtp_test::Discard_map(), std::vector<Vertex_index>{ s, s2 },
+                 VP::nearest_source_map(boost::make_iterator_property_map(labels.begin(), get(boost::vertex_index, mesh))));
+  const std::vector<double>& both = solver.distances();
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const double expected = (std::min)(full[i], second[i]);
+    const bool reached = std::isfinite(expected);
+    if(reached != std::isfinite(both[i]) || (reached && !(std::abs(both[i] - expected) <= tolerance)))
+      failure << "two sources: vertex " << i << " at " << both[i] << ", minimum of the single runs " << expected;
+    else if(reached && !(labels[i] < 2 && std::abs((labels[i] == 0 ? full[i] : second[i]) - both[i]) <= tolerance))
+      failure << "two sources: vertex " << i << " labelled " << labels[i];
+    else if(!reached && labels[i] != CGAL::VTP_geodesics::no_source)
+      failure << "two sources: unreached vertex " << i << " labelled " << labels[i];
+    if(!failure.str().empty())
+      return failure.str();
+  }
+  return std::string();
 }
 
 // Runs one case; returns false on a failure (printed).
@@ -417,8 +496,8 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
       {
         // CGAL itself errs on some meshes: tell whether it agrees on the subdivided mesh (same surface)
         Surface_mesh fine = c.mesh;
-        CGAL::VTP_geodesics::internal::midpoint_subdivide(fine, 1);
-        std::vector<double> fine_reference = CGAL::VTP_geodesics::internal::shortest_path_reference_distances(fine, s);
+        vtp_tools::midpoint_subdivide(fine, 1);
+        std::vector<double> fine_reference = vtp_tools::shortest_path_reference_distances(fine, s);
         fine_reference.resize(reference.size());
         std::cout << "  CGAL on the midpoint-subdivided mesh "
                   << (compare(d, fine_reference, std::size_t(s)).ok() ? "agrees with " : "disagrees with ") << method
@@ -433,7 +512,16 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
     totals.vtp_seconds += seconds_since(t0);
     sequential = solver.distances();
     if(settings.vtp)
+    {
       check("vtp", sequential, reference, "CGAL");
+      set_current_case(where + ", queries; " + reproduce);
+      const std::string failure = check_queries(c.mesh, solver, s, sequential, totals);
+      if(!failure.empty())
+      {
+        ok = false;
+        std::cout << "vtp_stress: MISMATCH " << where << ": " << failure << "; " << reproduce << std::endl;
+      }
+    }
 #ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
     if(settings.pvtp)
     {
@@ -597,7 +685,8 @@ int main(int argc, char** argv)
   const double seconds = seconds_since(t0);
 
   std::cout << "vtp_stress: seed " << settings.seed << ", " << totals.cases << " cases (" << totals.vertices
-            << " vertices), " << totals.sources << " sources, " << totals.comparisons << " comparisons, methods"
+            << " vertices), " << totals.sources << " sources, " << totals.comparisons << " comparisons, "
+            << totals.query_checks << " query checks (limit, paths, two sources), methods"
             << (settings.vtp ? " vtp" : "") << (settings.pvtp ? " pvtp" : "") << ": " << totals.failures
             << " failing cases; largest |d - d_cgal| / max distance " << totals.worst_vs_cgal;
   if(settings.pvtp)

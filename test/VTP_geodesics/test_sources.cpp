@@ -433,6 +433,25 @@ TEST(Face_location_sources, the_same_point_from_either_face)
   }
 }
 
+// A point a rounding error away from an edge or a vertex (as PMP::locate gives them) is that edge point or
+// that vertex: windows from a source image that close to the line of an edge cannot be propagated accurately.
+TEST(Face_location_sources, points_within_rounding_of_an_edge_or_a_vertex)
+{
+  const Surface_mesh mesh = load_mesh("elephant.off");
+  for(std::size_t f : { 100u, 1500u, 2000u, 2779u })
+  {
+    const std::vector<double> on_edge = run(mesh, location(mesh, f, 0.45, 0., 0.55), exact_methods[0]).first;
+    const std::vector<double> at_vertex = run(mesh, location(mesh, f, 0., 0., 1.), exact_methods[0]).first;
+    for(double e : { 1e-13, 1e-15, 1e-16, 1e-17, 1e-300 })
+    {
+      EXPECT_TRUE(distances_near(run(mesh, location(mesh, f, 0.45 - e, e, 0.55), exact_methods[0]).first, on_edge,
+                                 EXACT_TOLERANCE, "face " + std::to_string(f) + ", " + std::to_string(e) + " from an edge"));
+      EXPECT_TRUE(distances_near(run(mesh, location(mesh, f, e, e, 1. - 2. * e), exact_methods[0]).first, at_vertex,
+                                 EXACT_TOLERANCE, "face " + std::to_string(f) + ", " + std::to_string(e) + " from a vertex"));
+    }
+  }
+}
+
 TEST(Face_location_sources, polyhedron_equals_surface_mesh)
 {
   typedef CGAL::Polyhedron_3<Kernel> Polyhedron;

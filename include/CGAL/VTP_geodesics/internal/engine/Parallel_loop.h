@@ -18,7 +18,7 @@
 #include <CGAL/VTP_geodesics/internal/Window_storage.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Stealing_ranges.h>
-#include <CGAL/VTP_geodesics/internal/parallel/Team_barrier.h>
+#include <CGAL/VTP_geodesics/internal/parallel/Round_team.h>
 
 #include <CGAL/assertions.h>
 
@@ -49,9 +49,15 @@ namespace internal {
 // written). The tail (thread 0) lowers the distances and queues the next lists in unit order. So the
 // result does not depend on thread timing.
 //
-// One OpenMP team for the whole propagation. Thread 0 does the sequential steps (selection, the short
-// tail of each round, and the rounds too small to share); the team meets only for the parallel phase of
-// the large rounds, at a barrier that spins briefly, then sleeps (Team_barrier).
+// One OpenMP team for the whole propagation. Thread 0 (the master) does the sequential steps (selection,
+// the short tail of each round, and the rounds too small to share) and publishes the large rounds; no
+// thread waits for another one to arrive (Round_team): each takes face units of the current round as
+// long as there are some, and the master goes on once every unit is finished. So a thread that does not
+// run (the machine is busy with other work) holds the others back only if it stopped in the middle of a
+// unit. When that happens often (the master waits for units in progress more than a quarter of the
+// time), the master runs the rounds alone for a while (10 ms, doubled each time up to 0.5 s) and then
+// tries the team again: on a busy machine the parallel scheduling then runs at the speed of the
+// sequential one, and on an idle one it keeps its speedup.
 class Parallel_loop
 {
 public:
@@ -69,6 +75,10 @@ public:
     m_threads = threads;
     m_in_selection = false;
     m_k_ad = 0;
+    m_round_number = 0;
+    m_solo_until = std::chrono::steady_clock::time_point();
+    m_solo_length = 0.01;
+    m_window_phase = m_window_wait = 0.;
     selection_seconds = propagation_seconds = merge_seconds = 0.;
     rounds = parallel_rounds = 0;
 
@@ -83,26 +93,15 @@ public:
 #pragma omp single
       {
         m_threads = omp_get_num_threads();
-        m_barrier.reset(m_threads);
+        m_sync.reset(m_threads);
       }
 #else
-      m_barrier.reset(1);
+      m_sync.reset(1);
 #endif
-      const bool team = m_threads > 1;
-      for(;;)
-      {
-        if(t == 0)
-          m_team_has_round = next_parallel_round();
-        if(team)
-          m_barrier.wait();
-        if(!m_team_has_round)
-          break;
-        propagation_phase(t);
-        if(team)
-          m_barrier.wait();
-        if(t == 0)
-          finish_round();
-      }
+      if(t == 0)
+        master();
+      else
+        worker(t);
     }
     for(Propagation_scratch& s : m_scratch)
     {
@@ -173,8 +172,56 @@ private:
       start_round();
       if(m_team > 1)
         return true;
-      propagation_phase(0);
+      propagation_phase(0, 0);
       finish_round();
+    }
+  }
+
+  // Thread 0: the sequential steps, and its share of the rounds it publishes.
+  void master()
+  {
+    while(m_threads > 1 && next_parallel_round())
+    {
+      m_sync.publish(m_round_number, m_units.size(), std::uint32_t(1) << (Stealing_range::ROUND_BITS - 1));
+      const auto t0 = std::chrono::steady_clock::now();
+      propagation_phase(0, m_round_number);
+      const double wait = m_sync.wait_for_items();
+      m_window_phase += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      m_window_wait += wait;
+      if(m_window_phase > 2e-3)
+      {
+        // the master waited for units held by threads that did not run: alone for a while
+        if(m_window_wait > 0.25 * m_window_phase)
+        {
+          m_solo_until = std::chrono::steady_clock::now()
+                         + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                             std::chrono::duration<double>(m_solo_length));
+          m_solo_length = (std::min)(0.5, 2. * m_solo_length);
+        }
+        else
+          m_solo_length = 0.01;
+        m_window_phase = m_window_wait = 0.;
+      }
+      finish_round();
+    }
+    if(m_threads == 1)
+      while(next_parallel_round()) {}
+    m_sync.finish();
+  }
+
+  // Threads 1 ... T-1: the units they can take of each round published.
+  void worker(int t)
+  {
+    std::uint32_t seen = 0;
+    for(;;)
+    {
+      std::uint32_t round = m_sync.wait_for_round(seen);
+      if(round == 0)
+        return;
+      round = m_sync.start_taking(t, round);
+      propagation_phase(t, round);
+      m_sync.stop_taking(t);
+      seen = round;
     }
   }
 
@@ -202,8 +249,10 @@ private:
     m_from.swap(st.fifo);
     st.fifo.clear();
     const std::size_t n = m_from.size();
-    // small arrays are not worth waking the team: same work, same result, one thread
-    m_team = (n >= 4 * static_cast<std::size_t>(m_threads)) ? m_threads : 1;
+    // small arrays are not worth waking the team (same work, same result, one thread), nor are the
+    // rounds while the master runs alone
+    m_team = (n >= 4 * static_cast<std::size_t>(m_threads) && n <= Stealing_ranges::MAX_ITEMS
+              && std::chrono::steady_clock::now() >= m_solo_until) ? m_threads : 1;
     ++rounds;
     if(m_team > 1)
       ++parallel_rounds;
@@ -262,18 +311,31 @@ private:
     m_unit_fill.assign(m_range_begin.begin(), m_range_begin.end() - 1);
     for(std::size_t u = 0; u < units; ++u)
       m_unit_order[m_unit_fill[m_unit_thread[u]]++] = u;
-    for(std::size_t t = 0; t < team; ++t)
-      m_ranges[t].set(m_range_begin[t], m_range_begin[t + 1]);
+    if(m_team > 1)
+    {
+      ++m_round_number;
+      if(m_round_number == 0)
+        m_round_number = 1;   // 0 means "no round"
+      for(std::size_t t = 0; t < team; ++t)
+        m_ranges[t].set(m_range_begin[t], m_range_begin[t + 1], m_round_number);
+    }
   }
 
-  void propagation_phase(int t)
+  // Thread t propagates the units it takes of round `round` (0: the master alone, every unit).
+  void propagation_phase(int t, std::uint32_t round)
   {
-    if(t >= m_team)
-      return;
     const std::size_t p = static_cast<std::size_t>(t);
     Propagation_scratch& s = m_scratch[p];
-    m_ranges.for_each_taken(p, static_cast<std::size_t>(m_team),
-                            [&](std::size_t i) { propagate_unit(m_unit_order[i], s, p); });
+    if(round == 0)
+    {
+      for(std::size_t u = 0; u < m_units.size(); ++u)
+        propagate_unit(u, s, p);
+      return;
+    }
+    m_ranges.for_each_taken(p, static_cast<std::size_t>(m_threads), round, [&](std::size_t i) {
+      propagate_unit(m_unit_order[i], s, p);
+      m_sync.item_finished(t);
+    });
   }
 
   void propagate_unit(std::size_t u, Propagation_scratch& s, std::size_t p)
@@ -337,7 +399,11 @@ private:
   int m_threads = 1, m_team = 1;
   long long m_k_ad = 1;
   bool m_in_selection = false;
-  bool m_team_has_round = false;
+  std::uint32_t m_round_number = 0;                // of the last round published
+  // the master alone until m_solo_until (see master())
+  std::chrono::steady_clock::time_point m_solo_until;
+  double m_solo_length = 0.01;
+  double m_window_phase = 0., m_window_wait = 0.;
   std::chrono::steady_clock::time_point m_round_start;
   // face units of the current round (see start_round())
   std::vector<Index> m_unit_of_face;               // per face, NO_INDEX between rounds
@@ -346,7 +412,7 @@ private:
   std::vector<Offer> m_offers;                     // per list of the round, when paths are recorded
   Stealing_ranges m_ranges;                        // one per thread
   std::vector<std::size_t> m_range_begin, m_unit_thread, m_unit_order;
-  Team_barrier m_barrier;
+  Round_team m_sync;
 };
 
 } // namespace internal

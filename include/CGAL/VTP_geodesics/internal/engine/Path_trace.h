@@ -185,28 +185,49 @@ private:
       sx = g.length - sx;
       sy = -sy;
       const Index f = Mesh_arrays::face(o);
-      if(reaches_origin(f, o, origin, out))
+      if(ends_in_face(f, o, sx, sy, origin, out))
         return true;
       if(!(sy > 0.))
         return false;
-      // leave through C-A or B-C, on the side of C opposite to the line
-      const double dx = sx - xo, dy = sy;
-      const double side = dx * g.cy - dy * (g.cx - xo);
-      double p0x, p0y, wx, wy;
       Index e;
-      if(side >= 0.)
+      double p0x, p0y, wx, wy, position;
+      if(m.is_degenerate_face[f])
       {
-        e = Mesh_arrays::next(o);  // B -> C
-        p0x = g.length; p0y = 0.; wx = g.cx - g.length; wy = g.cy;
+        // a face of (almost) zero area is crossed straight, as the windows cross it: the line goes on from
+        // the same point into the face across C-A or B-C, whichever holds the point (as in emit_point())
+        // (at C itself, through the edge of non-zero length)
+        if(xo < g.cx || (xo == g.cx && !(g.l_next > 0.)))
+        {
+          e = Mesh_arrays::prev(o);  // C -> A
+          p0x = g.cx; p0y = g.cy; wx = -g.cx; wy = -g.cy;
+        }
+        else
+        {
+          e = Mesh_arrays::next(o);  // B -> C
+          p0x = g.length; p0y = 0.; wx = g.cx - g.length; wy = g.cy;
+        }
+        position = std::sqrt((xo - p0x) * (xo - p0x) + p0y * p0y);
       }
       else
       {
-        e = Mesh_arrays::prev(o);  // C -> A
-        p0x = g.cx; p0y = g.cy; wx = -g.cx; wy = -g.cy;
+        // leave through C-A or B-C, on the side of C opposite to the line
+        const double dx = sx - xo, dy = sy;
+        const double side = dx * g.cy - dy * (g.cx - xo);
+        if(side >= 0.)
+        {
+          e = Mesh_arrays::next(o);  // B -> C
+          p0x = g.length; p0y = 0.; wx = g.cx - g.length; wy = g.cy;
+        }
+        else
+        {
+          e = Mesh_arrays::prev(o);  // C -> A
+          p0x = g.cx; p0y = g.cy; wx = -g.cx; wy = -g.cy;
+        }
+        const double den = dx * wy - dy * wx;
+        double v = den != 0. ? (dx * (0. - p0y) - dy * (xo - p0x)) / den : 0.;
+        v = (std::min)((std::max)(v, 0.), 1.);
+        position = v * std::sqrt(wx * wx + wy * wy);
       }
-      const double den = dx * wy - dy * wx;
-      double v = den != 0. ? (dx * (0. - p0y) - dy * (xo - p0x)) / den : 0.;
-      v = (std::min)((std::max)(v, 0.), 1.);
       const double w = std::sqrt(wx * wx + wy * wy);
       if(!(w > 0.))
         return false;
@@ -215,7 +236,7 @@ private:
       const double rx = sx - p0x, ry = sy - p0y;
       const double ex = rx * ux + ry * uy, ey = ux * ry - uy * rx;
       h = e;
-      x = v * m.geometry[e].length;
+      x = (std::min)((std::max)(position * (m.geometry[e].length / w), 0.), m.geometry[e].length);
       sx = ex;
       sy = ey;
       p.element = e;
@@ -223,6 +244,45 @@ private:
       push(out, p);
     }
     return false;
+  }
+
+  // Whether the straight part towards the image (sx, sy) (frame of o) of `origin` ends in face f, entered
+  // through o: the origin is the third vertex of f, or the source point lies in f, or the image itself lies
+  // in f (an image on an edge: a pseudo-source seen through a face of zero area, which it reaches straight).
+  // Appends the end of the path so far.
+  bool ends_in_face(Index f, Index o, double sx, double sy, Index origin, std::vector<Trace_point>& out) const
+  {
+    if(reaches_origin(f, o, origin, out))
+      return true;
+    const Mesh_arrays& m = m_mesh;
+    if(m.is_degenerate_face[f])
+      return false;
+    const Halfedge_geometry& g = m.geometry[o];
+    const double scale = (std::max)(g.length, (std::max)(g.l_next, g.l_prev));
+    const double tolerance = 1e-9 * scale * scale;
+    const double side_ab = sy * g.length;
+    const double side_bc = (g.cx - g.length) * sy - g.cy * (sx - g.length);
+    const double side_ca = -g.cx * (sy - g.cy) + g.cy * (sx - g.cx);
+    if(!(side_ab >= -tolerance && side_bc >= -tolerance && side_ca >= -tolerance))
+      return false;
+    // the image is in f: the path reaches it, then goes straight to the origin
+    Trace_point p;
+    const double edge_tolerance = 1e-9 * scale;
+    if(sy * g.length <= edge_tolerance * g.length)
+    {
+      p.kind = Trace_point::ON_EDGE;
+      p.element = o;
+      p.x = (std::min)((std::max)(sx, 0.), g.length);
+    }
+    else
+    {
+      p.kind = Trace_point::IN_FACE;
+      p.element = f;
+      to_face_frame(m, f, static_cast<int>(o % 3), sx, sy, p.x, p.y);
+    }
+    push(out, p);
+    straight_to(origin, out);
+    return true;
   }
 
   // Whether face f (entered through o) ends the straight part towards `origin`; appends its point.

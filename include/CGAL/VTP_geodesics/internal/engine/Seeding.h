@@ -43,12 +43,36 @@ struct Seed
 // vertex it denotes; a point with one zero coordinate is a point of an edge, given on the lower of the two
 // half-edges of the edge, so that the same point gives the same seed from either face. A point of a face
 // of (almost) zero area is taken on the longest edge of the face.
+//
+// A point closer to an edge than 1e-12 times the length of the edge is taken on the edge, and a point of an
+// edge closer to one of its ends than 1e-12 times its length is that vertex: a window whose source image
+// lies that close to the line of its edge cannot be propagated accurately (from 1e-15, distances would be
+// wrong), while the distances change by at most that much.
 inline Seed seed_from_barycentric(const Mesh_arrays& m, Index f, double b0, double b1, double b2, Index label)
 {
   Seed s;
   s.label = label;
   const Index h0 = 3 * f;
-  const double b[3] = { b0, b1, b2 };
+  const double snap = 1e-12;
+  double b[3] = { b0, b1, b2 };
+  if(!m.is_degenerate_face[f])
+  {
+    // the height of the point above edge k (from vertex k to vertex k+1) is b[k+2] times the height of the
+    // third vertex, 2 area / length
+    const Halfedge_geometry& g = m.geometry[h0];
+    const double twice_area = g.cy * g.length;
+    for(int k = 0; k < 3; ++k)
+    {
+      const double length = m.geometry[h0 + k].length;
+      if(length > 0. && b[(k + 2) % 3] * twice_area < snap * length * length)
+      {
+        const double t = b[(k + 1) % 3] / (b[k] + b[(k + 1) % 3]);
+        b[(k + 2) % 3] = 0.;
+        b[k] = 1. - t;
+        b[(k + 1) % 3] = t;
+      }
+    }
+  }
   // vertices
   for(int k = 0; k < 3; ++k)
     if(b[(k + 1) % 3] == 0. && b[(k + 2) % 3] == 0.)
@@ -59,13 +83,13 @@ inline Seed seed_from_barycentric(const Mesh_arrays& m, Index f, double b0, doub
     }
   auto on_edge = [&](Index h, double t) {
     const double length = m.geometry[h].length;
-    if(!(t > 0.))
+    if(!(t > snap * length))
     {
       s.kind = Seed::AT_VERTEX;
       s.element = m.source[h];
       return s;
     }
-    if(!(t < length))
+    if(!(t < length - snap * length))
     {
       s.kind = Seed::AT_VERTEX;
       s.element = m.target(h);
@@ -91,7 +115,7 @@ inline Seed seed_from_barycentric(const Mesh_arrays& m, Index f, double b0, doub
       return on_edge(h0 + k, b[(k + 1) % 3] * m.geometry[h0 + k].length);
   // the point in the frame of h0: A = (0,0), B = (L,0), C = (cx,cy)
   const Halfedge_geometry& g = m.geometry[h0];
-  const double px = b1 * g.length + b2 * g.cx, py = b2 * g.cy;
+  const double px = b[1] * g.length + b[2] * g.cx, py = b[2] * g.cy;
   if(m.is_degenerate_face[f])
   {
     // on the line of the longest edge: project

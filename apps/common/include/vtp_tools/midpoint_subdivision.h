@@ -1,20 +1,14 @@
 // Copyright (c) 2026  VTP_geodesics contributors.
 // All rights reserved.
 //
-// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+// This file is part of the applications of the VTP_geodesics package (not installed with the library).
 //
-// $URL$
-// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef CGAL_VTP_GEODESICS_INTERNAL_TOOLS_MIDPOINT_SUBDIVISION_H
-#define CGAL_VTP_GEODESICS_INTERNAL_TOOLS_MIDPOINT_SUBDIVISION_H
-
-#include <CGAL/license/VTP_geodesics.h>
-
-#include <CGAL/disable_warnings.h>
+#ifndef VTP_TOOLS_MIDPOINT_SUBDIVISION_H
+#define VTP_TOOLS_MIDPOINT_SUBDIVISION_H
 
 #include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -29,9 +23,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace CGAL {
-namespace VTP_geodesics {
-namespace internal {
+namespace vtp_tools {
 
 // Performs `levels` rounds of 1-to-4 midpoint subdivision of the triangle mesh `m`: a new vertex
 // is inserted at the midpoint of every edge and every triangle is split into four triangles (three
@@ -54,7 +46,7 @@ void midpoint_subdivide(PolygonMesh& m, int levels = 1)
   typedef typename GT::face_descriptor face_descriptor;
   typedef typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type Vertex_point_map;
   typedef typename boost::property_traits<Vertex_point_map>::value_type Point;
-  typedef typename Kernel_traits<Point>::Kernel Kernel;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
   typedef std::array<std::size_t, 3> Triangle;
 
   CGAL_precondition(CGAL::is_triangle_mesh(m));
@@ -107,10 +99,6 @@ void midpoint_subdivide(PolygonMesh& m, int levels = 1)
   }
 }
 
-} // namespace internal
-} // namespace VTP_geodesics
-} // namespace CGAL
+} // namespace vtp_tools
 
-#include <CGAL/enable_warnings.h>
-
-#endif // CGAL_VTP_GEODESICS_INTERNAL_TOOLS_MIDPOINT_SUBDIVISION_H
+#endif // VTP_TOOLS_MIDPOINT_SUBDIVISION_H

@@ -1,22 +1,16 @@
 // Copyright (c) 2026  VTP_geodesics contributors.
 // All rights reserved.
 //
-// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+// This file is part of the applications of the VTP_geodesics package (not installed with the library).
 //
-// $URL$
-// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef CGAL_VTP_GEODESICS_INTERNAL_TOOLS_TRIANGLE_MESH_FROM_SOUP_H
-#define CGAL_VTP_GEODESICS_INTERNAL_TOOLS_TRIANGLE_MESH_FROM_SOUP_H
-
-#include <CGAL/license/VTP_geodesics.h>
+#ifndef VTP_TOOLS_TRIANGLE_MESH_FROM_SOUP_H
+#define VTP_TOOLS_TRIANGLE_MESH_FROM_SOUP_H
 
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
-
-#include <CGAL/disable_warnings.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -36,9 +30,7 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace VTP_geodesics {
-namespace internal {
+namespace vtp_tools {
 
 // What `triangle_mesh_from_soup()` did to make a triangle mesh out of a polygon soup.
 struct Soup_repair_report
@@ -84,6 +76,28 @@ struct Soup_repair_report
   }
 };
 
+// Checks what no repair can fix: the soup has points and faces, finite coordinates and indices in range. Throws
+// `CGAL::VTP_geodesics::Invalid_input_error` with a one-line message that says which vertex or face is wrong.
+template <class Point>
+void check_soup_values(const std::vector<Point>& points, const std::vector<std::vector<std::size_t> >& polygons)
+{
+  typedef CGAL::VTP_geodesics::Invalid_input_error Error;
+  const std::size_t n = points.size();
+  if(n == 0)
+    throw Error("the mesh has no vertices");
+  for(std::size_t i = 0; i < n; ++i)
+    if(!std::isfinite(CGAL::to_double(points[i].x())) || !std::isfinite(CGAL::to_double(points[i].y()))
+       || !std::isfinite(CGAL::to_double(points[i].z())))
+      throw Error("vertex " + std::to_string(i) + " has a non-finite coordinate");
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    for(std::size_t id : polygons[f])
+      if(id >= n)
+        throw Error("face " + std::to_string(f) + " refers to vertex " + std::to_string(id) + ", out of range (there are "
+                    + std::to_string(n) + " vertices)");
+  if(polygons.empty())
+    throw Error("the mesh has no faces");
+}
+
 // Builds a triangle `Surface_mesh` from a polygon soup, and tells which vertices of the mesh stand
 // for each point of the soup, so that results on the mesh can be reported in the soup's point order.
 //
@@ -98,8 +112,9 @@ struct Soup_repair_report
 // one vertex normally, several if the point was duplicated, none if it was removed. Coincident points
 // merged by the repair stand for the same vertices.
 //
-// Throws `Invalid_input_error` (one-line message) if the soup has no point or no face, a non-finite
-// coordinate or an index out of range, no face left after the repair, or cannot be made a triangle mesh.
+// Throws `CGAL::VTP_geodesics::Invalid_input_error` (one-line message) if the soup has no point or no face, a
+// non-finite coordinate or an index out of range (see `check_soup_values()`), no face left after the repair, or
+// cannot be made a triangle mesh.
 template <class Point>
 Soup_repair_report
 triangle_mesh_from_soup(std::vector<Point> points,
@@ -111,24 +126,12 @@ triangle_mesh_from_soup(std::vector<Point> points,
   namespace PMP = CGAL::Polygon_mesh_processing;
   typedef CGAL::Surface_mesh<Point> Mesh;
   typedef typename Mesh::Vertex_index Vertex_index;
-  typedef typename Kernel_traits<Point>::Kernel Kernel;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
   typedef std::map<Point, std::size_t, typename Kernel::Less_xyz_3> Point_index;
 
   Soup_repair_report report;
   const std::size_t n = points.size();
-  if(n == 0)
-    throw Invalid_input_error("the mesh has no vertices");
-  for(std::size_t i = 0; i < n; ++i)
-    if(!std::isfinite(CGAL::to_double(points[i].x())) || !std::isfinite(CGAL::to_double(points[i].y()))
-       || !std::isfinite(CGAL::to_double(points[i].z())))
-      throw Invalid_input_error("vertex " + std::to_string(i) + " has a non-finite coordinate");
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-    for(std::size_t id : polygons[f])
-      if(id >= n)
-        throw Invalid_input_error("face " + std::to_string(f) + " refers to vertex " + std::to_string(id)
-                                  + ", out of range (there are " + std::to_string(n) + " vertices)");
-  if(polygons.empty())
-    throw Invalid_input_error("the mesh has no faces");
+  check_soup_values(points, polygons);
 
   // image[i]: the point that input point i became after the repair (NONE if it was removed);
   // copy_of[j]: the repaired point that point j of the final soup is a copy of.
@@ -154,7 +157,7 @@ triangle_mesh_from_soup(std::vector<Point> points,
     else
       report.split_faces = polygons.size() - input_polygons;
     if(polygons.empty())
-      throw Invalid_input_error("no face is left after removing the degenerate faces");
+      throw CGAL::VTP_geodesics::Invalid_input_error("no face is left after removing the degenerate faces");
 
     // The repaired points are pairwise distinct: find each input point among them by its coordinates.
     Point_index repaired_index;
@@ -205,7 +208,7 @@ triangle_mesh_from_soup(std::vector<Point> points,
     visitor.cut_edges = &cut_edges;
     PMP::orient_polygon_soup(points, polygons, CGAL::parameters::visitor(visitor));
     if(copy_of.size() != points.size() || !PMP::is_polygon_soup_a_polygon_mesh(polygons))
-      throw Invalid_input_error("the polygon soup cannot be repaired into a manifold polygon mesh");
+      throw CGAL::VTP_geodesics::Invalid_input_error("the polygon soup cannot be repaired into a manifold polygon mesh");
   }
   else
   {
@@ -215,7 +218,7 @@ triangle_mesh_from_soup(std::vector<Point> points,
   mesh.clear();
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   if(mesh.number_of_vertices() != points.size() || mesh.number_of_faces() != polygons.size())
-    throw Invalid_input_error("the polygon soup cannot be converted into a polygon mesh");
+    throw CGAL::VTP_geodesics::Invalid_input_error("the polygon soup cannot be converted into a polygon mesh");
 
   if(!CGAL::is_triangle_mesh(mesh))
   {
@@ -224,7 +227,7 @@ triangle_mesh_from_soup(std::vector<Point> points,
       if(mesh.degree(f) != 3)
         ++non_triangles;
     if(!PMP::triangulate_faces(mesh) || !CGAL::is_triangle_mesh(mesh) || mesh.number_of_vertices() != points.size())
-      throw Invalid_input_error("some faces with more than three vertices cannot be triangulated");
+      throw CGAL::VTP_geodesics::Invalid_input_error("some faces with more than three vertices cannot be triangulated");
     // The triangulation removes faces (and keeps every vertex): compact the faces and half-edges;
     // vertex j stays vertex j.
     mesh.collect_garbage();
@@ -273,10 +276,6 @@ std::vector<double> values_on_soup_points(const std::vector<std::size_t>& copy_b
   return result;
 }
 
-} // namespace internal
-} // namespace VTP_geodesics
-} // namespace CGAL
+} // namespace vtp_tools
 
-#include <CGAL/enable_warnings.h>
-
-#endif // CGAL_VTP_GEODESICS_INTERNAL_TOOLS_TRIANGLE_MESH_FROM_SOUP_H
+#endif // VTP_TOOLS_TRIANGLE_MESH_FROM_SOUP_H

@@ -1,20 +1,14 @@
 // Copyright (c) 2026  VTP_geodesics contributors.
 // All rights reserved.
 //
-// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+// This file is part of the applications of the VTP_geodesics package (not installed with the library).
 //
-// $URL$
-// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef CGAL_VTP_GEODESICS_INTERNAL_TOOLS_SHORTEST_PATH_REFERENCE_H
-#define CGAL_VTP_GEODESICS_INTERNAL_TOOLS_SHORTEST_PATH_REFERENCE_H
-
-#include <CGAL/license/VTP_geodesics.h>
-
-#include <CGAL/disable_warnings.h>
+#ifndef VTP_TOOLS_SHORTEST_PATH_REFERENCE_H
+#define VTP_TOOLS_SHORTEST_PATH_REFERENCE_H
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Surface_mesh.h>
@@ -28,9 +22,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace CGAL {
-namespace VTP_geodesics {
-namespace internal {
+namespace vtp_tools {
 
 // Reference distances computed with `CGAL::Surface_mesh_shortest_path` (Chen and Han / Xin and Wang),
 // with the traits `Surface_mesh_shortest_path_traits<K, Surface_mesh<Point>>`, `K` being the kernel of
@@ -51,7 +43,7 @@ shortest_path_reference_distances(const CGAL::Surface_mesh<Point>& mesh,
 {
   typedef CGAL::Surface_mesh<Point> Mesh;
   typedef typename Mesh::Vertex_index Vertex_index;
-  typedef typename Kernel_traits<Point>::Kernel Kernel;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
   typedef CGAL::Surface_mesh_shortest_path_traits<Kernel, Mesh> Traits;
   typedef CGAL::Surface_mesh_shortest_path<Traits> Shortest_path;
 
@@ -154,10 +146,6 @@ inline Distance_comparison compare_distances(const std::vector<double>& a, const
   return result;
 }
 
-} // namespace internal
-} // namespace VTP_geodesics
-} // namespace CGAL
+} // namespace vtp_tools
 
-#include <CGAL/enable_warnings.h>
-
-#endif // CGAL_VTP_GEODESICS_INTERNAL_TOOLS_SHORTEST_PATH_REFERENCE_H
+#endif // VTP_TOOLS_SHORTEST_PATH_REFERENCE_H

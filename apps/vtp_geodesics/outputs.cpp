@@ -1,0 +1,178 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the applications of the VTP_geodesics package (not installed with the library).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#include "outputs.h"
+
+#include <vtp_tools/colour_map.h>
+#include <vtp_tools/distance_ply.h>
+#include <vtp_tools/mesh_formats.h>
+#include <vtp_tools/number_format.h>
+#include <vtp_tools/picture.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace vtp_geodesics_app {
+
+Distance_format distance_format(const std::string& file)
+{
+  return vtp_tools::lower_extension(file) == "ply" ? Distance_format::PLY : Distance_format::TEXT;
+}
+
+void write_distances(std::ostream& os, Distance_format format, const vtp_tools::Input_mesh& input,
+                     const std::vector<double>& distances, const std::vector<int>* labels, double max_distance)
+{
+  if(format == Distance_format::TEXT)
+  {
+    vtp_tools::write_values_text(os, distances);
+    return;
+  }
+  std::string comment = "VTP_geodesics: geodesic distances (property distance; inf: unreachable)";
+  if(labels != nullptr)
+    comment += "\nsource: index of the nearest source (-1: none)";
+  comment += "\ncolours: " + std::string(vtp_tools::colour_map_name()) + " from 0 to "
+             + vtp_tools::double_to_string(max_distance) + "; grey: unreachable";
+  vtp_tools::write_distance_ply(os, input, distances, labels, max_distance, comment);
+}
+
+void write_picture(std::ostream& os, const vtp_tools::Mesh& mesh, const std::vector<double>& mesh_distances,
+                   double max_distance, const Picture_request& request)
+{
+  vtp_tools::Picture_options options;
+  options.isolines = request.isolines;
+  if(request.has_view)
+  {
+    options.has_view = true;
+    options.view = request.view;
+  }
+  vtp_tools::Distance_picture picture(options);
+  const vtp_tools::Mesh::size_type nv = mesh.number_of_vertices();
+  picture.set_mesh(
+    static_cast<std::size_t>(nv),
+    [&mesh](std::size_t i) {
+      const vtp_tools::Point_3& p = mesh.point(vtp_tools::Vertex_index(static_cast<vtp_tools::Mesh::size_type>(i)));
+      return std::array<double, 3>{ { p.x(), p.y(), p.z() } };
+    },
+    static_cast<std::size_t>(mesh.number_of_faces()),
+    [&mesh](std::size_t f) {
+      const vtp_tools::Mesh::Halfedge_index h = mesh.halfedge(vtp_tools::Mesh::Face_index(
+        static_cast<vtp_tools::Mesh::size_type>(f)));
+      return std::array<std::uint32_t, 3>{ { static_cast<std::uint32_t>(mesh.source(h)),
+                                             static_cast<std::uint32_t>(mesh.target(h)),
+                                             static_cast<std::uint32_t>(mesh.target(mesh.next(h))) } };
+    },
+    mesh_distances, max_distance);
+  for(std::size_t v : request.source_vertices)
+  {
+    const vtp_tools::Point_3& p = mesh.point(vtp_tools::Vertex_index(static_cast<vtp_tools::Mesh::size_type>(v)));
+    picture.add_marker({ { p.x(), p.y(), p.z() } });
+  }
+  picture.write_png(os);
+}
+
+namespace {
+
+std::string json_string(const std::string& s)
+{
+  std::string r = "\"";
+  for(unsigned char c : s)
+  {
+    if(c == '"') r += "\\\"";
+    else if(c == '\\') r += "\\\\";
+    else if(c < 0x20)
+    {
+      char buffer[8];
+      std::snprintf(buffer, sizeof(buffer), "\\u%04x", static_cast<unsigned>(c));
+      r += buffer;
+    }
+    else r += static_cast<char>(c);
+  }
+  return r + "\"";
+}
+
+std::string json_number(double x)
+{
+  if(!std::isfinite(x))
+    return "null";
+  return vtp_tools::double_to_string(x);
+}
+
+} // namespace
+
+std::string stats_json(const Report& r)
+{
+  const Run_result& s = *r.run;
+  std::ostringstream os;
+  os << "{"
+     << "\"mesh\": " << json_string(r.mesh)
+     << ", \"vertices\": " << r.vertices
+     << ", \"faces\": " << r.faces
+     << ", \"mesh_vertices\": " << s.mesh_vertices
+     << ", \"mesh_faces\": " << s.mesh_faces
+     << ", \"reader\": " << json_string(r.reader)
+     << ", \"repairs\": " << json_string(r.repairs)
+     << ", \"source\": " << r.source
+     << ", \"method\": " << json_string(s.method)
+     << ", \"threads\": " << s.threads
+     << ", \"seconds\": " << json_number(s.propagation_seconds)
+     << ", \"read_seconds\": " << json_number(r.read_seconds)
+     << ", \"repair_seconds\": " << json_number(r.repair_seconds)
+     << ", \"preprocessing_seconds\": " << json_number(s.preprocessing_seconds)
+     << ", \"propagation_seconds\": " << json_number(s.propagation_seconds)
+     << ", \"write_seconds\": " << json_number(r.write_seconds)
+     << ", \"total_seconds\": " << json_number(r.total_seconds)
+     << ", \"peak_rss_mb\": " << json_number(r.peak_rss_mb)
+     << ", \"windows_created\": " << s.windows_created
+     << ", \"windows_propagated\": " << s.windows_propagated
+     << ", \"peak_live_windows\": " << s.peak_live_windows
+     << ", \"peak_window_bytes\": " << s.peak_window_bytes
+     << ", \"vertices_processed\": " << s.vertices_processed
+     << ", \"pseudo_sources\": " << s.pseudo_sources
+     << ", \"resets\": " << s.resets
+     << ", \"reached_vertices\": " << r.reached_vertices
+     << ", \"max_distance\": " << json_number(r.max_distance)
+     << ", \"mean_edge_length\": " << json_number(s.mean_edge_length)
+     << ", \"anisotropy\": " << json_number(s.anisotropy);
+  if(r.checked)
+    os << ", \"cgal_seconds\": " << json_number(s.cgal_seconds)
+       << ", \"max_abs_diff\": " << json_number(r.comparison.max_abs_diff)
+       << ", \"max_rel_diff\": " << json_number(r.comparison.max_rel_diff)
+       << ", \"mean_rel_diff\": " << json_number(r.comparison.mean_rel_diff)
+       << ", \"mismatched_infinities\": " << r.comparison.mismatched_infinities;
+  os << "}\n";
+  return os.str();
+}
+
+void print_summary(std::ostream& os, const Report& r)
+{
+  const Run_result& s = *r.run;
+  os << "mesh: " << r.mesh << "\n"
+     << "vertices: " << r.vertices << ", faces: " << r.faces << ", source: " << r.source << "\n"
+     << "method: " << s.method << ", propagation: " << s.propagation_seconds
+     << " s, preprocessing: " << s.preprocessing_seconds << " s, reading: " << r.read_seconds + r.repair_seconds
+     << " s\n"
+     << "max distance: " << r.max_distance << " (" << r.reached_vertices << " of " << r.vertices
+     << " vertices reached)\n"
+     << "windows: " << s.windows_created << " created, " << s.windows_propagated << " propagated, peak "
+     << s.peak_live_windows << " alive (" << s.peak_window_bytes << " bytes)\n";
+  if(!r.repairs.empty())
+    os << "triangle mesh: " << s.mesh_vertices << " vertices, " << s.mesh_faces << " faces\n";
+}
+
+void print_check(std::ostream& os, const Report& r)
+{
+  os << "CGAL Surface_mesh_shortest_path: " << r.run->cgal_seconds << " s, max abs diff "
+     << r.comparison.max_abs_diff << ", max rel diff " << r.comparison.max_rel_diff;
+  if(r.comparison.mismatched_infinities != 0)
+    os << ", " << r.comparison.mismatched_infinities << " reachability mismatches";
+  os << "\n";
+}
+
+} // namespace vtp_geodesics_app

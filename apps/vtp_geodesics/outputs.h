@@ -1,0 +1,73 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the applications of the VTP_geodesics package (not installed with the library).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#ifndef VTP_GEODESICS_APP_OUTPUTS_H
+#define VTP_GEODESICS_APP_OUTPUTS_H
+
+// What vtp_geodesics writes: the distances (text or PLY, by file name), the picture, the JSON statistics and the
+// summary for people.
+
+#include "run.h"
+
+#include <vtp_tools/read_mesh.h>
+#include <vtp_tools/shortest_path_reference.h>
+
+#include <array>
+#include <cstddef>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace vtp_geodesics_app {
+
+struct Report
+{
+  std::string mesh;                        // file name
+  std::string reader;                      // which reader read it
+  std::string repairs;                     // what the repair did; empty if nothing
+  std::size_t vertices = 0, faces = 0;     // of the file
+  std::size_t source = 0;                  // file vertex
+  std::size_t reached_vertices = 0;
+  double max_distance = 0.;
+  const Run_result* run = nullptr;         // statistics of the computation
+  double read_seconds = 0., repair_seconds = 0., write_seconds = 0., total_seconds = 0.;
+  double peak_rss_mb = 0.;
+  bool checked = false;
+  vtp_tools::Distance_comparison comparison;
+};
+
+enum class Distance_format { TEXT, PLY };
+
+// The format of `--output FILE`: PLY for a .ply extension, else text.
+Distance_format distance_format(const std::string& file);
+
+// Writes the distances (one per vertex of the file) in `format`; `labels` (nearest source per file vertex) may
+// be null.
+void write_distances(std::ostream& os, Distance_format format, const vtp_tools::Input_mesh& input,
+                     const std::vector<double>& distances, const std::vector<int>* labels, double max_distance);
+
+struct Picture_request
+{
+  int isolines = 10;
+  bool has_view = false;
+  std::array<double, 3> view = { { 0., 0., -1. } };
+  std::vector<std::size_t> source_vertices; // mesh vertices to mark
+};
+
+// Draws the distance field on the mesh of the computation (`mesh_distances`: per mesh vertex) as a PNG picture.
+void write_picture(std::ostream& os, const vtp_tools::Mesh& mesh, const std::vector<double>& mesh_distances,
+                   double max_distance, const Picture_request& request);
+
+std::string stats_json(const Report& r);
+void print_summary(std::ostream& os, const Report& r);
+void print_check(std::ostream& os, const Report& r);
+
+} // namespace vtp_geodesics_app
+
+#endif // VTP_GEODESICS_APP_OUTPUTS_H

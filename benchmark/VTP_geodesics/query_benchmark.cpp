@@ -1,0 +1,244 @@
+// vtp_query_benchmark: the cost of the queries beyond a full distance field, side by side in one run:
+// a distance limit, one near target, and path recording, against the full run from the same source.
+//
+//   vtp_query_benchmark [--repeat R] [--threads T] [--limit F] MESH...
+//
+// For each mesh (source: vertex 0), in this order and R times, interleaved, each run in a forked child (so
+// that its peak resident memory, ru_maxrss from wait4, is its own; the mesh is read by the parent):
+//   full      exact VTP to every vertex
+//   limit     maximum_distance(F * the largest distance of the full run) (default F = 0.1)
+//   target    targets(v), v the vertex whose distance is nearest F times the largest one
+//   record    the full run with record_paths(true)
+//   pvtp-*    the same three first runs with CGAL::Parallel_tag on T threads (if built with OpenMP)
+// It prints the fastest time of each, its ratio to the full run of the same scheduling, the vertices
+// processed and windows propagated, and the peak RSS and its ratio to the full run.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/property_map.h>
+
+#include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
+#include <CGAL/VTP_geodesics/parameters.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <sys/resource.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+typedef Mesh::Vertex_index Vertex_index;
+typedef CGAL::VTP_geodesics::Geodesic_distance_solver<Mesh> Solver;
+namespace VP = CGAL::VTP_geodesics::parameters;
+
+namespace {
+
+enum class Query { FULL, LIMIT, TARGET, RECORD };
+const char* const query_names[] = { "full", "limit", "target", "record" };
+
+struct Result
+{
+  double seconds = 0.;
+  double max_distance = 0.;
+  unsigned long long processed = 0, propagated = 0;
+  double target_distance = 0.;
+  int ok = 0;
+};
+
+// Runs one query in this process.
+Result run_query(const Mesh& mesh, Query q, bool parallel, int threads, double limit, Vertex_index target)
+{
+  Solver solver(mesh);
+  const CGAL::Constant_property_map<Vertex_index, double> no_map;
+  const Vertex_index source(0);
+  auto np = VP::number_of_threads(threads).maximum_distance(q == Query::LIMIT ? limit : std::numeric_limits<double>::infinity())
+              .record_paths(q == Query::RECORD);
+  std::vector<Vertex_index> targets;
+  if(q == Query::TARGET)
+    targets.push_back(target);
+  const auto np2 = np.targets(targets);
+  if(parallel)
+  {
+#ifdef _OPENMP
+    solver.compute<CGAL::Parallel_tag>(no_map, source, np2);
+#else
+    throw std::runtime_error("built without OpenMP");
+#endif
+  }
+  else
+    solver.compute(no_map, source, np2);
+  Result r;
+  r.seconds = solver.statistics().seconds;
+  r.max_distance = solver.statistics().max_distance;
+  r.processed = solver.statistics().vertices_processed;
+  r.propagated = solver.statistics().windows_propagated;
+  r.target_distance = q == Query::TARGET ? solver.target_distance(0) : 0.;
+  r.ok = 1;
+  return r;
+}
+
+// Runs one query in a child process; returns its result and its peak RSS (MB).
+Result run_forked(const Mesh& mesh, Query q, bool parallel, int threads, double limit, Vertex_index target,
+                  double& peak_rss_mb)
+{
+  int fds[2];
+  if(::pipe(fds) != 0)
+    throw std::runtime_error("pipe() failed");
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if(pid < 0)
+    throw std::runtime_error("fork() failed");
+  if(pid == 0)
+  {
+    ::close(fds[0]);
+    Result r;
+    try { r = run_query(mesh, q, parallel, threads, limit, target); }
+    catch(...) { r.ok = 0; }
+    const char* p = reinterpret_cast<const char*>(&r);
+    std::size_t left = sizeof(r);
+    while(left > 0)
+    {
+      const ssize_t w = ::write(fds[1], p, left);
+      if(w <= 0)
+        _exit(3);
+      p += w;
+      left -= static_cast<std::size_t>(w);
+    }
+    _exit(0);
+  }
+  ::close(fds[1]);
+  Result r;
+  char* p = reinterpret_cast<char*>(&r);
+  std::size_t got = 0;
+  while(got < sizeof(r))
+  {
+    const ssize_t n = ::read(fds[0], p + got, sizeof(r) - got);
+    if(n < 0 && errno == EINTR)
+      continue;
+    if(n <= 0)
+      break;
+    got += static_cast<std::size_t>(n);
+  }
+  ::close(fds[0]);
+  int status = 0;
+  struct rusage usage;
+  while(::wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {}
+  peak_rss_mb = static_cast<double>(usage.ru_maxrss) / 1024.;
+  if(got != sizeof(r) || !r.ok || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error("a child run failed");
+  return r;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  int repeat = 3, threads = 2;
+  double fraction = 0.1;
+  std::vector<std::string> files;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if(a == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
+    else if(a == "--threads" && i + 1 < argc) threads = std::max(1, std::atoi(argv[++i]));
+    else if(a == "--limit" && i + 1 < argc) fraction = std::atof(argv[++i]);
+    else if(a == "--help" || a == "-h")
+    {
+      std::cout << "usage: vtp_query_benchmark [--repeat R] [--threads T] [--limit F] MESH...\n";
+      return 0;
+    }
+    else if(!a.empty() && a[0] == '-')
+    {
+      std::cerr << "vtp_query_benchmark: error: unknown option " << a << std::endl;
+      return 2;
+    }
+    else
+      files.push_back(a);
+  }
+  if(files.empty() || !(fraction > 0.))
+  {
+    std::cerr << "vtp_query_benchmark: error: give at least one mesh (and a limit fraction > 0)" << std::endl;
+    return 2;
+  }
+  try
+  {
+    std::cout << "| Mesh | #V | Run | Time (s) | vs full | Vertices processed | Windows propagated | Peak RSS (MB) | vs full |\n"
+              << "|---|--:|---|--:|--:|--:|--:|--:|--:|\n";
+    for(const std::string& file : files)
+    {
+      Mesh mesh;
+      if(!CGAL::IO::read_polygon_mesh(file, mesh) || !CGAL::is_triangle_mesh(mesh) || mesh.is_empty())
+        throw std::runtime_error("cannot read " + file);
+      // the largest distance and the target, from one full run in this process
+      Vertex_index target(0);
+      double limit = 0.;
+      {
+        Solver solver(mesh);
+        solver.compute(CGAL::Constant_property_map<Vertex_index, double>(), Vertex_index(0));
+        const std::vector<double>& d = solver.distances();
+        const double max_d = solver.statistics().max_distance;
+        limit = fraction * max_d;
+        double best = std::numeric_limits<double>::infinity();
+        for(Vertex_index v : vertices(mesh))
+          if(std::abs(d[solver.vertex_id(v)] - limit) < best)
+          {
+            best = std::abs(d[solver.vertex_id(v)] - limit);
+            target = v;
+          }
+      }
+      struct Case { Query q; bool parallel; };
+      std::vector<Case> cases = { { Query::FULL, false }, { Query::LIMIT, false }, { Query::TARGET, false },
+                                  { Query::RECORD, false } };
+#ifdef _OPENMP
+      cases.push_back({ Query::FULL, true });
+      cases.push_back({ Query::LIMIT, true });
+      cases.push_back({ Query::TARGET, true });
+#endif
+      std::vector<Result> best(cases.size());
+      std::vector<double> rss(cases.size(), 0.);
+      for(int r = 0; r < repeat; ++r)
+        for(std::size_t c = 0; c < cases.size(); ++c)
+        {
+          double peak = 0.;
+          const Result x = run_forked(mesh, cases[c].q, cases[c].parallel, threads, limit, target, peak);
+          if(r == 0 || x.seconds < best[c].seconds)
+            best[c] = x;
+          rss[c] = std::max(rss[c], peak);
+        }
+      const std::string name = file.substr(file.find_last_of('/') + 1);
+      for(std::size_t c = 0; c < cases.size(); ++c)
+      {
+        const std::size_t full = cases[c].parallel ? 4 : 0;
+        char line[512];
+        std::snprintf(line, sizeof(line), "| %s | %zu | %s%s | %.3g | %.3f | %llu | %llu | %.0f | %.3f |\n", name.c_str(),
+                      static_cast<std::size_t>(num_vertices(mesh)),
+                      cases[c].parallel ? ("pvtp:" + std::to_string(threads) + " ").c_str() : "",
+                      query_names[static_cast<int>(cases[c].q)], best[c].seconds, best[c].seconds / best[full].seconds,
+                      best[c].processed, best[c].propagated, rss[c], rss[c] / rss[full]);
+        std::cout << line;
+      }
+      std::cout << "| | | (limit " << limit << " = " << fraction << " x max distance " << best[0].max_distance
+                << "; target at distance " << best[2].target_distance << ") | | | | | | |" << std::endl;
+    }
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "vtp_query_benchmark: error: " << e.what() << std::endl;
+    return 2;
+  }
+  return 0;
+}
