@@ -31,8 +31,12 @@ COLUMNS = [
     ("max_pointwise_rel_err_vs_vtp", "Max rel. err. (%)", "{:.3f}"),
     ("speedup_vs_vtp", "Speedup vs VTP", "{:.2f}"),
     ("peak_live_windows", "Peak windows", "{:.0f}"),
+    ("ns_per_window", "ns / window", "{:.0f}"),
+    ("pseudo_source_share", "Pseudo-sources (%)", "{:.1f}"),
+    ("cpu_seconds", "CPU time (s)", "{:.4g}"),
+    ("cpu_ratio_vs_vtp", "CPU time of vtp / method", "{:.2f}"),
 ]
-PERCENT_COLUMNS = {"mean_pointwise_rel_err_vs_vtp", "max_pointwise_rel_err_vs_vtp"}
+PERCENT_COLUMNS = {"mean_pointwise_rel_err_vs_vtp", "max_pointwise_rel_err_vs_vtp", "pseudo_source_share"}
 DEFAULT_COLUMNS = ["seconds", "preprocessing_seconds", "peak_rss_mb", "windows_created",
                    "max_rel_err_vs_vtp", "speedup_vs_cgal"]
 ERROR_COLUMNS = {"max_abs_err_vs_vtp", "max_rel_err_vs_vtp", "mean_rel_err_vs_vtp",

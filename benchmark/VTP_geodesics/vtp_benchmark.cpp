@@ -1,8 +1,12 @@
 // vtp_benchmark: time, peak memory and accuracy of VTP against CGAL's exact and approximate
 // geodesic distance methods.
 //
-//   vtp_benchmark [--subdivide N] [--sources K] [--methods vtp,cgal,heat,heat_idt] [--csv FILE]
-//                 [--repeat R] MESH...
+//   vtp_benchmark [--remesh R] [--loop N] [--subdivide N] [--sources K] [--methods vtp,cgal,heat,heat_idt]
+//                 [--external NAME=COMMAND] [--csv FILE] [--repeat R] [--save-meshes DIR] MESH...
+//
+// Realistic large inputs are made with CGAL: isotropic remeshing (--remesh) and Loop subdivision
+// (--loop) give saddle vertices almost everywhere, like scans; midpoint subdivision (--subdivide)
+// only adds flat vertices and is the easy case for VTP.
 //
 // Every (mesh, source, method) run happens in a forked child process, so that the peak resident
 // memory of each method (ru_maxrss of the child, from wait4) is measured on its own; the child
@@ -15,6 +19,9 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/assertions_behaviour.h>
 #include <CGAL/property_map.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/subdivision_method_3.h>
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
 #include <CGAL/VTP_geodesics/parameters.h>
@@ -47,6 +54,7 @@
 #include <vector>
 
 #include <sys/resource.h> // getrusage, struct rusage
+#include <time.h>         // clock_gettime
 #include <sys/types.h>
 #include <sys/wait.h>     // wait4
 #include <unistd.h>       // fork, pipe, read, write, _exit, sysconf
@@ -69,7 +77,7 @@ struct Usage_error : std::runtime_error
 // Methods. To add one, add an enumerator, a parser in `method_parsers` (or, for a method of the package, an
 // entry in vtp_tools/methods.h), and a case in `run_in_child()`.
 // ================================================================================================
-enum class Method_kind { VTP, PVTP, AVTP, PAVTP, CGAL_SMSP, HEAT_DIRECT, HEAT_IDT };
+enum class Method_kind { VTP, PVTP, AVTP, PAVTP, CGAL_SMSP, HEAT_DIRECT, HEAT_IDT, EXTERNAL };
 
 struct Method
 {
@@ -77,6 +85,7 @@ struct Method
   Method_kind kind = Method_kind::VTP;
   int threads = 1;
   double lambda = inf;      // approximate variants
+  std::string command;      // EXTERNAL: shell command with {mesh}, {source}, {output}
 };
 
 int parse_int_field(const std::string& method, const std::string& s, int min_value)
@@ -203,7 +212,11 @@ Method parse_method(const std::string& spec)
 // ================================================================================================
 struct Arguments
 {
+  double remesh = 0.;       // target edge length / mean edge length; 0: no remeshing
+  int remesh_iterations = 3;
+  int loop = 0;
   int subdivide = 0;
+  std::string save_meshes;
   std::size_t sources = 1;
   std::vector<Method> methods;
   std::string csv;
@@ -216,7 +229,17 @@ void print_usage(std::ostream& os)
 {
   os << "usage: vtp_benchmark [options] MESH...\n"
         "\n"
-        "  --subdivide N    midpoint-subdivide each mesh N times first (default 0)\n"
+        "Inputs (applied in this order; the mesh label gets /rR, /LN, /sN):\n"
+        "  --remesh R       isotropic remeshing (CGAL::Polygon_mesh_processing::isotropic_remeshing) at a\n"
+        "                   target edge length of R times the mean edge length of the input (e.g. 0.25\n"
+        "                   gives about 16x more vertices)\n"
+        "  --remesh-iterations K  iterations of the remeshing (default 3)\n"
+        "  --loop N         Loop subdivision (CGAL::Subdivision_method_3::Loop_subdivision), N steps (x4 each)\n"
+        "  --subdivide N    1-to-4 midpoint subdivision, N times: every new vertex is flat (angle sum\n"
+        "                   360 degrees), so few vertices are saddles: the easy case for VTP\n"
+        "  --save-meshes DIR  write each (generated) mesh as DIR/<label>.off, vertices in index order\n"
+        "\n"
+        "Methods and output:\n"
         "  --sources K      number of source vertices per mesh: vertex 0 and evenly spaced ids (default 1)\n"
         "  --methods LIST   comma-separated methods (default vtp,cgal):\n"
         "                     vtp       exact VTP (this package)\n"
@@ -224,6 +247,12 @@ void print_usage(std::ostream& os)
         "                     heat      CGAL::Heat_method_3, Direct (approximate, needs Eigen)\n"
         "                     heat_idt  CGAL::Heat_method_3, Intrinsic_Delaunay (approximate, needs Eigen)\n"
         "                     pvtp:T, avtp:lambda, pavtp:T:lambda\n"
+        "  --external NAME=COMMAND  also run an external program as method NAME (may be repeated): the\n"
+        "                   mesh is written as an OFF file (vertices in index order) and COMMAND runs in\n"
+        "                   /bin/sh with {mesh}, {source} (vertex index) and {output} replaced; it must\n"
+        "                   print seconds=<time of its propagation> (and may print cpu_seconds=<t> and\n"
+        "                   windows_propagated=<n>)\n"
+        "                   on standard output, and may write one distance per vertex into {output}\n"
         "  --csv FILE       also write the results as CSV\n"
         "  --repeat R       run each method R times per source and keep the fastest (default 1); the\n"
         "                   runs are interleaved (each method once, in turn, R times), so that every\n"
@@ -232,6 +261,12 @@ void print_usage(std::ostream& os)
         "\n"
         "Each method runs in its own child process: peak_rss_mb is the peak resident memory of that\n"
         "process (mesh included). Errors are measured against VTP, which is always run.\n"
+        "cpu_seconds is the processor time of the same work (all threads; for an external method, what it\n"
+        "prints as cpu_seconds=<time>), and cpu_ratio_vs_vtp the processor time of vtp divided by the\n"
+        "method's: on a machine busy with other work, it is steadier than the elapsed times.\n"
+        "ns_per_window is the time divided by the number of windows the method propagated (for an\n"
+        "external method, the count it prints). Before each mesh's rows, a line gives its share of\n"
+        "pseudo-source vertices (saddle or boundary).\n"
         "With a parallel method, the round-trip time of a cache line between two threads is printed\n"
         "before and after the runs of each source: on a virtual machine it changes with where the host\n"
         "places the virtual processors (about 50 ns or about 330 ns on the 2-vCPU machine this package\n"
@@ -254,6 +289,7 @@ Arguments parse_arguments(int argc, char** argv)
 {
   Arguments a;
   std::string methods = "vtp,cgal";
+  std::vector<Method> externals;
   for(int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -264,6 +300,36 @@ Arguments parse_arguments(int argc, char** argv)
     };
     if(arg == "--help" || arg == "-h") a.help = true;
     else if(arg == "--subdivide") a.subdivide = static_cast<int>(parse_count(arg, value(), 0, 6));
+    else if(arg == "--loop") a.loop = static_cast<int>(parse_count(arg, value(), 0, 6));
+    else if(arg == "--remesh")
+    {
+      const std::string v = value();
+      char* end = nullptr;
+      a.remesh = std::strtod(v.c_str(), &end);
+      if(v.empty() || *end != '\0' || !(a.remesh >= 0.01) || !(a.remesh <= 100.))
+        throw Usage_error("invalid value '" + v + "' for --remesh (expected a number in [0.01, 100])");
+    }
+    else if(arg == "--remesh-iterations") a.remesh_iterations = static_cast<int>(parse_count(arg, value(), 1, 100));
+    else if(arg == "--save-meshes")
+    {
+      a.save_meshes = value();
+      if(a.save_meshes.empty())
+        throw Usage_error("empty folder name for --save-meshes");
+    }
+    else if(arg == "--external")
+    {
+      const std::string v = value();
+      const std::string::size_type eq = v.find('=');
+      if(eq == std::string::npos || eq == 0 || eq + 1 == v.size())
+        throw Usage_error("invalid --external '" + v + "' (expected NAME=COMMAND)");
+      Method m;
+      m.label = v.substr(0, eq);
+      m.kind = Method_kind::EXTERNAL;
+      m.command = v.substr(eq + 1);
+      if(m.label.find_first_of(",: ") != std::string::npos)
+        throw Usage_error("invalid external method name '" + m.label + "'");
+      externals.push_back(m);
+    }
     else if(arg == "--sources") a.sources = parse_count(arg, value(), 1, 1000000);
     else if(arg == "--methods") methods = value();
     else if(arg == "--csv")
@@ -292,6 +358,13 @@ Arguments parse_arguments(int argc, char** argv)
         throw Usage_error("method '" + spec + "' given twice");
     a.methods.push_back(m);
   }
+  for(const Method& m : externals)
+  {
+    for(const Method& other : a.methods)
+      if(other.label == m.label)
+        throw Usage_error("method '" + m.label + "' given twice");
+    a.methods.push_back(m);
+  }
   return a;
 }
 
@@ -301,14 +374,25 @@ Arguments parse_arguments(int argc, char** argv)
 struct Child_header
 {
   double seconds = nan_value;                // per-source work, fastest of the repeats
+  double cpu_seconds = nan_value;            // processor time of that work (all threads), fastest of the repeats
   double preprocessing_seconds = nan_value;  // per-mesh work (solver construction, factorization)
   double rss_at_start_kb = 0.;
   std::uint64_t windows_created = 0, windows_propagated = 0, peak_window_bytes = 0, peak_live_windows = 0;
+  std::uint64_t pseudo_source_vertices = 0;
   std::int32_t threads = 1;
   std::int32_t has_windows = 0;
   std::uint64_t number_of_distances = 0;
   std::uint64_t error_length = 0;
 };
+
+// Processor time of the process (all its threads), in seconds.
+double cpu_now_seconds()
+{
+  struct timespec t;
+  if(::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t) != 0)
+    return nan_value;
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 double now_seconds()
 {
@@ -330,10 +414,12 @@ void run_vtp(const Mesh& mesh, Vertex_index source, const Method& method, int re
   typedef CGAL::VTP_geodesics::Geodesic_distance_solver<Mesh> Solver;
   Solver solver(mesh);
   h.preprocessing_seconds = solver.preprocessing_seconds();
+  h.pseudo_source_vertices = solver.number_of_pseudo_source_vertices();
   const auto options = CGAL::VTP_geodesics::parameters::lambda(method.lambda).number_of_threads(method.threads);
   // the distances are read from the solver: nothing to write through a map
   for(int r = 0; r < repeat; ++r)
   {
+    const double c0 = cpu_now_seconds();
     switch(method.kind)
     {
       case Method_kind::VTP:
@@ -347,9 +433,12 @@ void run_vtp(const Mesh& mesh, Vertex_index source, const Method& method, int re
         throw std::runtime_error("method " + method.label + " needs OpenMP");
 #endif
     }
+    const double cpu = cpu_now_seconds() - c0;
     const CGAL::VTP_geodesics::Propagation_statistics& s = solver.statistics();
     if(r == 0 || s.seconds < h.seconds)
       h.seconds = s.seconds;
+    if(r == 0 || cpu < h.cpu_seconds)
+      h.cpu_seconds = cpu;
     h.windows_created = s.windows_created;
     h.windows_propagated = s.windows_propagated;
     h.peak_window_bytes = (std::max)(h.peak_window_bytes, static_cast<std::uint64_t>(s.peak_window_bytes));
@@ -481,8 +570,16 @@ struct Run_result
   // Filled after all methods of the source ran.
   double max_abs_err = nan_value, max_rel_err = nan_value, mean_rel_err = nan_value, speedup_vs_cgal = nan_value;
   double mean_pointwise_rel_err = nan_value, max_pointwise_rel_err = nan_value, speedup_vs_vtp = nan_value;
+  double cpu_ratio_vs_vtp = nan_value;  // processor time of VTP / processor time of this method
   std::size_t mismatched_infinities = 0;
 };
+
+double ns_per_window(const Run_result& r)
+{
+  if(!r.ok || !r.header.has_windows || r.header.windows_propagated == 0)
+    return nan_value;
+  return r.header.seconds * 1e9 / static_cast<double>(r.header.windows_propagated);
+}
 
 double total_seconds(const Run_result& r) { return r.header.seconds + r.header.preprocessing_seconds; }
 
@@ -560,6 +657,154 @@ Run_result run_forked(Mesh& mesh, Vertex_index source, const Method& method, int
   return result;
 }
 
+// External methods ---------------------------------------------------------------------------------
+std::string replace_all(std::string s, const std::string& what, const std::string& with)
+{
+  for(std::string::size_type at = s.find(what); at != std::string::npos; at = s.find(what, at + with.size()))
+    s.replace(at, what.size(), with);
+  return s;
+}
+
+// Value of "key=<value>" in `text`, at the start of the text or after a space, tab or new line.
+bool find_value(const std::string& text, const std::string& key, std::string& value)
+{
+  const std::string k = key + "=";
+  for(std::string::size_type at = text.find(k); at != std::string::npos; at = text.find(k, at + 1))
+  {
+    if(at > 0 && text[at - 1] != ' ' && text[at - 1] != '\t' && text[at - 1] != '\n')
+      continue;
+    const std::string::size_type begin = at + k.size();
+    const std::string::size_type end = text.find_first_of(" \t\r\n", begin);
+    value = text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+    return true;
+  }
+  return false;
+}
+
+// Runs an external method (see --external) on the mesh written to `mesh_file`, in its own process
+// (so its peak RSS is its own), and reads its time, window count and distances.
+Run_result run_external(const std::string& mesh_file, std::size_t source, std::size_t number_of_vertices,
+                        const Method& method, const std::string& output_file)
+{
+  Run_result result;
+  result.method = method;
+  std::string command = replace_all(method.command, "{mesh}", mesh_file);
+  command = replace_all(command, "{source}", std::to_string(source));
+  const bool wants_output = command.find("{output}") != std::string::npos;
+  command = replace_all(command, "{output}", output_file);
+  if(wants_output)
+    std::remove(output_file.c_str());
+
+  int fds[2];
+  if(::pipe(fds) != 0)
+    throw std::runtime_error(std::string("pipe() failed: ") + std::strerror(errno));
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if(pid < 0)
+  {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    throw std::runtime_error(std::string("fork() failed: ") + std::strerror(errno));
+  }
+  if(pid == 0)
+  {
+    ::close(fds[0]);
+    ::dup2(fds[1], 1);
+    ::close(fds[1]);
+    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  ::close(fds[1]);
+  std::string text;
+  char buffer[1 << 12];
+  for(;;)
+  {
+    const ssize_t r = ::read(fds[0], buffer, sizeof(buffer));
+    if(r < 0 && errno == EINTR)
+      continue;
+    if(r <= 0)
+      break;
+    text.append(buffer, static_cast<std::size_t>(r));
+  }
+  ::close(fds[0]);
+  int status = 0;
+  struct rusage usage;
+  std::memset(&usage, 0, sizeof(usage));
+  while(::wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {}
+  result.peak_rss_mb = static_cast<double>(usage.ru_maxrss) / 1024.;
+  if(!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+  {
+    result.status = WIFSIGNALED(status) ? "killed by signal " + std::to_string(WTERMSIG(status))
+                                        : "exit code " + std::to_string(WEXITSTATUS(status));
+    return result;
+  }
+  std::string value;
+  char* end = nullptr;
+  if(!find_value(text, "seconds", value) || (result.header.seconds = std::strtod(value.c_str(), &end), *end != '\0'))
+  {
+    result.status = "no seconds=<time> in the output";
+    return result;
+  }
+  result.header.preprocessing_seconds = nan_value;
+  if(find_value(text, "cpu_seconds", value))
+    result.header.cpu_seconds = std::strtod(value.c_str(), nullptr);
+  if(find_value(text, "windows_propagated", value))
+  {
+    result.header.windows_propagated = std::strtoull(value.c_str(), nullptr, 10);
+    result.header.has_windows = 1;
+  }
+  if(find_value(text, "windows_created", value))
+    result.header.windows_created = std::strtoull(value.c_str(), nullptr, 10);
+  if(wants_output)
+  {
+    std::ifstream in(output_file);
+    std::string token;
+    while(in >> token)
+    {
+      const double d = std::strtod(token.c_str(), &end);
+      if(*end != '\0')
+      {
+        result.status = "unreadable distance '" + token + "' in " + output_file;
+        return result;
+      }
+      result.distances.push_back(d);
+    }
+    if(result.distances.size() != number_of_vertices)
+    {
+      result.status = "wrong number of distances in " + output_file;
+      return result;
+    }
+    std::remove(output_file.c_str());
+  }
+  result.ok = true;
+  return result;
+}
+
+void write_off(const Mesh& mesh, const std::string& file)
+{
+  FILE* out = std::fopen(file.c_str(), "w");
+  if(out == nullptr)
+    throw std::runtime_error("cannot write '" + file + "'");
+  std::fprintf(out, "OFF\n%zu %zu 0\n", static_cast<std::size_t>(mesh.number_of_vertices()),
+               static_cast<std::size_t>(mesh.number_of_faces()));
+  for(Vertex_index v : mesh.vertices())
+  {
+    const Kernel::Point_3& p = mesh.point(v);
+    std::fprintf(out, "%.17g %.17g %.17g\n", p.x(), p.y(), p.z());
+  }
+  for(Mesh::Face_index f : mesh.faces())
+  {
+    std::fprintf(out, "3");
+    for(Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      std::fprintf(out, " %zu", static_cast<std::size_t>(v));
+    std::fprintf(out, "\n");
+  }
+  if(std::fclose(out) != 0)
+    throw std::runtime_error("cannot write '" + file + "'");
+}
+
 // CSV and table output ---------------------------------------------------------------------------
 std::string number(double x, int precision = 6)
 {
@@ -589,12 +834,13 @@ const char* const csv_columns =
   "mesh,vertices,faces,source,method,threads,seconds,preprocessing_seconds,peak_rss_mb,windows_created,"
   "windows_propagated,peak_window_bytes,max_abs_err_vs_vtp,max_rel_err_vs_vtp,mean_rel_err_vs_vtp,speedup_vs_cgal,"
   "total_seconds,rss_at_start_mb,mean_pointwise_rel_err_vs_vtp,max_pointwise_rel_err_vs_vtp,speedup_vs_vtp,"
-  "peak_live_windows,status";
+  "peak_live_windows,ns_per_window,pseudo_source_share,cpu_seconds,cpu_ratio_vs_vtp,status";
 
 struct Mesh_info
 {
   std::string label;
   std::size_t vertices = 0, faces = 0;
+  double pseudo_source_share = nan_value;  // saddle or boundary vertices / vertices (from the VTP run)
 };
 
 void write_csv_row(std::ostream& os, const Mesh_info& mesh, std::size_t source, const Run_result& r)
@@ -605,35 +851,39 @@ void write_csv_row(std::ostream& os, const Mesh_info& mesh, std::size_t source, 
      << csv_field(r.method.label) << ',' << (r.ok ? std::to_string(h.threads) : std::string()) << ','
      << (r.ok ? number(h.seconds, 9) : "") << ',' << (r.ok ? number(h.preprocessing_seconds, 9) : "") << ','
      << number(r.peak_rss_mb, 6) << ','
-     << (w ? std::to_string(h.windows_created) : "") << ','
+     << (w && r.method.kind != Method_kind::EXTERNAL ? std::to_string(h.windows_created) : "") << ','
      << (w ? std::to_string(h.windows_propagated) : "") << ','
-     << (w ? std::to_string(h.peak_window_bytes) : "") << ','
+     << (w && r.method.kind != Method_kind::EXTERNAL ? std::to_string(h.peak_window_bytes) : "") << ','
      << number(r.max_abs_err, 6) << ',' << number(r.max_rel_err, 6) << ',' << number(r.mean_rel_err, 6) << ','
      << number(r.speedup_vs_cgal, 6) << ','
      << (r.ok ? number(total_seconds(r), 9) : "") << ','
      << (r.ok ? number(h.rss_at_start_kb / 1024., 6) : "") << ','
      << number(r.mean_pointwise_rel_err, 6) << ',' << number(r.max_pointwise_rel_err, 6) << ','
      << number(r.speedup_vs_vtp, 6) << ','
-     << (w ? std::to_string(h.peak_live_windows) : "") << ','
+     << (w && r.method.kind != Method_kind::EXTERNAL ? std::to_string(h.peak_live_windows) : "") << ','
+     << number(ns_per_window(r), 6) << ',' << number(mesh.pseudo_source_share, 6) << ','
+     << (r.ok ? number(h.cpu_seconds, 9) : "") << ',' << number(r.cpu_ratio_vs_vtp, 6) << ','
      << csv_field(r.status) << '\n';
 }
 
 void print_table_header()
 {
-  std::printf("%-22s %9s %9s  %-12s %11s %11s %9s %9s %11s %10s %9s  %s\n", "mesh", "vertices", "source", "method",
-              "seconds", "prep_s", "rss_MB", "+rss_MB", "windows", "max_rel", "speedup", "status");
+  std::printf("%-22s %9s %9s  %-12s %11s %11s %9s %9s %11s %7s %10s %9s  %s\n", "mesh", "vertices", "source", "method",
+              "seconds", "prep_s", "rss_MB", "+rss_MB", "windows", "ns/win", "max_rel", "speedup", "status");
 }
 
 void print_table_row(const Mesh_info& mesh, std::size_t source, const Run_result& r)
 {
   const Child_header& h = r.header;
-  const std::string windows = (r.ok && h.has_windows) ? std::to_string(h.windows_created) : "-";
-  const double increase = r.ok ? r.peak_rss_mb - h.rss_at_start_kb / 1024. : nan_value;
+  const std::string windows = (r.ok && h.has_windows && r.method.kind != Method_kind::EXTERNAL)
+                              ? std::to_string(h.windows_created) : "-";
+  const double increase = (r.ok && r.method.kind != Method_kind::EXTERNAL) ? r.peak_rss_mb - h.rss_at_start_kb / 1024.
+                                                                           : nan_value;
   auto cell = [](double x, int p) { const std::string s = number(x, p); return s.empty() ? std::string("-") : s; };
-  std::printf("%-22s %9zu %9zu  %-12s %11s %11s %9s %9s %11s %10s %9s  %s\n", mesh.label.c_str(), mesh.vertices, source,
+  std::printf("%-22s %9zu %9zu  %-12s %11s %11s %9s %9s %11s %7s %10s %9s  %s\n", mesh.label.c_str(), mesh.vertices, source,
               r.method.label.c_str(), cell(r.ok ? h.seconds : nan_value, 4).c_str(),
               cell(r.ok ? h.preprocessing_seconds : nan_value, 4).c_str(), cell(r.peak_rss_mb, 4).c_str(),
-              cell(increase, 4).c_str(), windows.c_str(), cell(r.max_rel_err, 3).c_str(),
+              cell(increase, 4).c_str(), windows.c_str(), cell(ns_per_window(r), 3).c_str(), cell(r.max_rel_err, 3).c_str(),
               cell(r.speedup_vs_cgal, 3).c_str(), r.status.c_str());
   std::fflush(stdout);
 }
@@ -644,7 +894,9 @@ std::string base_name(const std::string& path)
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-void load_mesh(const std::string& file, int subdivide, Mesh& mesh)
+// Reads a mesh and makes the requested input from it: isotropic remeshing, then Loop subdivision,
+// then midpoint subdivision. The vertices are numbered 0..n-1 in the end (garbage collected).
+std::string load_mesh(const std::string& file, const Arguments& args, Mesh& mesh)
 {
   std::ostringstream diagnostics;
   std::streambuf* const cerr_buffer = std::cerr.rdbuf(diagnostics.rdbuf());
@@ -657,7 +909,32 @@ void load_mesh(const std::string& file, int subdivide, Mesh& mesh)
     throw Usage_error("the mesh '" + file + "' is empty");
   if(!CGAL::is_triangle_mesh(mesh))
     throw Usage_error("the mesh '" + file + "' is not a triangle mesh");
-  vtp_tools::midpoint_subdivide(mesh, subdivide);
+  std::string label = base_name(file);
+  if(args.remesh > 0.)
+  {
+    namespace PMP = CGAL::Polygon_mesh_processing;
+    double sum = 0.;
+    for(Mesh::Edge_index e : mesh.edges())
+      sum += PMP::edge_length(e, mesh);
+    const double target = args.remesh * sum / double(mesh.number_of_edges());
+    PMP::isotropic_remeshing(faces(mesh), target, mesh,
+                             CGAL::parameters::number_of_iterations(args.remesh_iterations));
+    mesh.collect_garbage();
+    label += "/r" + number(args.remesh, 4);
+  }
+  if(args.loop > 0)
+  {
+    CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(args.loop));
+    label += "/L" + std::to_string(args.loop);
+  }
+  if(args.subdivide > 0)
+  {
+    vtp_tools::midpoint_subdivide(mesh, args.subdivide);
+    label += "/s" + std::to_string(args.subdivide);
+  }
+  if(mesh.has_garbage())
+    mesh.collect_garbage();
+  return label;
 }
 
 // Round-trip time of a cache line between two threads (they bounce a counter), in nanoseconds; 0 with
@@ -734,14 +1011,34 @@ int run(int argc, char** argv)
   const bool parallel = std::any_of(args.methods.begin(), args.methods.end(), [](const Method& m) {
     return m.label.compare(0, 4, "pvtp") == 0 || m.label.compare(0, 5, "pavtp") == 0;
   });
+  const bool external = std::any_of(args.methods.begin(), args.methods.end(),
+                                    [](const Method& m) { return m.kind == Method_kind::EXTERNAL; });
+  std::string temporary_folder;
+  if(external)
+  {
+    char name[] = "/tmp/vtp_benchmark_XXXXXX";
+    if(::mkdtemp(name) == nullptr)
+      throw std::runtime_error(std::string("mkdtemp() failed: ") + std::strerror(errno));
+    temporary_folder = name;
+  }
   for(const std::string& file : args.meshes)
   {
     Mesh mesh;
-    load_mesh(file, args.subdivide, mesh);
     Mesh_info info;
-    info.label = base_name(file) + (args.subdivide > 0 ? "/s" + std::to_string(args.subdivide) : std::string());
+    info.label = load_mesh(file, args, mesh);
     info.vertices = mesh.number_of_vertices();
     info.faces = mesh.number_of_faces();
+    std::string mesh_file;
+    if(!args.save_meshes.empty())
+    {
+      mesh_file = args.save_meshes + "/" + replace_all(info.label, "/", "_") + ".off";
+      write_off(mesh, mesh_file);
+    }
+    else if(external)
+    {
+      mesh_file = temporary_folder + "/mesh.off";
+      write_off(mesh, mesh_file);
+    }
     if(!header_printed)
     {
       print_table_header();
@@ -755,17 +1052,22 @@ int run(int argc, char** argv)
       const std::size_t source_id = static_cast<std::size_t>(
         (static_cast<unsigned long long>(i) * info.vertices) / k);
       const Vertex_index source(static_cast<Mesh::size_type>(source_id));
+      auto run_method = [&](const Method& m) {
+        if(m.kind == Method_kind::EXTERNAL)
+          return run_external(mesh_file, source_id, info.vertices, m, temporary_folder + "/distances.txt");
+        return run_forked(mesh, source, m, 1);
+      };
 
       const double round_trip_before = parallel ? core_to_core_round_trip_ns() : 0.;
       std::vector<Run_result> results;
       for(const Method& m : runs)
-        results.push_back(run_forked(mesh, source, m, 1));
+        results.push_back(run_method(m));
       for(int r = 1; r < args.repeat; ++r)
         for(std::size_t j = 0; j < runs.size(); ++j)
         {
           if(!results[j].ok)
             continue;
-          const Run_result again = run_forked(mesh, source, runs[j], 1);
+          const Run_result again = run_method(runs[j]);
           if(!again.ok)
           {
             results[j] = again;
@@ -773,6 +1075,8 @@ int run(int argc, char** argv)
           }
           Child_header& h = results[j].header;
           h.seconds = (std::min)(h.seconds, again.header.seconds);
+          if(!(h.cpu_seconds <= again.header.cpu_seconds))
+            h.cpu_seconds = again.header.cpu_seconds;
           h.preprocessing_seconds = (std::min)(h.preprocessing_seconds, again.header.preprocessing_seconds);
           results[j].peak_rss_mb = (std::max)(results[j].peak_rss_mb, again.peak_rss_mb);
         }
@@ -781,6 +1085,14 @@ int run(int argc, char** argv)
                     round_trip_before, core_to_core_round_trip_ns());
 
       const Run_result& vtp = results.front();
+      if(i == 0 && vtp.ok)
+      {
+        info.pseudo_source_share = double(vtp.header.pseudo_source_vertices) / double(info.vertices);
+        std::printf("# %s: %zu vertices, %zu faces, %llu pseudo-source vertices (saddle or boundary): %.1f%%\n",
+                    info.label.c_str(), info.vertices, info.faces,
+                    static_cast<unsigned long long>(vtp.header.pseudo_source_vertices),
+                    100. * info.pseudo_source_share);
+      }
       const Run_result* cgal = nullptr;
       for(const Run_result& r : results)
         if(r.method.kind == Method_kind::CGAL_SMSP && r.ok)
@@ -789,7 +1101,7 @@ int run(int argc, char** argv)
       {
         if(!r.ok)
           continue;
-        if(vtp.ok)
+        if(vtp.ok && (r.method.kind != Method_kind::EXTERNAL || !r.distances.empty()))
         {
           const vtp_tools::Distance_comparison c =
             vtp_tools::compare_distances(r.distances, vtp.distances);
@@ -798,12 +1110,14 @@ int run(int argc, char** argv)
           r.mean_rel_err = c.mean_rel_diff;
           r.mean_pointwise_rel_err = c.mean_pointwise_rel_diff;
           r.max_pointwise_rel_err = c.max_pointwise_rel_diff;
-          if(r.header.seconds > 0.)
-            r.speedup_vs_vtp = vtp.header.seconds / r.header.seconds;
           r.mismatched_infinities = c.mismatched_infinities;
           if(c.mismatched_infinities > 0 && r.status == "ok")
             r.status = "ok (" + std::to_string(c.mismatched_infinities) + " reachability mismatches)";
         }
+        if(vtp.ok && r.header.seconds > 0.)
+          r.speedup_vs_vtp = vtp.header.seconds / r.header.seconds;
+        if(vtp.ok && r.header.cpu_seconds > 0.)
+          r.cpu_ratio_vs_vtp = vtp.header.cpu_seconds / r.header.cpu_seconds;
         if(cgal != nullptr && total_seconds(r) > 0.)
           r.speedup_vs_cgal = total_seconds(*cgal) / total_seconds(r);
       }
@@ -831,6 +1145,11 @@ int run(int argc, char** argv)
           throw Usage_error("cannot write '" + args.csv + "'");
       }
     }
+  }
+  if(!temporary_folder.empty())
+  {
+    std::remove((temporary_folder + "/mesh.off").c_str());
+    ::rmdir(temporary_folder.c_str());
   }
   if(failures > 0)
   {

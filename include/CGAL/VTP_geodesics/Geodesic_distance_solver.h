@@ -476,65 +476,68 @@ private:
       put(m_vertex_id, v, nv++);
       m_vertices.push_back(v);
     }
+    // Half-edges are numbered face by face (3f, 3f+1, 3f+2); the arrays are filled in place (no
+    // per-half-edge temporary beyond the numbering map), so that the peak memory of the
+    // construction stays close to that of the arrays.
     Halfedge_id_map hid = get(CGAL::dynamic_halfedge_property_t<Index>(), m_tm);
-    std::vector<halfedge_descriptor> hds;
-    hds.reserve(3 * num_faces(m_tm));
     m_faces.reserve(num_faces(m_tm));
     for(face_descriptor f : faces(m_tm))
     {
       put(m_face_id, f, static_cast<Index>(m_faces.size()));
-      m_faces.push_back(f);
       halfedge_descriptor h = halfedge(f, m_tm);
       for(int k = 0; k < 3; ++k)
       {
-        put(hid, h, static_cast<Index>(hds.size()));
-        hds.push_back(h);
+        put(hid, h, static_cast<Index>(3 * m_faces.size() + static_cast<std::size_t>(k)));
         h = next(h, m_tm);
       }
+      m_faces.push_back(f);
     }
-    const std::size_t nh = hds.size();
-    std::vector<Index> tri(nh), opp(nh);
-    std::vector<double> len(nh);
-    for(std::size_t i = 0; i < nh; ++i)
+    const std::size_t nf = m_faces.size();
+    std::vector<Index> tri(3 * nf), opp(3 * nf);
+    std::vector<internal::Face_geometry> face_geometry(nf);
+    double longest = 0.;
+    for(std::size_t f = 0; f < nf; ++f)
     {
-      const halfedge_descriptor h = hds[i];
-      tri[i] = get(m_vertex_id, source(h, m_tm));
-      const halfedge_descriptor o = opposite(h, m_tm);
-      opp[i] = is_border(o, m_tm) ? internal::NO_INDEX : get(hid, o);
-      const double l2 = CGAL::to_double(sqd(get(m_vpm, source(h, m_tm)), get(m_vpm, target(h, m_tm))));
-      const double l = std::sqrt(l2);
-      if(!std::isfinite(l))
-        throw Invalid_input_error("the mesh has an edge of non-finite length (non-finite or too large coordinates)");
-      len[i] = l;
+      halfedge_descriptor h = halfedge(m_faces[f], m_tm);
+      for(std::size_t k = 0; k < 3; ++k, h = next(h, m_tm))
+      {
+        tri[3 * f + k] = get(m_vertex_id, source(h, m_tm));
+        const halfedge_descriptor o = opposite(h, m_tm);
+        opp[3 * f + k] = is_border(o, m_tm) ? internal::NO_INDEX : get(hid, o);
+        const double l2 = CGAL::to_double(sqd(get(m_vpm, source(h, m_tm)), get(m_vpm, target(h, m_tm))));
+        const double l = std::sqrt(l2);
+        if(!std::isfinite(l))
+          throw Invalid_input_error("the mesh has an edge of non-finite length (non-finite or too large coordinates)");
+        face_geometry[f].length[k] = l;
+        longest = (std::max)(longest, l);
+      }
     }
     // The engine works on lengths scaled by a power of two (exact in floating point) that brings the
     // longest edge into [0.5, 1): its squares and fourth powers can then neither overflow nor
     // underflow, whatever the scale of the coordinates. Distances are scaled back on output.
-    double longest = 0.;
-    for(double l : len)
-      longest = (std::max)(longest, l);
     int exponent = 0;
     if(longest > 0.)
       std::frexp(longest, &exponent);
     m_length_scale = std::ldexp(1., exponent);
-    for(double& l : len)
-      l = std::ldexp(l, -exponent);
-    // face areas from the points (accurate for nearly flat triangles, see VTPGeodesicTraits_3);
-    // -1 where that overflows or underflows: the engine then uses the lengths
-    std::vector<double> area(nh / 3, -1.);
-    for(std::size_t f = 0; f < nh / 3; ++f)
+    for(std::size_t f = 0; f < nf; ++f)
     {
-      const halfedge_descriptor h = hds[3 * f];
+      internal::Face_geometry& g = face_geometry[f];
+      for(double& l : g.length)
+        l = std::ldexp(l, -exponent);
+      // face areas from the points (accurate for nearly flat triangles, see VTPGeodesicTraits_3);
+      // -1 where that overflows or underflows: the engine then uses the lengths
+      g.area = -1.;
+      const halfedge_descriptor h = halfedge(m_faces[f], m_tm);
       const double a2 = CGAL::to_double(sqa(get(m_vpm, source(h, m_tm)), get(m_vpm, target(h, m_tm)),
                                             get(m_vpm, target(next(h, m_tm), m_tm))));
       const double a = std::ldexp(std::sqrt(a2), -2 * exponent);
       // a zero is trusted only where the squared area of a face of relative height 1e-12
       // could not have underflowed (edges longer than 1e-60)
-      const double longest_edge = std::ldexp((std::max)(len[3 * f], (std::max)(len[3 * f + 1], len[3 * f + 2])), exponent);
+      const double longest_edge = std::ldexp((std::max)(g.length[0], (std::max)(g.length[1], g.length[2])), exponent);
       if(std::isfinite(a2) && std::isfinite(a) && (a > 0. || (a2 == 0. && longest_edge > 1e-60)))
-        area[f] = a;
+        g.area = a;
     }
-    m_arrays.build(nv, std::move(tri), std::move(opp), len, &area);
+    m_arrays.build(nv, std::move(tri), std::move(opp), std::move(face_geometry));
     m_engine.distances().assign(static_cast<std::size_t>(nv), std::numeric_limits<double>::infinity());
     m_preprocessing_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

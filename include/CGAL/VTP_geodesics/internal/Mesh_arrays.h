@@ -39,22 +39,61 @@ struct Halfedge_geometry
   double l_prev;  // |CA|
 };
 
+// The lengths and the area of a face: enough to place each of its half-edges (Halfedge_geometry).
+struct Face_geometry
+{
+  double length[3];  // of the half-edges 3f, 3f+1, 3f+2
+  double area;       // a negative value: unknown (Mesh_arrays::build() computes it from the lengths)
+};
+
+// The geometry of the half-edges, kept per face (32 bytes per face instead of 40 per half-edge) and
+// computed when asked: geometry[h].
+class Halfedge_geometry_table
+{
+public:
+  std::vector<Face_geometry> faces;
+
+  Halfedge_geometry operator[](Index h) const
+  {
+    const Face_geometry& f = faces[static_cast<std::size_t>(h / 3)];
+    const int k = static_cast<int>(h % 3);
+    Halfedge_geometry g;
+    g.length = f.length[k];
+    g.l_next = f.length[k == 2 ? 0 : k + 1];  // |BC|
+    g.l_prev = f.length[k == 0 ? 2 : k - 1];  // |CA|
+    const double l = g.length, la = g.l_prev, lb = g.l_next;
+    if(l > 0.)
+    {
+      g.cx = (l * l + la * la - lb * lb) / (2. * l);
+      // the height from the area: sqrt(la^2 - cx^2) loses accuracy for needle triangles
+      g.cy = 2. * f.area / l;
+    }
+    else
+    {
+      g.cx = 0.;
+      g.cy = la;
+    }
+    return g;
+  }
+
+  std::size_t size() const { return 3 * faces.size(); }
+};
+
 // Compact, index-based description of a triangle mesh, built once per mesh.
 // The half-edges of face f are 3f, 3f+1, 3f+2 (in the order of `next`), so that
 // next/prev/face are index arithmetic; only `opposite` and the vertices are stored.
+// About 150 bytes per vertex (a closed mesh has 2 faces and 6 half-edges per vertex).
 struct Mesh_arrays
 {
   Index nv = 0;
   Index nf = 0;
   std::vector<Index> source;     // per half-edge: its source vertex A
   std::vector<Index> opposite;   // per half-edge: opposite half-edge, NO_INDEX on the border
-  std::vector<Halfedge_geometry> geometry;
+  Halfedge_geometry_table geometry;  // geometry[h]
   // Per vertex, the half-edges whose source is the vertex (one per incident face), CSR.
   std::vector<Index> corner_begin;
   std::vector<Index> corners;
-  std::vector<double> angle_sum;
   std::vector<unsigned char> is_pseudo_source; // saddle or boundary vertex
-  std::vector<unsigned char> is_boundary;
   // per face: (almost) zero area or a zero-length edge (see build())
   std::vector<unsigned char> is_degenerate_face;
   double mean_edge_length = 0.;
@@ -68,55 +107,27 @@ struct Mesh_arrays
   static Index face(Index h) { return h / 3; }
   Index target(Index h) const { return source[next(h)]; }
 
-  // Builds the arrays from triangles (3 vertex indices each, counterclockwise), the opposite
-  // of each half-edge (NO_INDEX on the border), the length of each half-edge and, optionally, the
-  // area of each face (a negative value: unknown). A face's height is taken from its area when
-  // known: from the lengths alone, a nearly flat triangle's height is only accurate to about
-  // sqrt(epsilon) times its size.
+  // Builds the arrays from triangles (3 vertex indices each, counterclockwise), the opposite of
+  // each half-edge (NO_INDEX on the border) and the lengths and, where known, the area of each
+  // face. A face's height is taken from its area: from the lengths alone, a nearly flat
+  // triangle's height is only accurate to about sqrt(epsilon) times its size.
   void build(Index number_of_vertices,
              std::vector<Index>&& triangle_vertices,
              std::vector<Index>&& opposite_halfedges,
-             const std::vector<double>& halfedge_lengths,
-             const std::vector<double>* face_areas = nullptr)
+             std::vector<Face_geometry>&& faces)
   {
     nv = number_of_vertices;
     source = std::move(triangle_vertices);
     opposite = std::move(opposite_halfedges);
+    geometry.faces = std::move(faces);
     const Index nh = static_cast<Index>(source.size());
     CGAL_precondition(nh % 3 == 0);
     CGAL_precondition(opposite.size() == source.size());
-    CGAL_precondition(halfedge_lengths.size() == source.size());
-    CGAL_precondition(face_areas == nullptr || 3 * face_areas->size() == source.size());
+    CGAL_precondition(3 * geometry.faces.size() == source.size());
     nf = nh / 3;
-
-    geometry.resize(nh);
-    for(Index h = 0; h < nh; ++h)
-    {
-      const double l = halfedge_lengths[h];
-      const double lb = halfedge_lengths[next(h)]; // |BC|
-      const double la = halfedge_lengths[prev(h)]; // |CA|
-      Halfedge_geometry& g = geometry[h];
-      g.length = l;
-      g.l_next = lb;
-      g.l_prev = la;
-      if(l > 0.)
-      {
-        g.cx = (l * l + la * la - lb * lb) / (2. * l);
-        // height from the area (Kahan's stable Heron formula): sqrt(la^2 - cx^2) loses
-        // accuracy for needle triangles
-        double area = -1.;
-        if(face_areas != nullptr)
-          area = (*face_areas)[static_cast<std::size_t>(face(h))];
-        if(!(area >= 0.))
-          area = triangle_area(l, la, lb);
-        g.cy = 2. * area / l;
-      }
-      else
-      {
-        g.cx = 0.;
-        g.cy = la;
-      }
-    }
+    for(Face_geometry& f : geometry.faces)
+      if(!(f.area >= 0.))
+        f.area = triangle_area(f.length[0], f.length[1], f.length[2]);  // Kahan's stable Heron formula
 
     // corners per vertex
     corner_begin.assign(nv + 1, 0);
@@ -132,24 +143,25 @@ struct Mesh_arrays
     }
 
     // angles, boundary and saddle flags, edge statistics
-    angle_sum.assign(nv, 0.);
-    is_boundary.assign(nv, 0);
+    std::vector<double> angle_sum(nv, 0.);
+    is_pseudo_source.assign(nv, 0);   // first: the boundary vertices
     double sum_len = 0.;
     std::size_t ne = 0;
-    min_edge_length = (nh > 0) ? halfedge_lengths[0] : 0.;
+    min_edge_length = (nh > 0) ? geometry.faces[0].length[0] : 0.;
     max_edge_length = 0.;
     for(Index h = 0; h < nh; ++h)
     {
+      const Halfedge_geometry g = geometry[h];
       // corner angle at source(h) between h (A->B) and the reversed prev(h) (A->C)
-      angle_sum[source[h]] += corner_angle(geometry[h].length, geometry[h].l_prev, geometry[h].l_next);
+      angle_sum[source[h]] += corner_angle(g.length, g.l_prev, g.l_next);
       if(opposite[h] == NO_INDEX)
       {
-        is_boundary[source[h]] = 1;
-        is_boundary[target(h)] = 1;
+        is_pseudo_source[source[h]] = 1;
+        is_pseudo_source[target(h)] = 1;
       }
       if(opposite[h] == NO_INDEX || opposite[h] > h) // count each edge once
       {
-        const double l = geometry[h].length;
+        const double l = g.length;
         sum_len += l;
         ++ne;
         min_edge_length = (std::min)(min_edge_length, l);
@@ -159,16 +171,16 @@ struct Mesh_arrays
     number_of_edges = ne;
     mean_edge_length = ne > 0 ? sum_len / double(ne) : 0.;
     const double two_pi = 2. * 3.14159265358979323846;
-    is_pseudo_source.assign(nv, 0);
     for(Index v = 0; v < nv; ++v)
-      is_pseudo_source[v] = (is_boundary[v] || angle_sum[v] > two_pi + 1e-9) ? 1 : 0;
+      if(angle_sum[v] > two_pi + 1e-9)
+        is_pseudo_source[v] = 1;
     // Windows cannot cross a face of (almost) zero area or an edge of zero length, and the angles
     // of such a face are meaningless: its vertices are made pseudo-sources, so that the paths
     // through them are not lost.
     is_degenerate_face.assign(nf, 0);
     for(Index f = 0; f < nf; ++f)
     {
-      const Halfedge_geometry& g = geometry[3 * f];
+      const Halfedge_geometry g = geometry[3 * f];
       const double lmax = (std::max)(g.length, (std::max)(g.l_next, g.l_prev));
       const double lmin = (std::min)(g.length, (std::min)(g.l_next, g.l_prev));
       if(lmin > 0. && g.cy * g.length > 1e-12 * lmax * lmax)
@@ -208,7 +220,8 @@ struct Mesh_arrays
     std::size_t n = 0;
     for(Index f = 0; f < nf; ++f)
     {
-      const double a = geometry[3 * f].length, b = geometry[3 * f].l_next, c = geometry[3 * f].l_prev;
+      const Face_geometry& g = geometry.faces[static_cast<std::size_t>(f)];
+      const double a = g.length[0], b = g.length[1], c = g.length[2];
       const double area = triangle_area(a, b, c);
       const double lmax = (std::max)(a, (std::max)(b, c));
       if(!(area > 0.))

@@ -48,24 +48,26 @@ struct Window
 // scheduling; the sequential scheduling uses pool 0): a pool grows slab by slab (never copied)
 // and keeps a free list, so that threads touching different lists never share allocator state.
 // A freed block goes to the free list of the pool of the thread that frees it. Everything is
-// released by reset().
+// released by reset(). A half-edge holds only the index of the first block of its list, which
+// knows the last one. Blocks hold 8 windows: lists on meshes with many saddle vertices (scans,
+// smooth subdivisions, remeshed surfaces) hold about 30 windows, read one block after another.
 class Window_storage
 {
 public:
-  static const int BLOCK = 4;
+  static const int BLOCK = 8;
 
   struct Block
   {
     Window w[BLOCK];
     Index next;
     Index count;
+    Index tail;   // in the first block of a list: the last block of the list
   };
 
   void reset(std::size_t number_of_halfedges, std::size_t number_of_pools = 1)
   {
     CGAL_precondition(number_of_pools >= 1 && number_of_pools <= MAX_POOLS);
     m_head.assign(number_of_halfedges, NO_INDEX);
-    m_tail.assign(number_of_halfedges, NO_INDEX);
     m_pools.clear();
     m_pools.resize(number_of_pools);
     m_peak_live = 0;
@@ -77,22 +79,41 @@ public:
   bool empty(Index h) const { return m_head[h] == NO_INDEX; }
 
   // Appends w to the list of h, with blocks from pool p.
-  void push(Index h, const Window& w, std::size_t p = 0)
+  void push(Index h, const Window& w, std::size_t p = 0) { push(h, &w, &w + 1, p); }
+
+  // Appends the windows [begin, end) to the list of h, with blocks from pool p.
+  void push(Index h, const Window* begin, const Window* end, std::size_t p = 0)
   {
-    Index t = m_tail[h];
-    if(t == NO_INDEX || block(t).count == BLOCK)
+    if(begin == end)
+      return;
+    Index head = m_head[h];
+    if(head == NO_INDEX)
     {
-      const Index b = allocate(p);
-      if(t == NO_INDEX)
-        m_head[h] = b;
-      else
-        block(t).next = b;
-      m_tail[h] = b;
-      t = b;
+      head = allocate(p);
+      m_head[h] = head;
+      block(head).tail = head;
     }
-    Block& blk = block(t);
-    blk.w[blk.count++] = w;
-    ++m_pools[p].live;
+    Index t = block(head).tail;
+    m_pools[p].live += static_cast<long long>(end - begin);
+    for(;;)
+    {
+      Block* blk = &block(t);
+      if(blk->count == BLOCK)
+      {
+        const Index b = allocate(p);
+        blk->next = b;
+        block(head).tail = b;
+        t = b;
+        blk = &block(b);
+      }
+      const std::ptrdiff_t room = BLOCK - blk->count;
+      const std::ptrdiff_t n = (std::min)(room, end - begin);
+      std::copy(begin, begin + n, blk->w + blk->count);
+      blk->count += static_cast<Index>(n);
+      begin += n;
+      if(begin == end)
+        return;
+    }
   }
 
   // Moves the windows of the list of h to the end of `out` and empties the list.
@@ -106,7 +127,7 @@ public:
   Index detach(Index h)
   {
     const Index b = m_head[h];
-    m_head[h] = m_tail[h] = NO_INDEX;
+    m_head[h] = NO_INDEX;
     return b;
   }
 
@@ -119,12 +140,14 @@ public:
   // Appends the windows of a detached chain to `out` and frees its blocks (from pool p).
   void take_chain(Index chain, std::vector<Window>& out, std::size_t p)
   {
-    for(Index b = chain; b != NO_INDEX; b = block(b).next)
+    for(Index b = chain; b != NO_INDEX;)
     {
       const Block& blk = block(b);
       out.insert(out.end(), blk.w, blk.w + blk.count);
+      const Index next = blk.next;
+      free_block(b, p);
+      b = next;
     }
-    free_chain(chain, p);
   }
 
   // Gives the blocks of a chain back, from the thread that owns pool p. A block goes back to
@@ -133,28 +156,11 @@ public:
   // keeps growing while another one hoards free blocks.
   void free_chain(Index b, std::size_t p)
   {
-    Pool& pool = m_pools[p];
     while(b != NO_INDEX)
     {
-      Block& blk = block(b);
-      pool.live -= static_cast<long long>(blk.count);
-      --pool.in_use;
-      const Index nb = blk.next;
-      const std::size_t owner = static_cast<std::size_t>(b) >> POOL_SHIFT;
-      if(owner == p)
-      {
-        blk.next = pool.free;
-        pool.free = b;
-      }
-      else
-      {
-        Bin& bin = pool.returns[owner];
-        blk.next = bin.head;
-        if(bin.head == NO_INDEX)
-          bin.tail = b;
-        bin.head = b;
-      }
-      b = nb;
+      const Index next = block(b).next;
+      free_block(b, p);
+      b = next;
     }
   }
 
@@ -241,6 +247,29 @@ private:
     return m_pools[u >> POOL_SHIFT].slabs[local / SLAB][local % SLAB];
   }
 
+  // Gives block b back (see free_chain()).
+  void free_block(Index b, std::size_t p)
+  {
+    Pool& pool = m_pools[p];
+    Block& blk = block(b);
+    pool.live -= static_cast<long long>(blk.count);
+    --pool.in_use;
+    const std::size_t owner = static_cast<std::size_t>(b) >> POOL_SHIFT;
+    if(owner == p)
+    {
+      blk.next = pool.free;
+      pool.free = b;
+    }
+    else
+    {
+      Bin& bin = pool.returns[owner];
+      blk.next = bin.head;
+      if(bin.head == NO_INDEX)
+        bin.tail = b;
+      bin.head = b;
+    }
+  }
+
   Index allocate(std::size_t p)
   {
     Pool& pool = m_pools[p];
@@ -265,7 +294,7 @@ private:
   }
 
   std::vector<Pool> m_pools;
-  std::vector<Index> m_head, m_tail;
+  std::vector<Index> m_head;   // per half-edge: the first block of its list
   std::size_t m_peak_live = 0, m_peak_blocks = 0;
 };
 

@@ -50,7 +50,7 @@ struct Propagation_settings
 struct alignas(64) Propagation_scratch
 {
   std::vector<Window> in, out_ac, out_cb;
-  std::vector<double> xc, reach;
+  List_scratch list;
   std::size_t propagated = 0, created = 0;
   Stop_events events;
 };
@@ -315,7 +315,7 @@ public:
     const Halfedge_geometry& g = m.geometry[h];
     const Index a = m.source[h];
     const Index b = m.source[Mesh_arrays::next(h)];
-    filter_list(s.in, g.length, dist[a], dist[b], settings.minimum_window_ratio * g.length, s.reach);
+    filter_list(s.in, g.length, dist[a], dist[b], settings.minimum_window_ratio * g.length, s.list);
     Offer offer;
     if(s.in.empty())
       return offer;
@@ -327,8 +327,8 @@ public:
       });
     const Index h_cb = m.opposite[Mesh_arrays::next(h)];
     const Index h_ac = m.opposite[Mesh_arrays::prev(h)];
-    const Propagation_result r = propagate_list(g, s.in, settings.minimum_window_ratio, h_ac != NO_INDEX,
-                                                h_cb != NO_INDEX, s.out_ac, s.out_cb, s.xc);
+    const Propagation_result r = propagate_list(g, s.in, s.list.ends, settings.minimum_window_ratio,
+                                                h_ac != NO_INDEX, h_cb != NO_INDEX, s.out_ac, s.out_cb, s.list.xc);
     s.propagated += r.propagated;
     offer.distance = r.distance_to_C;
     if(offer.distance < std::numeric_limits<double>::infinity())
@@ -376,8 +376,7 @@ public:
   {
     if(children.empty())
       return 0;
-    for(const Window& w : children)
-      store.push(h, w, p);
+    store.push(h, children.data(), children.data() + children.size(), p);
     if(stop.is_tracking())
       stop.on_windows_stored(h, children.data(), children.data() + children.size(), events);
     if(swept[Mesh_arrays::face(h)] && !queued[h])
