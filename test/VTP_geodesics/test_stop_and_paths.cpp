@@ -525,6 +525,35 @@ TEST(Paths, real_meshes_match_smsp)
   }
 }
 
+TEST(Paths, through_a_vertex_and_zero_length_edges)
+{
+  // found by vtp_stress: the path of vertex 40 goes exactly through vertex 208 (the end of a window), which
+  // coincides with vertex 124 and is a vertex of a sliver; the walk face by face cannot follow the line there
+  const Surface_mesh mesh = load_mesh("degenerate_zero_length_edges.off");
+  const std::size_t n = num_vertices(mesh);
+  for(const Method& m : all_methods())
+    for(std::size_t source : { std::size_t(164), std::size_t(0), n / 2 })
+    {
+      const Vertex_index s(static_cast<Surface_mesh::size_type>(source));
+      if(mesh.is_isolated(s))
+        continue;
+      Solver solver(mesh);
+      const std::vector<double> d = run(solver, mesh, s, m, VP::record_paths(true));
+      const double max_d = max_finite(d);
+      for(Vertex_index v : vertices(mesh))
+      {
+        if(mesh.is_isolated(v) || !std::isfinite(d[v]))
+          continue;
+        const std::vector<Point_3> p = path_points(solver, v);
+        ASSERT_NEAR(polyline_length(p), d[v], 1e-12 * max_d) << m.name << ", source " << s << ", vertex " << v;
+        ASSERT_TRUE(is_a_path_on_the_surface(mesh, p, path_locations(solver, v), 1e-12 * max_d))
+          << m.name << ", source " << s << ", vertex " << v;
+        ASSERT_EQ(p.front(), mesh.point(v));
+        ASSERT_EQ(p.back(), mesh.point(s));
+      }
+    }
+}
+
 TEST(Paths, to_face_targets_and_with_several_sources)
 {
   const Surface_mesh mesh = load_mesh("elephant-with-holes.off");

@@ -21,6 +21,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -45,7 +46,9 @@ struct Trace_point
 // (possibly bent first at an end of that window), and is followed face by face: in each face, the line
 // leaves through the edge on its side of the third vertex; the image is re-expressed in the frame of the
 // half-edge across that edge. It ends in the face whose third vertex is the origin (or that holds the
-// source point). The length of the polyline is the distance, up to rounding.
+// source point). A line that crosses an edge at one of its ends (within rounding, or a zero-length edge)
+// goes through that vertex, and on from there along the vertex's own path (see through_vertex()). The
+// length of the polyline is the distance, up to rounding.
 class Path_trace
 {
 public:
@@ -168,12 +171,14 @@ private:
       x = den > 0. ? offer.sx + (px - offer.sx) * (-offer.sy / den) : px;
     }
     x = (std::min)((std::max)(x, 0.), m.geometry[h].length);
+    double sx = offer.sx, sy = offer.sy;
+    if(through_vertex(h, x, sx, sy, out, origin))
+      return true;
     Trace_point p;
     p.kind = Trace_point::ON_EDGE;
     p.element = h;
     p.x = x;
     push(out, p);
-    double sx = offer.sx, sy = offer.sy;
     for(Index step = 0; step < m.nf + 8; ++step)
     {
       // cross edge h into the face of its opposite o, in whose frame the image is above the edge
@@ -239,10 +244,51 @@ private:
       x = (std::min)((std::max)(position * (m.geometry[e].length / w), 0.), m.geometry[e].length);
       sx = ex;
       sy = ey;
+      if(through_vertex(h, x, sx, sy, out, origin))
+        return true;
       p.element = e;
       p.x = x;
       push(out, p);
     }
+    return false;
+  }
+
+  // Whether the straight part towards the image (sx, sy) (frame of h) of the origin crosses half-edge h at
+  // one of its ends (abscissa x within rounding of 0 or of its length, or h of zero length): then the path
+  // goes through that vertex w, and from there it is w's own path, of length d(w) <= |w - image| (+ the
+  // distance of the origin), the geodesic distance being exact: appends w and sets `origin` to w, from which
+  // the caller goes on. The line through a vertex leaves it into any face of its fan, which the walk face by
+  // face cannot decide within rounding (nor can it cross a zero-length edge). Only a vertex that was reached
+  // (or is a source) and is not already on the path (no cycle through coincident vertices).
+  bool through_vertex(Index h, double x, double sx, double sy, std::vector<Trace_point>& out, Index& origin) const
+  {
+    const Mesh_arrays& m = m_mesh;
+    const double length = m.geometry[h].length;
+    const double tolerance = 1e-13 * length + 16. * std::numeric_limits<double>::epsilon() * std::sqrt(sx * sx + sy * sy);
+    Index w = NO_INDEX;
+    if(x <= tolerance && x <= length - x)
+      w = m.source[h];
+    else if(length - x <= tolerance)
+      w = m.source[Mesh_arrays::next(h)];
+    if(w == NO_INDEX || !is_reached(w))
+      return false;
+    for(const Trace_point& q : out)
+      if(q.kind == Trace_point::AT_VERTEX && q.element == w)
+        return false;
+    push(out, vertex_point(w));
+    origin = w;
+    return true;
+  }
+
+  // Whether vertex v has a distance: it was offered one, or it is a source.
+  bool is_reached(Index v) const
+  {
+    const Offer& offer = m_record.vertex[static_cast<std::size_t>(v)];
+    if(offer.origin != NO_INDEX)
+      return true;
+    for(const Seed& s : m_seeds)
+      if(s.kind == Seed::AT_VERTEX && s.element == v)
+        return true;
     return false;
   }
 
