@@ -78,8 +78,11 @@ std::vector<std::string> entries_starting_with(const std::string& folder, const 
 // A fresh folder for one test.
 std::string fresh_folder(const std::string& name)
 {
+  // one folder per test and name: ctest runs the tests of this executable in parallel processes (-j)
   ::mkdir(tmp_dir.c_str(), 0777);
-  const std::string folder = tmp_dir + "/" + name;
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string folder =
+    tmp_dir + "/" + (test ? std::string(test->test_suite_name()) + "." + test->name() + "." : std::string()) + name;
   ::mkdir(folder.c_str(), 0777);
   for(const std::string& e : entries_starting_with(folder, ""))
     if(e != "." && e != "..")
