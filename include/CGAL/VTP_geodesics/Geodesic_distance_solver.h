@@ -496,21 +496,30 @@ private:
     std::vector<Index> tri(3 * nf), opp(3 * nf);
     std::vector<internal::Face_geometry> face_geometry(nf);
     double longest = 0.;
+    // one pass over the faces (the mesh is read once): the squared area is kept in `area` until the
+    // scale is known
     for(std::size_t f = 0; f < nf; ++f)
     {
       halfedge_descriptor h = halfedge(m_faces[f], m_tm);
+      vertex_descriptor corner[3];
       for(std::size_t k = 0; k < 3; ++k, h = next(h, m_tm))
       {
-        tri[3 * f + k] = get(m_vertex_id, source(h, m_tm));
+        corner[k] = source(h, m_tm);
+        tri[3 * f + k] = get(m_vertex_id, corner[k]);
         const halfedge_descriptor o = opposite(h, m_tm);
         opp[3 * f + k] = is_border(o, m_tm) ? internal::NO_INDEX : get(hid, o);
-        const double l2 = CGAL::to_double(sqd(get(m_vpm, source(h, m_tm)), get(m_vpm, target(h, m_tm))));
+      }
+      internal::Face_geometry& g = face_geometry[f];
+      for(std::size_t k = 0; k < 3; ++k)
+      {
+        const double l2 = CGAL::to_double(sqd(get(m_vpm, corner[k]), get(m_vpm, corner[(k + 1) % 3])));
         const double l = std::sqrt(l2);
         if(!std::isfinite(l))
           throw Invalid_input_error("the mesh has an edge of non-finite length (non-finite or too large coordinates)");
-        face_geometry[f].length[k] = l;
+        g.length[k] = l;
         longest = (std::max)(longest, l);
       }
+      g.area = CGAL::to_double(sqa(get(m_vpm, corner[0]), get(m_vpm, corner[1]), get(m_vpm, corner[2])));
     }
     // The engine works on lengths scaled by a power of two (exact in floating point) that brings the
     // longest edge into [0.5, 1): its squares and fourth powers can then neither overflow nor
@@ -526,10 +535,8 @@ private:
         l = std::ldexp(l, -exponent);
       // face areas from the points (accurate for nearly flat triangles, see VTPGeodesicTraits_3);
       // -1 where that overflows or underflows: the engine then uses the lengths
+      const double a2 = g.area;  // the squared area, from the first pass
       g.area = -1.;
-      const halfedge_descriptor h = halfedge(m_faces[f], m_tm);
-      const double a2 = CGAL::to_double(sqa(get(m_vpm, source(h, m_tm)), get(m_vpm, target(h, m_tm)),
-                                            get(m_vpm, target(next(h, m_tm), m_tm))));
       const double a = std::ldexp(std::sqrt(a2), -2 * exponent);
       // a zero is trusted only where the squared area of a face of relative height 1e-12
       // could not have underflowed (edges longer than 1e-60)
