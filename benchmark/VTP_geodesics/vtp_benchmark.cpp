@@ -583,6 +583,30 @@ double ns_per_window(const Run_result& r)
 
 double total_seconds(const Run_result& r) { return r.header.seconds + r.header.preprocessing_seconds; }
 
+// Reads everything the child `pid` writes to `fd` (before waiting: the child blocks when the pipe is full),
+// closes `fd`, then waits for the child: its exit status and peak RSS (MB).
+std::string read_all_and_wait(int fd, pid_t pid, int& status, double& peak_rss_mb)
+{
+  std::string text;
+  char buffer[1 << 16];
+  for(;;)
+  {
+    const ssize_t r = ::read(fd, buffer, sizeof(buffer));
+    if(r < 0 && errno == EINTR)
+      continue;
+    if(r <= 0)
+      break;
+    text.append(buffer, static_cast<std::size_t>(r));
+  }
+  ::close(fd);
+  status = 0;
+  struct rusage usage;
+  std::memset(&usage, 0, sizeof(usage));
+  while(::wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {}
+  peak_rss_mb = static_cast<double>(usage.ru_maxrss) / 1024.; // ru_maxrss is in KB on Linux
+  return text;
+}
+
 Run_result run_forked(Mesh& mesh, Vertex_index source, const Method& method, int repeat)
 {
   Run_result result;
@@ -607,25 +631,8 @@ Run_result run_forked(Mesh& mesh, Vertex_index source, const Method& method, int
   }
   ::close(fds[1]);
 
-  // Read everything before waiting: the child blocks when the pipe is full.
-  std::string message;
-  char buffer[1 << 16];
-  for(;;)
-  {
-    const ssize_t r = ::read(fds[0], buffer, sizeof(buffer));
-    if(r < 0 && errno == EINTR)
-      continue;
-    if(r <= 0)
-      break;
-    message.append(buffer, static_cast<std::size_t>(r));
-  }
-  ::close(fds[0]);
-
   int status = 0;
-  struct rusage usage;
-  std::memset(&usage, 0, sizeof(usage));
-  while(::wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {}
-  result.peak_rss_mb = static_cast<double>(usage.ru_maxrss) / 1024.; // ru_maxrss is in KB on Linux
+  const std::string message = read_all_and_wait(fds[0], pid, status, result.peak_rss_mb);
 
   if(WIFSIGNALED(status))
   {
@@ -717,23 +724,8 @@ Run_result run_external(const std::string& mesh_file, std::size_t source, std::s
     _exit(127);
   }
   ::close(fds[1]);
-  std::string text;
-  char buffer[1 << 12];
-  for(;;)
-  {
-    const ssize_t r = ::read(fds[0], buffer, sizeof(buffer));
-    if(r < 0 && errno == EINTR)
-      continue;
-    if(r <= 0)
-      break;
-    text.append(buffer, static_cast<std::size_t>(r));
-  }
-  ::close(fds[0]);
   int status = 0;
-  struct rusage usage;
-  std::memset(&usage, 0, sizeof(usage));
-  while(::wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {}
-  result.peak_rss_mb = static_cast<double>(usage.ru_maxrss) / 1024.;
+  const std::string text = read_all_and_wait(fds[0], pid, status, result.peak_rss_mb);
   if(!WIFEXITED(status) || WEXITSTATUS(status) != 0)
   {
     result.status = WIFSIGNALED(status) ? "killed by signal " + std::to_string(WTERMSIG(status))
