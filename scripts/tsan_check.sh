@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ThreadSanitizer check of the parallel scheduling (PVTP / PAVTP).
+# ThreadSanitizer check of the parallel scheduling (PVTP / PAVTP) and of the threaded preprocessing.
 #
 # GCC's OpenMP runtime (libgomp) is not instrumented for ThreadSanitizer: its barriers are invisible
 # to TSan, which then reports false races on any data handed from one parallel phase to the next.
@@ -30,5 +30,5 @@ export TSAN_OPTIONS="ignore_noninstrumented_modules=1 halt_on_error=1 exitcode=6
 export OMP_WAIT_POLICY=passive
 tests="$(cd "$build" && pwd)/bin/vtp_geodesics_tests"
 cd test/VTP_geodesics
-"$tests" --gtest_filter='Parallel*:*Parallel*:Compute_each*:Multiple_sources*:Distance_limit*:Targets*'
+"$tests" --gtest_filter='Parallel*:*Parallel*:Compute_each*:Multiple_sources*:Distance_limit*:Targets*:Preprocessing*'
 echo "tsan_check.sh: no data race reported"

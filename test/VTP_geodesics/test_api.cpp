@@ -10,6 +10,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/boost/graph/properties_Polyhedron_3.h>
 
@@ -295,6 +296,100 @@ TEST(Bad_input, quad_mesh_is_rejected)
   mixed.polygons.push_back({grid_vertex(3, 0, 0), grid_vertex(3, 1, 0), grid_vertex(3, 1, 1), grid_vertex(3, 0, 1)});
   const Surface_mesh mixed_mesh = to_mesh<Surface_mesh>(mixed);
   EXPECT_THROW(Geodesic_distance_solver<Surface_mesh>{mixed_mesh}, Invalid_input_error);
+}
+
+// The preprocessing on several threads (named parameter number_of_threads of the constructor) builds the
+// same arrays, bit for bit, as on one: the same flags, lengths, areas, statistics, and then the same distances.
+// Meshes with a border, zero-length edges and degenerate faces, several components; a Polyhedron_3, whose
+// dynamic property maps are hash maps, read by the threads at once. (Without OpenMP, the parameter is ignored.)
+template <class Mesh>
+void expect_same_preprocessing(const Mesh& mesh, int threads)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  const Geodesic_distance_solver<Mesh> one(mesh);
+  const Geodesic_distance_solver<Mesh> many(mesh, CGAL::VTP_geodesics::parameters::number_of_threads(threads));
+  const auto& a = one.mesh_arrays();
+  const auto& b = many.mesh_arrays();
+  EXPECT_EQ(a.nv, b.nv);
+  EXPECT_EQ(a.source, b.source);
+  EXPECT_EQ(a.opposite, b.opposite);
+  EXPECT_EQ(a.corner_begin, b.corner_begin);
+  EXPECT_EQ(a.corners, b.corners);
+  EXPECT_EQ(a.is_pseudo_source, b.is_pseudo_source);
+  EXPECT_EQ(a.is_degenerate_face, b.is_degenerate_face);
+  ASSERT_EQ(a.geometry.faces.size(), b.geometry.faces.size());
+  for(std::size_t f = 0; f < a.geometry.faces.size(); ++f)
+  {
+    const auto& ga = a.geometry.faces[f];
+    const auto& gb = b.geometry.faces[f];
+    ASSERT_TRUE(ga.length[0] == gb.length[0] && ga.length[1] == gb.length[1] && ga.length[2] == gb.length[2]
+                && ga.area == gb.area)
+      << "face " << f;
+  }
+  EXPECT_EQ(a.number_of_edges, b.number_of_edges);
+  EXPECT_EQ(a.mean_edge_length, b.mean_edge_length);
+  EXPECT_EQ(a.min_edge_length, b.min_edge_length);
+  EXPECT_EQ(a.max_edge_length, b.max_edge_length);
+  EXPECT_EQ(a.anisotropy, b.anisotropy);
+  EXPECT_EQ(one.mean_edge_length(), many.mean_edge_length());
+  EXPECT_EQ(one.number_of_pseudo_source_vertices(), many.number_of_pseudo_source_vertices());
+
+  // and the same distances, in the order of vertices(mesh)
+  const vertex_descriptor source = *vertices(mesh).begin();
+  std::vector<std::vector<double> > d;
+  for(int run = 0; run < 2; ++run)
+  {
+    std::map<vertex_descriptor, double> map;
+    Geodesic_distance_solver<Mesh> solver(mesh, CGAL::VTP_geodesics::parameters::number_of_threads(run == 0 ? 1 : threads));
+    solver.compute(boost::make_assoc_property_map(map), source);
+    d.emplace_back();
+    for(vertex_descriptor v : vertices(mesh))
+      d.back().push_back(map.at(v));
+  }
+  EXPECT_TRUE(identical(d[0], d[1]));
+}
+
+TEST(Preprocessing, any_number_of_threads_gives_the_same_arrays)
+{
+  for(const char* name : { "elephant-with-holes.off", "degenerate_zero_length_edges.off", "knot1.off",
+                           "nearly_collinear_flat.off" })
+  {
+    SCOPED_TRACE(name);
+    const Surface_mesh mesh = load_mesh(name);
+    for(int threads : { 2, 3, 0 })
+    {
+      SCOPED_TRACE(threads);
+      expect_same_preprocessing(mesh, threads);
+    }
+  }
+  Polygon_soup two = planar_grid(6, 5, 1., 1.);  // two components
+  const Polygon_soup other = regular_tetrahedron();
+  const std::size_t offset = two.points.size();
+  two.points.insert(two.points.end(), other.points.begin(), other.points.end());
+  for(std::vector<std::size_t> polygon : other.polygons)
+  {
+    for(std::size_t& v : polygon)
+      v += offset;
+    two.polygons.push_back(polygon);
+  }
+  expect_same_preprocessing(to_mesh<Surface_mesh>(two), 2);
+  expect_same_preprocessing(to_mesh<Polyhedron>(two), 2);
+  Polyhedron elephant_polyhedron;
+  CGAL::copy_face_graph(elephant(), elephant_polyhedron);
+  expect_same_preprocessing(elephant_polyhedron, 2);
+}
+
+TEST(Bad_input, quad_mesh_is_rejected_with_several_threads)
+{
+  const Surface_mesh quads = to_mesh<Surface_mesh>(quad_grid(3));
+  EXPECT_THROW((Geodesic_distance_solver<Surface_mesh>{quads, CGAL::VTP_geodesics::parameters::number_of_threads(2)}),
+               Invalid_input_error);
+  // a non-finite edge length found by one of the threads
+  Polygon_soup grid = planar_grid(20, 20, 1., 1.);
+  grid.points[grid.points.size() / 2] = Point_3(std::numeric_limits<double>::infinity(), 0., 0.);
+  const Surface_mesh infinite = to_mesh<Surface_mesh>(grid);
+  EXPECT_THROW((Geodesic_distance_solver<Surface_mesh>{infinite, CGAL::VTP_geodesics::parameters::number_of_threads(2)}),
+               Invalid_input_error);
 }
 
 TEST(Bad_input, source_not_in_the_mesh_is_rejected)

@@ -138,19 +138,27 @@ public:
       m_vertex_id(get(CGAL::dynamic_vertex_property_t<Index>(), tm)),
       m_face_id(get(CGAL::dynamic_face_property_t<Index>(), tm))
   {
-    build();
+    build(1);
   }
 
   /// builds the per-mesh data of `tm` with the named parameters `np`: `vertex_point_map` (of type
-  /// `Vertex_point_map`) and `geom_traits` (of type `Geom_traits`).
+  /// `Vertex_point_map`), `geom_traits` (of type `Geom_traits`) and `number_of_threads`, the number of
+  /// OpenMP threads of the preprocessing (default 1; 0: OpenMP's default; without OpenMP, 1). The
+  /// result does not depend on the number of threads. With more than one thread, the graph functions of
+  /// `tm`, the vertex point map and the traits are called from several threads at once (they only read).
   /// \throws Invalid_input_error as the constructor above.
   template <class T, class Tag, class Base>
   Geodesic_distance_solver(const TriangleMesh& tm, const CGAL::Named_function_parameters<T, Tag, Base>& np)
-    : Geodesic_distance_solver(tm,
-        CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                     get_const_property_map(CGAL::vertex_point, tm)),
-        CGAL::parameters::choose_parameter<Geom_traits>(CGAL::parameters::get_parameter(np, CGAL::internal_np::geom_traits)))
-  {}
+    : m_tm(tm),
+      m_vpm(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                               get_const_property_map(CGAL::vertex_point, tm))),
+      m_traits(CGAL::parameters::choose_parameter<Geom_traits>(
+        CGAL::parameters::get_parameter(np, CGAL::internal_np::geom_traits))),
+      m_vertex_id(get(CGAL::dynamic_vertex_property_t<Index>(), tm)),
+      m_face_id(get(CGAL::dynamic_face_property_t<Index>(), tm))
+  {
+    build(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::number_of_threads), 1));
+  }
   /// @}
 
   /// \name Source set
@@ -454,11 +462,14 @@ public:
   /// \endcond
 
 private:
-  void build()
+  void build(int threads)
   {
     const auto t0 = std::chrono::steady_clock::now();
-    if(!CGAL::is_triangle_mesh(m_tm))
-      throw Invalid_input_error("the mesh is not a triangle mesh (some face is not a triangle)");
+#ifdef _OPENMP
+    if(threads <= 0)
+      threads = omp_get_max_threads();
+#endif
+    threads = (std::max)(1, threads);
     // The per-mesh arrays number vertices and half-edges with 32-bit integers.
     const std::size_t max_index = static_cast<std::size_t>((std::numeric_limits<Index>::max)());
     if(static_cast<std::size_t>(num_vertices(m_tm)) > max_index
@@ -469,6 +480,8 @@ private:
     typename Geom_traits::Compute_squared_distance_3 sqd = m_traits.compute_squared_distance_3_object();
     typename Geom_traits::Compute_squared_area_3 sqa = m_traits.compute_squared_area_3_object();
 
+    // The numbering writes the dynamic property maps: one thread (a dynamic map may be a hash map). It
+    // checks that every face is a triangle.
     Index nv = 0;
     m_vertices.reserve(num_vertices(m_tm));
     for(vertex_descriptor v : vertices(m_tm))
@@ -484,22 +497,31 @@ private:
     for(face_descriptor f : faces(m_tm))
     {
       put(m_face_id, f, static_cast<Index>(m_faces.size()));
-      halfedge_descriptor h = halfedge(f, m_tm);
+      const halfedge_descriptor h0 = halfedge(f, m_tm);
+      halfedge_descriptor h = h0;
       for(int k = 0; k < 3; ++k)
       {
         put(hid, h, static_cast<Index>(3 * m_faces.size() + static_cast<std::size_t>(k)));
         h = next(h, m_tm);
+        if((h == h0) != (k == 2))  // a face of another degree than 3
+          throw Invalid_input_error("the mesh is not a triangle mesh (some face is not a triangle)");
       }
       m_faces.push_back(f);
     }
     const std::size_t nf = m_faces.size();
     std::vector<Index> tri(3 * nf), opp(3 * nf);
     std::vector<internal::Face_geometry> face_geometry(nf);
+    // One pass over the faces (the mesh is read once), which only reads the mesh and the maps: the faces
+    // are shared among the threads. The squared area is kept in `area` until the scale is known.
     double longest = 0.;
-    // one pass over the faces (the mesh is read once): the squared area is kept in `area` until the
-    // scale is known
-    for(std::size_t f = 0; f < nf; ++f)
+    bool finite = true;
+    const long long nfl = static_cast<long long>(nf);
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1) reduction(max : longest) reduction(&& : finite)
+#endif
+    for(long long fl = 0; fl < nfl; ++fl)
     {
+      const std::size_t f = static_cast<std::size_t>(fl);
       halfedge_descriptor h = halfedge(m_faces[f], m_tm);
       vertex_descriptor corner[3];
       for(std::size_t k = 0; k < 3; ++k, h = next(h, m_tm))
@@ -514,13 +536,14 @@ private:
       {
         const double l2 = CGAL::to_double(sqd(get(m_vpm, corner[k]), get(m_vpm, corner[(k + 1) % 3])));
         const double l = std::sqrt(l2);
-        if(!std::isfinite(l))
-          throw Invalid_input_error("the mesh has an edge of non-finite length (non-finite or too large coordinates)");
+        finite = finite && std::isfinite(l);
         g.length[k] = l;
         longest = (std::max)(longest, l);
       }
       g.area = CGAL::to_double(sqa(get(m_vpm, corner[0]), get(m_vpm, corner[1]), get(m_vpm, corner[2])));
     }
+    if(!finite)
+      throw Invalid_input_error("the mesh has an edge of non-finite length (non-finite or too large coordinates)");
     // The engine works on lengths scaled by a power of two (exact in floating point) that brings the
     // longest edge into [0.5, 1): its squares and fourth powers can then neither overflow nor
     // underflow, whatever the scale of the coordinates. Distances are scaled back on output.
@@ -528,23 +551,31 @@ private:
     if(longest > 0.)
       std::frexp(longest, &exponent);
     m_length_scale = std::ldexp(1., exponent);
-    for(std::size_t f = 0; f < nf; ++f)
+    // multiplying by a power of two that is a normal number rounds as std::ldexp does (both are
+    // correctly rounded); ldexp is kept for the extreme scales
+    const bool multiply = exponent > -500 && exponent < 500;
+    const double down = std::ldexp(1., -exponent), down2 = std::ldexp(1., -2 * exponent);
+    auto scaled = [&](double x, int e, double factor) { return multiply ? x * factor : std::ldexp(x, e); };
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1)
+#endif
+    for(long long fl = 0; fl < nfl; ++fl)
     {
-      internal::Face_geometry& g = face_geometry[f];
+      internal::Face_geometry& g = face_geometry[static_cast<std::size_t>(fl)];
+      const double longest_edge = (std::max)(g.length[0], (std::max)(g.length[1], g.length[2]));
       for(double& l : g.length)
-        l = std::ldexp(l, -exponent);
+        l = scaled(l, -exponent, down);
       // face areas from the points (accurate for nearly flat triangles, see VTPGeodesicTraits_3);
       // -1 where that overflows or underflows: the engine then uses the lengths
       const double a2 = g.area;  // the squared area, from the first pass
       g.area = -1.;
-      const double a = std::ldexp(std::sqrt(a2), -2 * exponent);
+      const double a = scaled(std::sqrt(a2), -2 * exponent, down2);
       // a zero is trusted only where the squared area of a face of relative height 1e-12
       // could not have underflowed (edges longer than 1e-60)
-      const double longest_edge = std::ldexp((std::max)(g.length[0], (std::max)(g.length[1], g.length[2])), exponent);
       if(std::isfinite(a2) && std::isfinite(a) && (a > 0. || (a2 == 0. && longest_edge > 1e-60)))
         g.area = a;
     }
-    m_arrays.build(nv, std::move(tri), std::move(opp), std::move(face_geometry));
+    m_arrays.build(nv, std::move(tri), std::move(opp), std::move(face_geometry), threads);
     m_engine.distances().assign(static_cast<std::size_t>(nv), std::numeric_limits<double>::infinity());
     m_preprocessing_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -23,6 +23,8 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
+#include <type_traits>
+
 namespace CGAL {
 namespace VTP_geodesics {
 
@@ -75,8 +77,8 @@ namespace VTP_geodesics {
 ///     \cgalParamDefault{`1`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads}
-///     \cgalParamDescription{the number of threads of the parallel scheduling; ignored with
-///       `CGAL::Sequential_tag`}
+///     \cgalParamDescription{the number of threads of the parallel scheduling and of the per-mesh
+///       preprocessing; ignored with `CGAL::Sequential_tag`}
 ///     \cgalParamType{`int`, `>= 0`}
 ///     \cgalParamDefault{`0`: OpenMP's default}
 ///   \cgalParamNEnd
@@ -126,7 +128,12 @@ void compute_geodesic_distances(const TriangleMesh& tm,
                              get_const_property_map(CGAL::vertex_point, tm));
   GT gt = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
 
-  Geodesic_distance_solver<TriangleMesh, GT, VPM> solver(tm, vpm, gt);
+  // with Parallel_tag, the preprocessing uses the threads of the propagation
+  const int threads = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value
+                        ? choose_parameter(get_parameter(np, internal_np::number_of_threads), 0)
+                        : 1;
+  Geodesic_distance_solver<TriangleMesh, GT, VPM> solver(
+    tm, parameters::vertex_point_map(vpm).geom_traits(gt).number_of_threads(threads));
   solver.template compute<ConcurrencyTag>(vdm, sources, np);
 }
 

@@ -110,11 +110,13 @@ struct Mesh_arrays
   // Builds the arrays from triangles (3 vertex indices each, counterclockwise), the opposite of
   // each half-edge (NO_INDEX on the border) and the lengths and, where known, the area of each
   // face. A face's height is taken from its area: from the lengths alone, a nearly flat
-  // triangle's height is only accurate to about sqrt(epsilon) times its size.
+  // triangle's height is only accurate to about sqrt(epsilon) times its size. The angle sums are
+  // computed by `threads` OpenMP threads; the result does not depend on their number.
   void build(Index number_of_vertices,
              std::vector<Index>&& triangle_vertices,
              std::vector<Index>&& opposite_halfedges,
-             std::vector<Face_geometry>&& faces)
+             std::vector<Face_geometry>&& faces,
+             int threads = 1)
   {
     nv = number_of_vertices;
     source = std::move(triangle_vertices);
@@ -142,18 +144,42 @@ struct Mesh_arrays
         corners[fill[source[h]]++] = h;
     }
 
-    // angles, boundary and saddle flags, edge statistics
-    std::vector<double> angle_sum(nv, 0.);
-    is_pseudo_source.assign(nv, 0);   // first: the boundary vertices
+    // Saddle flags: the corner angles are summed per vertex in the order of the half-edges, so that the
+    // sums do not depend on the number of threads; the angles (one acos each) are computed by the
+    // threads, a block of half-edges at a time, and added up by one.
+    is_pseudo_source.assign(nv, 0);
+    {
+      std::vector<double> angle_sum(nv, 0.);
+      const Index block = Index(1) << 15;
+      std::vector<double> angle((std::min)(nh, block));
+      for(Index first = 0; first < nh; first += block)
+      {
+        const Index last = (std::min)(nh, first + block);
+        const long long firstl = static_cast<long long>(first), lastl = static_cast<long long>(last);
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1)
+#endif
+        for(long long hl = firstl; hl < lastl; ++hl)
+        {
+          // corner angle at source(h) between h (A->B) and the reversed prev(h) (A->C)
+          const Halfedge_geometry g = geometry[static_cast<Index>(hl)];
+          angle[static_cast<std::size_t>(hl - firstl)] = corner_angle(g.length, g.l_prev, g.l_next);
+        }
+        for(Index h = first; h < last; ++h)
+          angle_sum[source[h]] += angle[h - first];
+      }
+      const double two_pi = 2. * 3.14159265358979323846;
+      for(Index v = 0; v < nv; ++v)
+        if(angle_sum[v] > two_pi + 1e-9)
+          is_pseudo_source[v] = 1;
+    }
+    // boundary flags, edge statistics
     double sum_len = 0.;
     std::size_t ne = 0;
     min_edge_length = (nh > 0) ? geometry.faces[0].length[0] : 0.;
     max_edge_length = 0.;
     for(Index h = 0; h < nh; ++h)
     {
-      const Halfedge_geometry g = geometry[h];
-      // corner angle at source(h) between h (A->B) and the reversed prev(h) (A->C)
-      angle_sum[source[h]] += corner_angle(g.length, g.l_prev, g.l_next);
       if(opposite[h] == NO_INDEX)
       {
         is_pseudo_source[source[h]] = 1;
@@ -161,7 +187,7 @@ struct Mesh_arrays
       }
       if(opposite[h] == NO_INDEX || opposite[h] > h) // count each edge once
       {
-        const double l = g.length;
+        const double l = geometry.faces[static_cast<std::size_t>(h / 3)].length[h % 3];
         sum_len += l;
         ++ne;
         min_edge_length = (std::min)(min_edge_length, l);
@@ -170,10 +196,6 @@ struct Mesh_arrays
     }
     number_of_edges = ne;
     mean_edge_length = ne > 0 ? sum_len / double(ne) : 0.;
-    const double two_pi = 2. * 3.14159265358979323846;
-    for(Index v = 0; v < nv; ++v)
-      if(angle_sum[v] > two_pi + 1e-9)
-        is_pseudo_source[v] = 1;
     // Windows cannot cross a face of (almost) zero area or an edge of zero length, and the angles
     // of such a face are meaningless: its vertices are made pseudo-sources, so that the paths
     // through them are not lost.
@@ -189,7 +211,7 @@ struct Mesh_arrays
       for(Index k = 0; k < 3; ++k)
         is_pseudo_source[source[3 * f + k]] = 1;
     }
-    compute_anisotropy();
+    compute_anisotropy(threads);
   }
 
   // area of a triangle from its side lengths, accurate for needles (Kahan); 0 if degenerate
@@ -214,22 +236,42 @@ struct Mesh_arrays
 
   // Anisotropy degree tau: mean over faces of (longest edge / (2 sqrt(3) inradius)),
   // which is 1 for equilateral triangles and grows with elongation; capped for degenerate faces.
-  void compute_anisotropy()
+  // The terms are computed by `threads` threads a block at a time and added up in face order.
+  void compute_anisotropy(int threads)
   {
     double acc = 0.;
     std::size_t n = 0;
-    for(Index f = 0; f < nf; ++f)
+    const Index block = Index(1) << 15;
+    std::vector<double> term((std::min)(nf, block));
+    for(Index first = 0; first < nf; first += block)
     {
-      const Face_geometry& g = geometry.faces[static_cast<std::size_t>(f)];
-      const double a = g.length[0], b = g.length[1], c = g.length[2];
-      const double area = triangle_area(a, b, c);
-      const double lmax = (std::max)(a, (std::max)(b, c));
-      if(!(area > 0.))
-        continue;
-      const double inradius = 2. * area / (a + b + c);
-      const double q = lmax / (2. * std::sqrt(3.) * inradius);
-      acc += (std::min)(q, 1e3);
-      ++n;
+      const Index last = (std::min)(nf, first + block);
+      const long long firstl = static_cast<long long>(first), lastl = static_cast<long long>(last);
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1)
+#else
+      (void)threads;
+#endif
+      for(long long fl = firstl; fl < lastl; ++fl)
+      {
+        const Face_geometry& g = geometry.faces[static_cast<std::size_t>(fl)];
+        const double a = g.length[0], b = g.length[1], c = g.length[2];
+        const double area = triangle_area(a, b, c);
+        const double lmax = (std::max)(a, (std::max)(b, c));
+        double q = -1.;  // no term
+        if(area > 0.)
+        {
+          const double inradius = 2. * area / (a + b + c);
+          q = (std::min)(lmax / (2. * std::sqrt(3.) * inradius), 1e3);
+        }
+        term[static_cast<std::size_t>(fl - firstl)] = q;
+      }
+      for(Index f = first; f < last; ++f)
+        if(term[f - first] >= 0.)
+        {
+          acc += term[f - first];
+          ++n;
+        }
     }
     anisotropy = n > 0 ? (std::max)(1., acc / double(n)) : 1.;
   }
