@@ -31,11 +31,11 @@ struct Mesh_input : vtp_tools::Input_mesh
 };
 
 // Throws Tool_error if the file cannot be read or made a triangle mesh.
-inline void read_mesh_input(const std::string& file, Mesh_input& input)
+inline void read_mesh_input(const std::string& file, Mesh_input& input, int threads = 1)
 {
   try
   {
-    vtp_tools::read_input_mesh(file, static_cast<vtp_tools::Input_mesh&>(input));
+    vtp_tools::read_input_mesh(file, static_cast<vtp_tools::Input_mesh&>(input), threads);
   }
   catch(const vtp_tools::Input_error& e)
   {

@@ -62,7 +62,7 @@ void compute_rows(const Mesh_input& input, const std::vector<std::int64_t>& sour
   const auto np = CGAL::VTP_geodesics::parameters::number_of_threads((std::max)(threads, 1))
                     .lambda(method.approximate ? method.lambda : infinity)
                     .maximum_distance(method.max_distance);
-  Solver solver(input.mesh);
+  Solver solver(input.mesh, CGAL::VTP_geodesics::parameters::number_of_threads((std::max)(threads, 1)));
 
   // The solver's index of each mesh vertex (by Surface_mesh index), and the file's vertex of each column.
   std::vector<std::size_t> id(input.mesh.number_of_vertices());

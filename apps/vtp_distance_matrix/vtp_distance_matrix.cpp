@@ -93,7 +93,7 @@ int run(Job& job, int argc, char** argv)
     args = parse_arguments(argc, argv);
     if(!args.help)
     {
-      read_mesh_input(args.mesh, input);
+      read_mesh_input(args.mesh, input, args.threads > 0 ? args.threads : default_thread_count());
       sources = parse_sources(args.sources, static_cast<std::int64_t>(input.file_vertices));
     }
   }

@@ -214,8 +214,8 @@ const std::vector<Option>& option_table()
     { "--method", "M", nullptr, // help made from the table of methods in print_usage()
       [](Arguments& a, const std::string&, const std::string& v) { a.method = v; } },
     { "--threads", "T",
-      "number of threads of the parallel methods (0: OpenMP default);\n"
-      "ignored by the sequential methods",
+      "number of threads of the parallel methods, and of building the mesh\n"
+      "and its arrays for every method (0, the default: OpenMP's default)",
       [](Arguments& a, const std::string& n, const std::string& v) {
         const std::size_t t = parse_index(n, v);
         if(t > 4096)

@@ -123,7 +123,7 @@ int run(int argc, char** argv)
       throw Tool_error("no mesh given, and the default mesh " + mesh_file + " is missing (give a mesh file)");
   }
   vtp_tools::Input_mesh input;
-  vtp_tools::read_input_mesh(mesh_file, input);
+  vtp_tools::read_input_mesh(mesh_file, input, args.threads);
   auto check_vertex = [&input](std::size_t v, const char* what) {
     if(v >= input.file_vertices)
       throw Tool_error(std::string(what) + " vertex " + std::to_string(v) + " is out of range (the mesh has "

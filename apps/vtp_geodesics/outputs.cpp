@@ -192,6 +192,7 @@ std::string stats_json(const Report& r)
      << ", \"stopped_early\": " << (s.stopped_early ? "true" : "false")
      << ", \"method\": " << json_string(s.method)
      << ", \"threads\": " << s.threads
+     << ", \"preprocessing_threads\": " << s.preprocessing_threads
      << ", \"seconds\": " << json_number(s.propagation_seconds)
      << ", \"read_seconds\": " << json_number(r.read_seconds)
      << ", \"repair_seconds\": " << json_number(r.repair_seconds)

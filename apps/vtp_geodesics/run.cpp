@@ -22,6 +22,10 @@
 
 #include <vtp_tools/shortest_path_reference.h>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -89,12 +93,16 @@ Run_result run_propagation(const vtp_tools::Mesh& mesh, const Run_request& reque
   const double lambda = !method.approximate ? std::numeric_limits<double>::infinity()
                        : (request.has_lambda ? request.lambda : recommended_lambda());
 
-  Solver solver(mesh);
+  // the preprocessing uses the threads of the parallel methods, whatever the method (same result)
+  Solver solver(mesh, CGAL::VTP_geodesics::parameters::number_of_threads(request.threads));
   Run_result r;
   r.method = method.name;
   r.mesh_vertices = solver.number_of_vertices();
   r.mesh_faces = solver.number_of_faces();
   r.preprocessing_seconds = solver.preprocessing_seconds();
+#ifdef _OPENMP
+  r.preprocessing_threads = request.threads > 0 ? request.threads : omp_get_max_threads();
+#endif
   r.mean_edge_length = solver.mean_edge_length();
   r.anisotropy = solver.anisotropy();
 

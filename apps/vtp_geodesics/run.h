@@ -29,7 +29,7 @@ namespace vtp_geodesics_app {
 struct Run_request
 {
   const vtp_tools::Method_info* method = nullptr;
-  int threads = 0;                        // parallel methods; 0: OpenMP's default
+  int threads = 0;                        // parallel methods and preprocessing; 0: OpenMP's default
   bool has_lambda = false;                // approximate methods: reset period (default: the recommended one)
   double lambda = 0.;
   double lambda_g = 1.;                   // approximate methods: guard band
@@ -70,6 +70,7 @@ struct Run_result
   // statistics
   std::string method;
   int threads = 1;
+  int preprocessing_threads = 1;          // reading the mesh and building the solver's arrays
   std::size_t mesh_vertices = 0, mesh_faces = 0;
   double preprocessing_seconds = 0.;      // solver construction
   double propagation_seconds = 0.;        // the propagations (all sources)

@@ -316,6 +316,56 @@ TEST(FastOffReader, SameMeshAsCgal)
   }
 }
 
+// The halfedge structure built on several threads is the one built on one, halfedge for halfedge (and the
+// invalid meshes are found so, with the same reason). Without OpenMP, the number of threads is ignored.
+TEST(FastOffReader, SameMeshWithAnyNumberOfThreads)
+{
+  for(const char* name : { "elephant.off", "elephant-with-holes.off", "mech-holes-shark.off",
+                           "degenerate_zero_length_edges.off" })
+  {
+    SCOPED_TRACE(name);
+    Mesh one;
+    ASSERT_EQ(vtp_tools::read_off_triangle_mesh(mesh_dir + "/" + name, one, 1).status,
+              vtp_tools::Fast_off_result::MESH);
+    for(int threads : { 2, 3, 0 })
+    {
+      SCOPED_TRACE(threads);
+      Mesh many;
+      ASSERT_EQ(vtp_tools::read_off_triangle_mesh(mesh_dir + "/" + name, many, threads).status,
+                vtp_tools::Fast_off_result::MESH);
+      ASSERT_TRUE(many.is_valid(false)); // (Surface_mesh's check: a file has isolated vertices)
+      ASSERT_EQ(many.number_of_halfedges(), one.number_of_halfedges());
+      ASSERT_EQ(many.number_of_faces(), one.number_of_faces());
+      for(Mesh::Halfedge_index h : one.halfedges())
+        ASSERT_TRUE(many.target(h) == one.target(h) && many.next(h) == one.next(h) && many.prev(h) == one.prev(h)
+                    && many.face(h) == one.face(h))
+          << "halfedge " << h;
+      for(Vertex_index v : one.vertices())
+        ASSERT_EQ(many.halfedge(v), one.halfedge(v)) << "vertex " << v;
+      for(Mesh::Face_index f : one.faces())
+        ASSERT_EQ(many.halfedge(f), one.halfedge(f)) << "face " << f;
+    }
+  }
+  const std::string folder = fresh_folder("fast_off_threads");
+  const std::pair<const char*, const char*> invalid[] = {
+    { "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n3 0 1 2\n3 0 1 3\n", "two faces have the same oriented edge" },
+    { "OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 0 3 4\n", "a vertex is not manifold" },
+  };
+  int i = 0;
+  for(const auto& c : invalid)
+  {
+    const std::string file = folder + "/invalid" + std::to_string(i++) + ".off";
+    write_all(file, c.first);
+    for(int threads : { 1, 2 })
+    {
+      Mesh m;
+      const vtp_tools::Fast_off_result r = vtp_tools::read_off_triangle_mesh(file, m, threads);
+      EXPECT_EQ(r.status, vtp_tools::Fast_off_result::NOT_HANDLED);
+      EXPECT_EQ(r.reason, c.second);
+    }
+  }
+}
+
 TEST(FastOffReader, CommentsBlankLinesAndFaceColours)
 {
   const std::string folder = fresh_folder("fast_off");

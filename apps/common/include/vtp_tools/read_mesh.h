@@ -196,8 +196,9 @@ inline void read_soup(const std::string& file, std::vector<Point_3>& points,
 
 } // namespace read_detail
 
-// Reads `file` into `input` (see the top of this file). Throws `Input_error`.
-inline void read_input_mesh(const std::string& file, Input_mesh& input)
+// Reads `file` into `input` (see the top of this file); a valid triangle mesh is built by `threads` OpenMP
+// threads (0: OpenMP's default), with the same result whatever their number. Throws `Input_error`.
+inline void read_input_mesh(const std::string& file, Input_mesh& input, int threads = 1)
 {
   const std::string ext = lower_extension(file);
   bool known = false;
@@ -230,7 +231,7 @@ inline void read_input_mesh(const std::string& file, Input_mesh& input)
     Fast_off_result r;
     try
     {
-      r = read_off_triangle_mesh(file, input.mesh);
+      r = read_off_triangle_mesh(file, input.mesh, threads);
     }
     catch(const Fast_off_error& e)
     {
@@ -281,7 +282,7 @@ inline void read_input_mesh(const std::string& file, Input_mesh& input)
     for(const Point_3& p : points)
       input.mesh.add_vertex(p);
     std::string reason;
-    if(fast_off_detail::build_triangle_mesh(triangles, input.mesh, reason))
+    if(fast_off_detail::build_triangle_mesh(triangles, input.mesh, reason, threads))
     {
       input.direct = true;
       input.repair_seconds = read_detail::seconds_since(t1);
