@@ -21,6 +21,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -390,6 +391,33 @@ TEST(Bad_input, quad_mesh_is_rejected_with_several_threads)
   const Surface_mesh infinite = to_mesh<Surface_mesh>(grid);
   EXPECT_THROW((Geodesic_distance_solver<Surface_mesh>{infinite, CGAL::VTP_geodesics::parameters::number_of_threads(2)}),
                Invalid_input_error);
+}
+
+// A vertex point map that throws for one vertex: the exception leaves the (threaded) preprocessing as it is.
+struct Throwing_point_map
+{
+  typedef Vertex_index key_type;
+  typedef Point_3 value_type;
+  typedef Point_3 reference;
+  typedef boost::readable_property_map_tag category;
+  const Surface_mesh* mesh;
+  Vertex_index bad;
+  friend Point_3 get(const Throwing_point_map& m, Vertex_index v)
+  {
+    if(v == m.bad)
+      throw std::runtime_error("no point for this vertex");
+    return m.mesh->point(v);
+  }
+};
+
+TEST(Bad_input, exception_of_the_point_map_leaves_the_preprocessing)
+{
+  const Surface_mesh mesh = load_mesh("elephant.off");
+  const Throwing_point_map map{ &mesh, Vertex_index(static_cast<Surface_mesh::size_type>(num_vertices(mesh) / 2)) };
+  typedef Geodesic_distance_solver<Surface_mesh, CGAL::Default, Throwing_point_map> Solver;
+  for(int threads : { 1, 2 })
+    EXPECT_THROW((Solver{ mesh, CGAL::VTP_geodesics::parameters::vertex_point_map(map).number_of_threads(threads) }),
+                 std::runtime_error);
 }
 
 TEST(Bad_input, source_not_in_the_mesh_is_rejected)

@@ -512,14 +512,18 @@ private:
     std::vector<Index> tri(3 * nf), opp(3 * nf);
     std::vector<internal::Face_geometry> face_geometry(nf);
     // One pass over the faces (the mesh is read once), which only reads the mesh and the maps: the faces
-    // are shared among the threads. The squared area is kept in `area` until the scale is known.
+    // are shared among the threads. The squared area is kept in `area` until the scale is known. An
+    // exception of the traits or the maps is caught in the loop (it cannot leave a parallel region) and
+    // thrown after it.
     double longest = 0.;
     bool finite = true;
+    std::exception_ptr error;
     const long long nfl = static_cast<long long>(nf);
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1) reduction(max : longest) reduction(&& : finite)
 #endif
     for(long long fl = 0; fl < nfl; ++fl)
+    try
     {
       const std::size_t f = static_cast<std::size_t>(fl);
       halfedge_descriptor h = halfedge(m_faces[f], m_tm);
@@ -542,6 +546,18 @@ private:
       }
       g.area = CGAL::to_double(sqa(get(m_vpm, corner[0]), get(m_vpm, corner[1]), get(m_vpm, corner[2])));
     }
+    catch(...)
+    {
+#ifdef _OPENMP
+#pragma omp critical(vtp_geodesics_solver_build)
+#endif
+      {
+        if(!error)
+          error = std::current_exception();
+      }
+    }
+    if(error)
+      std::rethrow_exception(error);
     if(!finite)
       throw Invalid_input_error("the mesh has an edge of non-finite length (non-finite or too large coordinates)");
     // The engine works on lengths scaled by a power of two (exact in floating point) that brings the
