@@ -144,30 +144,19 @@ struct Mesh_arrays
         corners[fill[source[h]]++] = h;
     }
 
-    // Saddle flags: the corner angles are summed per vertex in the order of the half-edges, so that the
-    // sums do not depend on the number of threads; the angles (one acos each) are computed by the
-    // threads, a block of half-edges at a time, and added up by one.
+    // Saddle flags: the corner angles (one acos each) are computed by the threads and summed per vertex
+    // in the order of the half-edges, so that the sums do not depend on the number of threads.
     is_pseudo_source.assign(nv, 0);
     {
       std::vector<double> angle_sum(nv, 0.);
-      const Index block = Index(1) << 15;
-      std::vector<double> angle((std::min)(nh, block));
-      for(Index first = 0; first < nh; first += block)
-      {
-        const Index last = (std::min)(nh, first + block);
-        const long long firstl = static_cast<long long>(first), lastl = static_cast<long long>(last);
-#ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1)
-#endif
-        for(long long hl = firstl; hl < lastl; ++hl)
-        {
+      computed_in_parallel_added_in_order(
+        nh, threads,
+        [this](Index h) {
           // corner angle at source(h) between h (A->B) and the reversed prev(h) (A->C)
-          const Halfedge_geometry g = geometry[static_cast<Index>(hl)];
-          angle[static_cast<std::size_t>(hl - firstl)] = corner_angle(g.length, g.l_prev, g.l_next);
-        }
-        for(Index h = first; h < last; ++h)
-          angle_sum[source[h]] += angle[h - first];
-      }
+          const Halfedge_geometry g = geometry[h];
+          return corner_angle(g.length, g.l_prev, g.l_next);
+        },
+        [&](Index h, double angle) { angle_sum[source[h]] += angle; });
       const double two_pi = 2. * 3.14159265358979323846;
       for(Index v = 0; v < nv; ++v)
         if(angle_sum[v] > two_pi + 1e-9)
@@ -234,45 +223,54 @@ struct Mesh_arrays
     return std::acos(cosine);
   }
 
-  // Anisotropy degree tau: mean over faces of (longest edge / (2 sqrt(3) inradius)),
-  // which is 1 for equilateral triangles and grows with elongation; capped for degenerate faces.
-  // The terms are computed by `threads` threads a block at a time and added up in face order.
-  void compute_anisotropy(int threads)
+  // Calls add(i, term(i)) for i = 0, ..., n - 1 in this order, the terms being computed by `threads`
+  // OpenMP threads a block at a time: sums made by `add` do not depend on the number of threads.
+  template <class Term, class Add>
+  static void computed_in_parallel_added_in_order(Index n, int threads, const Term& term, const Add& add)
   {
-    double acc = 0.;
-    std::size_t n = 0;
     const Index block = Index(1) << 15;
-    std::vector<double> term((std::min)(nf, block));
-    for(Index first = 0; first < nf; first += block)
+    std::vector<double> value((std::min)(n, block));
+    for(Index first = 0; first < n; first += block)
     {
-      const Index last = (std::min)(nf, first + block);
+      const Index last = (std::min)(n, first + block);
       const long long firstl = static_cast<long long>(first), lastl = static_cast<long long>(last);
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1)
 #else
       (void)threads;
 #endif
-      for(long long fl = firstl; fl < lastl; ++fl)
-      {
-        const Face_geometry& g = geometry.faces[static_cast<std::size_t>(fl)];
+      for(long long il = firstl; il < lastl; ++il)
+        value[static_cast<std::size_t>(il - firstl)] = term(static_cast<Index>(il));
+      for(Index i = first; i < last; ++i)
+        add(i, value[i - first]);
+    }
+  }
+
+  // Anisotropy degree tau: mean over faces of (longest edge / (2 sqrt(3) inradius)),
+  // which is 1 for equilateral triangles and grows with elongation; capped for degenerate faces.
+  void compute_anisotropy(int threads)
+  {
+    double acc = 0.;
+    std::size_t n = 0;
+    computed_in_parallel_added_in_order(
+      nf, threads,
+      [this](Index f) {
+        const Face_geometry& g = geometry.faces[static_cast<std::size_t>(f)];
         const double a = g.length[0], b = g.length[1], c = g.length[2];
         const double area = triangle_area(a, b, c);
+        if(!(area > 0.))
+          return -1.;  // no term
         const double lmax = (std::max)(a, (std::max)(b, c));
-        double q = -1.;  // no term
-        if(area > 0.)
+        const double inradius = 2. * area / (a + b + c);
+        return (std::min)(lmax / (2. * std::sqrt(3.) * inradius), 1e3);
+      },
+      [&](Index, double q) {
+        if(q >= 0.)
         {
-          const double inradius = 2. * area / (a + b + c);
-          q = (std::min)(lmax / (2. * std::sqrt(3.) * inradius), 1e3);
-        }
-        term[static_cast<std::size_t>(fl - firstl)] = q;
-      }
-      for(Index f = first; f < last; ++f)
-        if(term[f - first] >= 0.)
-        {
-          acc += term[f - first];
+          acc += q;
           ++n;
         }
-    }
+      });
     anisotropy = n > 0 ? (std::max)(1., acc / double(n)) : 1.;
   }
 };
