@@ -26,9 +26,9 @@
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
-#include <vtp_tools/methods.h>
-#include <vtp_tools/midpoint_subdivision.h>
-#include <vtp_tools/shortest_path_reference.h>
+#include <vtp_support/methods.h>
+#include <vtp_support/midpoint_subdivision.h>
+#include <vtp_support/shortest_path_reference.h>
 
 #ifdef CGAL_EIGEN3_ENABLED
 #define VTP_BENCHMARK_WITH_HEAT_METHOD 1
@@ -75,7 +75,7 @@ struct Usage_error : std::runtime_error
 
 // ================================================================================================
 // Methods. To add one, add an enumerator, a parser in `method_parsers` (or, for a method of the package, an
-// entry in vtp_tools/methods.h), and a case in `run_in_child()`.
+// entry in vtp_support/methods.h), and a case in `run_in_child()`.
 // ================================================================================================
 enum class Method_kind { VTP, PVTP, AVTP, PAVTP, CGAL_SMSP, HEAT_DIRECT, HEAT_IDT, EXTERNAL };
 
@@ -123,11 +123,11 @@ void expect_fields(const std::vector<std::string>& fields, std::size_t n, const 
 }
 
 // The VTP family (vtp, pvtp:T, avtp:lambda, pavtp:T:lambda) comes from the table of methods shared with the
-// command-line tools (vtp_tools/methods.h): the name, then ":T" for a parallel method and ":lambda" for an
+// command-line tools (vtp_support/methods.h): the name, then ":T" for a parallel method and ":lambda" for an
 // approximate one. Returns false if `fields[0]` is not one of them.
 bool parse_vtp_method(const std::vector<std::string>& fields, Method& m)
 {
-  const vtp_tools::Method_info* info = vtp_tools::find_method(fields[0]);
+  const vtp_support::Method_info* info = vtp_support::find_method(fields[0]);
   if(info == nullptr)
     return false;
   const std::string syntax = std::string(info->name) + (info->parallel ? ":T" : "") + (info->approximate ? ":lambda" : "");
@@ -139,7 +139,7 @@ bool parse_vtp_method(const std::vector<std::string>& fields, Method& m)
     m.threads = parse_int_field(m.label, fields[k++], 1);
   if(info->approximate)
     m.lambda = parse_positive_field(m.label, fields[k++]);
-  if(!vtp_tools::method_available(*info))
+  if(!vtp_support::method_available(*info))
     throw Usage_error("method " + std::string(info->name) + " is not available (vtp_benchmark was built without OpenMP)");
   return true;
 }
@@ -456,7 +456,7 @@ void run_cgal(const Mesh& mesh, Vertex_index source, int repeat, Child_header& h
   for(int r = 0; r < repeat; ++r)
   {
     const double t0 = now_seconds();
-    d = vtp_tools::shortest_path_reference_distances(mesh, source);
+    d = vtp_support::shortest_path_reference_distances(mesh, source);
     const double t = now_seconds() - t0;
     if(r == 0 || t < h.seconds)
       h.seconds = t;
@@ -921,7 +921,7 @@ std::string load_mesh(const std::string& file, const Arguments& args, Mesh& mesh
   }
   if(args.subdivide > 0)
   {
-    vtp_tools::midpoint_subdivide(mesh, args.subdivide);
+    vtp_support::midpoint_subdivide(mesh, args.subdivide);
     label += "/s" + std::to_string(args.subdivide);
   }
   if(mesh.has_garbage())
@@ -1095,8 +1095,8 @@ int run(int argc, char** argv)
           continue;
         if(vtp.ok && (r.method.kind != Method_kind::EXTERNAL || !r.distances.empty()))
         {
-          const vtp_tools::Distance_comparison c =
-            vtp_tools::compare_distances(r.distances, vtp.distances);
+          const vtp_support::Distance_comparison c =
+            vtp_support::compare_distances(r.distances, vtp.distances);
           r.max_abs_err = c.max_abs_diff;
           r.max_rel_err = c.max_rel_diff;
           r.mean_rel_err = c.mean_rel_diff;

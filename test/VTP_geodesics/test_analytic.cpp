@@ -5,7 +5,7 @@
 #include "vtp_test_meshes.h"
 #include "vtp_test_utils.h"
 
-#include <vtp_tools/midpoint_subdivision.h>
+#include <vtp_support/midpoint_subdivision.h>
 
 #include <gtest/gtest.h>
 
@@ -279,7 +279,7 @@ TEST(Analytic, subdivided_regular_tetrahedron)
   for(int levels = 1; levels <= 4; ++levels)
   {
     Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
-    vtp_tools::midpoint_subdivide(mesh, levels);
+    vtp_support::midpoint_subdivide(mesh, levels);
     ASSERT_EQ(num_faces(mesh), std::size_t(4) << (2 * levels));
     ASSERT_EQ(mesh.point(Vertex_index(0)), t[0]);
 

@@ -5,8 +5,8 @@
 #include "vtp_test_meshes.h"
 #include "vtp_test_utils.h"
 
-#include <vtp_tools/midpoint_subdivision.h>
-#include <vtp_tools/shortest_path_reference.h>
+#include <vtp_support/midpoint_subdivision.h>
+#include <vtp_support/shortest_path_reference.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -18,8 +18,8 @@
 #include <vector>
 
 using namespace vtp_test;
-using vtp_tools::midpoint_subdivide;
-using vtp_tools::shortest_path_reference_distances;
+using vtp_support::midpoint_subdivide;
+using vtp_support::shortest_path_reference_distances;
 
 namespace {
 

@@ -11,8 +11,8 @@
 #include "vtp_test_meshes.h"
 #include "vtp_test_utils.h"
 
-#include <vtp_tools/midpoint_subdivision.h>
-#include <vtp_tools/shortest_path_reference.h>
+#include <vtp_support/midpoint_subdivision.h>
+#include <vtp_support/shortest_path_reference.h>
 
 #include <CGAL/Surface_mesh_shortest_path.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -30,8 +30,8 @@
 using namespace vtp_test;
 using CGAL::VTP_geodesics::Geodesic_distance_solver;
 using CGAL::VTP_geodesics::Propagation_statistics;
-using vtp_tools::midpoint_subdivide;
-using vtp_tools::shortest_path_reference_distances;
+using vtp_support::midpoint_subdivide;
+using vtp_support::shortest_path_reference_distances;
 
 namespace {
 

@@ -9,7 +9,7 @@
 
 #include "vtp_test_utils.h"
 
-#include <vtp_tools/midpoint_subdivision.h>
+#include <vtp_support/midpoint_subdivision.h>
 
 #include <cmath>
 #include <string>
@@ -79,7 +79,7 @@ std::vector<double> run(Solver& solver, std::size_t source, const Variant& o,
 Surface_mesh fine_mesh(const char* name)
 {
   Surface_mesh mesh = load_mesh(name);
-  vtp_tools::midpoint_subdivide(mesh, 1);
+  vtp_support::midpoint_subdivide(mesh, 1);
   return mesh;
 }
 
@@ -241,7 +241,7 @@ TEST(Parallel_variants, pavtp_meets_the_avtp_invariants)
 TEST(Parallel_variants, pavtp_reaches_every_reachable_vertex)
 {
   Surface_mesh mesh = load_mesh("elephant.off");
-  vtp_tools::midpoint_subdivide(mesh, 2);
+  vtp_support::midpoint_subdivide(mesh, 2);
   Solver solver(mesh);
   Propagation_statistics vs;
   const std::vector<double> exact = run<CGAL::Sequential_tag>(solver, 0, Variant(), &vs);
