@@ -1,7 +1,7 @@
 # ctest tests of vtp_geodesics (included by CMakeLists.txt): each runs one command through
 # run_cli_test.cmake, which checks the exit code, stderr and the files written.
 
-set(VTP_GEODESICS_DEFAULT_MESH "${build_tree_default_mesh}")
+set(VTP_GEODESICS_DEFAULT_MESH "${VTP_GEODESICS_BUILD_TREE_DEFAULT_MESH}")
 
 # Command-line program: one successful run, and bad inputs that must fail with exit code 2
 # without creating any output file.
