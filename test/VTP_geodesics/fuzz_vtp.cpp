@@ -13,7 +13,7 @@
 //   the next bytes give the sizes, coordinates and diagonals; the last byte read gives the source.
 // Coordinates are quantized to exact binary fractions, so a triangle is either exactly degenerate or far
 // from it. (Triangles that are degenerate up to rounding, which decimal coordinates such as 0.05 give,
-// are covered by the tests Degenerate.nearly_collinear_* of test_robustness.cpp.)
+// are covered by the tests Degenerate.nearly_collinear_* of test_hard_meshes.cpp.)
 //
 // Checks (any failure prints the mesh and aborts, which libFuzzer reports with the input):
 // - no crash, no sanitizer report, no exception other than Invalid_input_error at construction;
