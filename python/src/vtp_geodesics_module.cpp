@@ -895,10 +895,12 @@ py::tuple read_mesh(const std::string& path, int threads)
     std::size_t j = 0;
     for(Face_index face : mesh.faces())
     {
-      int k = 0;
-      for(Vertex_index u : CGAL::vertices_around_face(mesh.halfedge(face), mesh))
-        if(k < 3)
-          f[3 * j + std::size_t(k++)] = index[static_cast<std::size_t>(u)];
+      // source(halfedge(f)) first: for a mesh read as is, the triangle of the file, so that Solver(V, F) builds
+      // the same mesh, halfedge for halfedge, as the tools do
+      const Halfedge_index h = mesh.halfedge(face);
+      const Vertex_index corners[3] = { mesh.source(h), mesh.target(h), mesh.target(mesh.next(h)) };
+      for(int k = 0; k < 3; ++k)
+        f[3 * j + std::size_t(k)] = index[static_cast<std::size_t>(corners[k])];
       ++j;
     }
   }
