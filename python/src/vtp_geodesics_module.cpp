@@ -273,7 +273,9 @@ public:
     std::string error;
     {
       py::gil_scoped_release release;
+      const auto t0 = std::chrono::steady_clock::now();
       error = build_mesh(v, n, f, m);
+      m_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       if(error.empty())
       {
         try
@@ -301,7 +303,9 @@ public:
   py::dict statistics() const
   {
     std::lock_guard<std::mutex> lock(m_mutex);
-    return statistics_dict(m_statistics, m_solver->preprocessing_seconds());
+    py::dict d = statistics_dict(m_statistics, m_solver->preprocessing_seconds());
+    d["mesh_build_seconds"] = m_build_seconds;
+    return d;
   }
 
   // One propagation. Returns (distances (n,), labels (n,) int64 or None, target distances (len(targets),)).
@@ -846,6 +850,7 @@ private:
   std::unique_ptr<Tree> m_tree;                                   // of locate(), built on first use
   VTP::Propagation_statistics m_statistics;                       // of the last computation
   int m_threads = 0;
+  double m_build_seconds = 0.;                                    // checking V, F and building the mesh
   mutable std::mutex m_mutex;
 };
 

@@ -215,8 +215,9 @@ class Solver:
         Keys: vertices, faces, sources, method, threads, windows_created, windows_propagated,
         peak_live_windows, peak_window_bytes, vertices_processed, pseudo_sources, resets, stopped_early,
         rounds, parallel_rounds, selection_seconds, propagation_seconds, merge_seconds, reached_vertices,
-        max_distance, seconds (the propagation, wall clock), output_seconds, and preprocessing_seconds (the
-        constructor's). After ``matrix()``, the sums over the rows (peaks are maxima).
+        max_distance, seconds (the propagation, wall clock), output_seconds, preprocessing_seconds (the
+        library's preprocessing in the constructor) and mesh_build_seconds (the constructor's checks of V and F
+        and building of the mesh). After ``matrix()``, the sums over the rows (peaks are maxima).
         """
         return self._core.statistics()
 
