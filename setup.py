@@ -18,18 +18,10 @@ ROOT = os.path.dirname(os.path.abspath(__file__))
 os.makedirs(os.path.join(ROOT, "build-pip"), exist_ok=True)  # setup.cfg: setuptools builds there, not in build/
 
 
-def support_include():
-    # the support layer's headers (readers, method table): support/include once moved there, else apps/common
-    for d in ("support/include", "apps/common/include"):
-        if os.path.isdir(os.path.join(ROOT, d)):
-            return d
-    raise RuntimeError("the support layer's headers are missing (support/include or apps/common/include)")
-
-
 extension = Pybind11Extension(
     "vtp_geodesics._core",
     ["python/src/vtp_geodesics_module.cpp"],
-    include_dirs=["include", support_include()],
+    include_dirs=["include", "support/include"],  # the library; the support layer (readers, method table)
     define_macros=[("NDEBUG", None), ("CGAL_USE_GMPXX", "1"), ("CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP", None)],
     extra_compile_args=["-O3", "-frounding-math", "-fopenmp"],
     extra_link_args=["-fopenmp"],

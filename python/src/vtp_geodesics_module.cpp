@@ -28,8 +28,8 @@
 // F[f, 1], F[f, 2]); the library's are with respect to source(halfedge(f)), target(halfedge(f)),
 // target(next(halfedge(f))): the conversion is done here both ways.
 
-#include <vtp_tools/methods.h>
-#include <vtp_tools/read_mesh.h>
+#include <vtp_support/methods.h>
+#include <vtp_support/read_mesh.h>
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
@@ -72,8 +72,8 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 
 namespace {
 
-typedef vtp_tools::Mesh Mesh;
-typedef vtp_tools::Point_3 Point_3;
+typedef vtp_support::Mesh Mesh;
+typedef vtp_support::Point_3 Point_3;
 typedef Mesh::Vertex_index Vertex_index;
 typedef Mesh::Face_index Face_index;
 typedef Mesh::Halfedge_index Halfedge_index;
@@ -106,7 +106,7 @@ int default_threads()
 // Runs `f(tag)` with the concurrency tag of `method`. The one place that turns a method of the support layer's
 // table into a call of the library: a new kind of method is one more branch here.
 template <class F>
-void with_method_tag(const vtp_tools::Method_info& method, F&& f)
+void with_method_tag(const vtp_support::Method_info& method, F&& f)
 {
   if(!method.parallel)
   {
@@ -120,12 +120,12 @@ void with_method_tag(const vtp_tools::Method_info& method, F&& f)
 #endif
 }
 
-const vtp_tools::Method_info& method_named(const std::string& name)
+const vtp_support::Method_info& method_named(const std::string& name)
 {
-  const vtp_tools::Method_info* m = vtp_tools::find_method(name);
+  const vtp_support::Method_info* m = vtp_support::find_method(name);
   if(m == nullptr)
-    value_error("unknown method '" + name + "' (expected " + vtp_tools::method_names() + ")");
-  if(!vtp_tools::method_available(*m))
+    value_error("unknown method '" + name + "' (expected " + vtp_support::method_names() + ")");
+  if(!vtp_support::method_available(*m))
     value_error("method '" + name + "' needs OpenMP, and this module was built without it");
   return *m;
 }
@@ -313,7 +313,7 @@ public:
                       double max_distance, const Index_array& targets, const std::string& method_name, double lam,
                       int threads, bool want_labels)
   {
-    const vtp_tools::Method_info& method = method_named(method_name);
+    const vtp_support::Method_info& method = method_named(method_name);
     check_threads(threads);
     check_limit(max_distance);
     if(method.approximate && !(lam > 0.))
@@ -452,7 +452,7 @@ public:
   double distance(std::int64_t a_vertex, std::int64_t a_face, const Double_array& a_bary, std::int64_t b_vertex,
                   std::int64_t b_face, const Double_array& b_bary, const std::string& method_name, double lam)
   {
-    const vtp_tools::Method_info& method = method_named(method_name);
+    const vtp_support::Method_info& method = method_named(method_name);
     if(method.approximate && !(lam > 0.))
       value_error("lam must be > 0, got " + std::to_string(lam));
     Vertex_index av, bv;
@@ -640,7 +640,7 @@ public:
 
 private:
   typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<vtp_tools::Kernel, Primitive> > Tree;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<vtp_support::Kernel, Primitive> > Tree;
 
   // Checks V and F and builds the mesh; returns the problem, or an empty string.
   std::string build_mesh(const double* v, std::size_t n, const std::int64_t* f, std::size_t m)
@@ -666,7 +666,7 @@ private:
           return s;
         }
     }
-    std::vector<vtp_tools::fast_off_detail::Triangle> triangles(m);
+    std::vector<vtp_support::fast_off_detail::Triangle> triangles(m);
     for(std::size_t j = 0; j < m; ++j)
     {
       for(int k = 0; k < 3; ++k)
@@ -679,7 +679,7 @@ private:
     for(std::size_t i = 0; i < n; ++i)
       m_mesh.add_vertex(Point_3(v[3 * i], v[3 * i + 1], v[3 * i + 2]));
     std::string reason;
-    if(!vtp_tools::fast_off_detail::build_triangle_mesh(triangles, m_mesh, reason, m_threads))
+    if(!vtp_support::fast_off_detail::build_triangle_mesh(triangles, m_mesh, reason, m_threads))
       return "the faces do not form a manifold, consistently oriented triangle mesh: " + reason
              + " (read_mesh() repairs such files)";
     if(m_mesh.number_of_faces() != m)
@@ -803,7 +803,7 @@ private:
   void run_rows(const std::vector<Vertex_index>& rows, double max_distance, const std::string& method_name,
                 double lam, int threads, bool progress, Write&& write)
   {
-    const vtp_tools::Method_info& method = method_named(method_name);
+    const vtp_support::Method_info& method = method_named(method_name);
     check_threads(threads);
     check_limit(max_distance);
     if(method.approximate && !(lam > 0.))
@@ -845,7 +845,7 @@ private:
   }
 
   Mesh m_mesh;
-  std::vector<vtp_tools::fast_off_detail::Triangle> m_triangles;  // F as given (for barycentric coordinates)
+  std::vector<vtp_support::fast_off_detail::Triangle> m_triangles;  // F as given (for barycentric coordinates)
   std::unique_ptr<Solver> m_solver;
   std::unique_ptr<Tree> m_tree;                                   // of locate(), built on first use
   VTP::Propagation_statistics m_statistics;                       // of the last computation
@@ -859,15 +859,15 @@ private:
 // ---------------------------------------------------------------------------------------------------------------
 py::tuple read_mesh(const std::string& path, int threads)
 {
-  vtp_tools::Input_mesh input;
+  vtp_support::Input_mesh input;
   std::string error;
   {
     py::gil_scoped_release release;
     try
     {
-      vtp_tools::read_input_mesh(path, input, threads);
+      vtp_support::read_input_mesh(path, input, threads);
     }
-    catch(const vtp_tools::Input_error& e)
+    catch(const vtp_support::Input_error& e)
     {
       error = e.what();
     }
@@ -998,14 +998,14 @@ py::tuple symmetric_min_csr(const py::array_t<double, py::array::c_style | py::a
 py::list method_table()
 {
   py::list l;
-  for(const vtp_tools::Method_info* m = vtp_tools::methods_begin(); m != vtp_tools::methods_end(); ++m)
+  for(const vtp_support::Method_info* m = vtp_support::methods_begin(); m != vtp_support::methods_end(); ++m)
   {
     py::dict d;
     d["name"] = m->name;
     d["parallel"] = m->parallel;
     d["approximate"] = m->approximate;
     d["description"] = m->description;
-    d["available"] = vtp_tools::method_available(*m);
+    d["available"] = vtp_support::method_available(*m);
     l.append(d);
   }
   return l;
