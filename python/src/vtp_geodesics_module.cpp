@@ -586,56 +586,59 @@ public:
     const std::vector<Vertex_index> rows = vertices_of(sources, "sources");
     const std::vector<std::size_t> cols = column_ids(columns, all_columns);
     const std::size_t nc = all_columns ? number_of_vertices() : cols.size();
-    std::vector<std::vector<std::uint32_t> > row_columns(rows.size());
-    std::vector<std::vector<double> > row_values(rows.size());
-    run_rows(rows, max_distance, method_name, lam, threads, progress,
-             [&](std::size_t i, const std::vector<double>& d) {
-               std::vector<std::uint32_t>& c = row_columns[i];
-               std::vector<double>& v = row_values[i];
-               for(std::size_t j = 0; j < nc; ++j)
-               {
-                 const double x = d[all_columns ? j : cols[j]];
-                 if(x <= max_distance)
-                 {
-                   c.push_back(static_cast<std::uint32_t>(j));
-                   v.push_back(x);
-                 }
-               }
-             });
-    std::size_t nnz = 0;
-    for(const auto& c : row_columns)
-      nnz += c.size();
-    const bool wide = nnz >= (std::size_t(1) << 31) || nc >= (std::size_t(1) << 31);
-    auto make = [&](auto index_type, auto value_type) {
-      typedef decltype(index_type) I;
+    // the entries of each row, kept in the output's type (float32 output: no float64 copy of the entries)
+    auto compute = [&](auto value_type) {
       typedef decltype(value_type) T;
-      py::array_t<T> data(static_cast<py::ssize_t>(nnz));
-      py::array_t<I> indices(static_cast<py::ssize_t>(nnz));
-      py::array_t<I> indptr(static_cast<py::ssize_t>(rows.size() + 1));
-      T* dp = data.mutable_data();
-      I* ip = indices.mutable_data();
-      I* pp = indptr.mutable_data();
-      {
-        py::gil_scoped_release release;
-        std::size_t k = 0;
-        pp[0] = 0;
-        for(std::size_t r = 0; r < rows.size(); ++r)
+      std::vector<std::vector<std::uint32_t> > row_columns(rows.size());
+      std::vector<std::vector<T> > row_values(rows.size());
+      run_rows(rows, max_distance, method_name, lam, threads, progress,
+               [&](std::size_t i, const std::vector<double>& d) {
+                 std::vector<std::uint32_t>& c = row_columns[i];
+                 std::vector<T>& v = row_values[i];
+                 for(std::size_t j = 0; j < nc; ++j)
+                 {
+                   const double x = d[all_columns ? j : cols[j]];
+                   if(x <= max_distance)
+                   {
+                     c.push_back(static_cast<std::uint32_t>(j));
+                     v.push_back(static_cast<T>(x));
+                   }
+                 }
+               });
+      std::size_t nnz = 0;
+      for(const auto& c : row_columns)
+        nnz += c.size();
+      auto assemble = [&](auto index_type) {
+        typedef decltype(index_type) I;
+        py::array_t<T> data(static_cast<py::ssize_t>(nnz));
+        py::array_t<I> indices(static_cast<py::ssize_t>(nnz));
+        py::array_t<I> indptr(static_cast<py::ssize_t>(rows.size() + 1));
+        T* dp = data.mutable_data();
+        I* ip = indices.mutable_data();
+        I* pp = indptr.mutable_data();
         {
-          for(std::size_t e = 0; e < row_columns[r].size(); ++e, ++k)
+          py::gil_scoped_release release;
+          std::size_t k = 0;
+          pp[0] = 0;
+          for(std::size_t r = 0; r < rows.size(); ++r)
           {
-            ip[k] = static_cast<I>(row_columns[r][e]);
-            dp[k] = static_cast<T>(row_values[r][e]);
+            std::copy(row_values[r].begin(), row_values[r].end(), dp + k);
+            for(std::size_t e = 0; e < row_columns[r].size(); ++e)
+              ip[k + e] = static_cast<I>(row_columns[r][e]);
+            k += row_columns[r].size();
+            std::vector<std::uint32_t>().swap(row_columns[r]);
+            std::vector<T>().swap(row_values[r]);
+            pp[r + 1] = static_cast<I>(k);
           }
-          std::vector<std::uint32_t>().swap(row_columns[r]);
-          std::vector<double>().swap(row_values[r]);
-          pp[r + 1] = static_cast<I>(k);
         }
-      }
-      return py::make_tuple(data, indices, indptr);
+        return py::make_tuple(data, indices, indptr);
+      };
+      // int32 indices when they fit (as scipy makes them), else int64
+      if(nnz >= (std::size_t(1) << 31) || nc >= (std::size_t(1) << 31))
+        return assemble(std::int64_t());
+      return assemble(std::int32_t());
     };
-    if(wide)
-      return single ? make(std::int64_t(), float()) : make(std::int64_t(), double());
-    return single ? make(std::int32_t(), float()) : make(std::int32_t(), double());
+    return single ? compute(float()) : compute(double());
   }
 
 private:
