@@ -84,6 +84,7 @@ def main():
     ap.add_argument("--rows0", type=int, default=2, help="matrix rows R0 of the baseline run")
     ap.add_argument("--method", default="vtp", choices=["vtp", "pvtp", "avtp", "pavtp"])
     ap.add_argument("--json", help="also write the results as JSON to this file")
+    ap.add_argument("--skip-matrix", action="store_true", help="only the one-source comparison")
     args = ap.parse_args()
 
     import vtp_geodesics
@@ -105,11 +106,16 @@ def main():
             out, wall, cpu = run_child([tool, mesh, "--source", ",".join(map(str, sources)), "--method", args.method,
                                         "--threads", str(args.threads), "--stats-json", "-"])
             st = json.loads(out)
+            # the same run with --max-distance 0 (no propagation): its processor time is that of reading and
+            # preprocessing, so the difference is the processor time of the propagation
+            _, _, cpu0 = run_child([tool, mesh, "--source", ",".join(map(str, sources)), "--method", args.method,
+                                    "--threads", str(args.threads), "--max-distance", "0", "--stats-json", "-"])
             tool_runs.append({"prep": st["preprocessing_seconds"], "prop": st["propagation_seconds"],
-                              "wall": wall, "cpu": cpu})
+                              "wall": wall, "cpu": cpu, "cpu_without_propagation": cpu0})
             solver, t_solver, c_solver = timed(lambda: vtp_geodesics.Solver(V, F, threads=args.threads))
             d, t_dist, c_dist = timed(lambda: solver.distances(sources, method=args.method, threads=args.threads))
             mod_runs.append({"solver": t_solver, "distances": t_dist, "cpu": c_solver + c_dist,
+                             "cpu_solver": c_solver, "cpu_distances": c_dist,
                              "prop": solver.statistics["seconds"],
                              "prep": solver.statistics["preprocessing_seconds"],
                              "build": solver.statistics["mesh_build_seconds"]})
@@ -135,6 +141,15 @@ def main():
               % (tprop, mprop, mprop / tprop))
         print("              cpu_seconds: tool process %.2f (with reading), module %.2f"
               % (r["one_source"]["tool_cpu_seconds_process"], r["one_source"]["module_cpu_seconds"]))
+        tool_prop_cpu = min(x["cpu"] - x["cpu_without_propagation"] for x in tool_runs)
+        mod_prop_cpu = min(x["cpu_distances"] for x in mod_runs)
+        r["one_source"]["tool_propagation_cpu_seconds"] = tool_prop_cpu
+        r["one_source"]["module_distances_cpu_seconds"] = mod_prop_cpu
+        print("              cpu_seconds of the propagation: tool %.3f (run - run with --max-distance 0), module "
+              "distances() %.3f: ratio %.3f" % (tool_prop_cpu, mod_prop_cpu, mod_prop_cpu / tool_prop_cpu))
+        if args.skip_matrix:
+            results.append(r)
+            continue
         # 2. matrix rows per second
         solver = vtp_geodesics.Solver(V, F, threads=args.threads)
         m_method = "avtp" if "avtp" in args.method else "vtp"
