@@ -688,7 +688,17 @@ private:
     if(m_mesh.number_of_faces() != m)
       return "internal error: the mesh has " + std::to_string(m_mesh.number_of_faces()) + " faces, F has "
              + std::to_string(m);
-    m_triangles = std::move(triangles);
+    // Each face's halfedge runs from its first corner in F to its second (build_triangle_mesh() makes it so):
+    // then the barycentric coordinates need no permutation and F need not be kept (3 x 4 bytes a face).
+    bool same_order = true;
+    for(std::size_t j = 0; j < m && same_order; ++j)
+    {
+      const Halfedge_index h = m_mesh.halfedge(Face_index(static_cast<Mesh::size_type>(j)));
+      same_order = static_cast<std::size_t>(m_mesh.source(h)) == triangles[j][0]
+                   && static_cast<std::size_t>(m_mesh.target(h)) == triangles[j][1];
+    }
+    if(!same_order)
+      m_triangles = std::move(triangles);
     return std::string();
   }
 
@@ -775,6 +785,8 @@ private:
   // Position in the face's row of F of each corner of the library's order.
   std::array<int, 3> corner_order(Face_index f) const
   {
+    if(m_triangles.empty())
+      return { { 0, 1, 2 } };
     const Halfedge_index h = m_mesh.halfedge(f);
     const Vertex_index lib[3] = { m_mesh.source(h), m_mesh.target(h), m_mesh.target(m_mesh.next(h)) };
     const auto& t = m_triangles[static_cast<std::size_t>(f)];
@@ -848,7 +860,8 @@ private:
   }
 
   Mesh m_mesh;
-  std::vector<vtp_support::fast_off_detail::Triangle> m_triangles;  // F as given (for barycentric coordinates)
+  // F as given, for barycentric coordinates; empty when each face's halfedge starts at its first corner in F
+  std::vector<vtp_support::fast_off_detail::Triangle> m_triangles;
   std::unique_ptr<Solver> m_solver;
   std::unique_ptr<Tree> m_tree;                                   // of locate(), built on first use
   VTP::Propagation_statistics m_statistics;                       // of the last computation
