@@ -227,3 +227,10 @@ def test_docstrings():
                 vtp_geodesics.Solver.path, vtp_geodesics.Solver.distance, vtp_geodesics.Solver.matrix,
                 vtp_geodesics.Solver.locate, vtp_geodesics.Solver.statistics]:
         assert obj.__doc__ and len(obj.__doc__) > 40
+
+
+def test_matrix_progress_on_stderr(elephant, capsys):
+    V, F, solver = elephant
+    M = solver.matrix([0, 1, 2], progress=True)
+    assert "3 / 3 rows" in capsys.readouterr().err
+    assert np.array_equal(M[2], solver.distances(2))
