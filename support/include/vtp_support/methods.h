@@ -1,0 +1,78 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the applications of the VTP_geodesics package (not installed with the library).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#ifndef VTP_SUPPORT_METHODS_H
+#define VTP_SUPPORT_METHODS_H
+
+// The table of the package's methods, shared by the command-line tools and the benchmark: each method
+// is one choice of scheduling (sequential or parallel) and of window resets (exact or approximate).
+
+#include <cstddef>
+#include <string>
+
+namespace vtp_support {
+
+struct Method_info
+{
+  const char* name;         // as typed on a command line: "vtp", "pvtp", "avtp", "pavtp"
+  bool parallel;            // CGAL::Parallel_tag scheduling (OpenMP threads)
+  bool approximate;         // window resets every lambda * h (AVTP / PAVTP)
+  const char* description;  // one line, for --help texts
+};
+
+inline const Method_info* methods_begin()
+{
+  static const Method_info table[] = {
+    { "vtp",   false, false, "exact, sequential" },
+    { "pvtp",  true,  false, "exact, parallel" },
+    { "avtp",  false, true,  "approximate, sequential" },
+    { "pavtp", true,  true,  "approximate, parallel" },
+  };
+  return table;
+}
+inline const Method_info* methods_end() { return methods_begin() + 4; }
+
+// The method called `name`, or nullptr.
+inline const Method_info* find_method(const std::string& name)
+{
+  for(const Method_info* m = methods_begin(); m != methods_end(); ++m)
+    if(name == m->name)
+      return m;
+  return nullptr;
+}
+
+// "vtp, pvtp, avtp or pavtp"
+inline std::string method_names(const char* last_separator = " or ")
+{
+  std::string s;
+  for(const Method_info* m = methods_begin(); m != methods_end(); ++m)
+  {
+    if(m != methods_begin())
+      s += (m + 1 == methods_end()) ? last_separator : ", ";
+    s += m->name;
+  }
+  return s;
+}
+
+// Whether the parallel methods can run: this translation unit is compiled with OpenMP (the program
+// links CGAL::VTP_geodesics_OpenMP_support).
+inline bool parallel_methods_available()
+{
+#ifdef _OPENMP
+  return true;
+#else
+  return false;
+#endif
+}
+
+inline bool method_available(const Method_info& m) { return !m.parallel || parallel_methods_available(); }
+
+} // namespace vtp_support
+
+#endif // VTP_SUPPORT_METHODS_H
