@@ -509,3 +509,55 @@ TEST(Bad_input, error_type_and_message)
     EXPECT_FALSE(std::string(e.what()).empty());
   }
 }
+
+// The message of the exception thrown by f (empty if none).
+template <class F>
+std::string message_of(F f)
+{
+  try
+  {
+    f();
+  }
+  catch(const Invalid_input_error& e)
+  {
+    return e.what();
+  }
+  return std::string();
+}
+
+// The messages name what is wrong: the vertex (in the order of vertices(tm)), the face, the source or target
+// (its position in the user's list).
+#define EXPECT_MESSAGE(call, part)                                                   \
+  do                                                                                 \
+  {                                                                                  \
+    const std::string message = message_of(call);                                    \
+    EXPECT_NE(message.find(part), std::string::npos) << "message: " << message;      \
+  } while(0)
+
+TEST(Bad_input, messages_name_the_vertex_face_source_or_target)
+{
+  namespace VP = CGAL::VTP_geodesics::parameters;
+  Polygon_soup soup = planar_grid(3, 3, 1., 1.);
+  soup.points[grid_vertex(3, 1, 2)] = Point_3(0.3, std::numeric_limits<double>::quiet_NaN(), 0.);
+  const Surface_mesh nan_mesh = to_mesh<Surface_mesh>(soup);
+  const std::string nan_vertex = "vertex " + std::to_string(grid_vertex(3, 1, 2)) + " has a non-finite coordinate";
+  for(int threads : { 1, 2 })
+    EXPECT_MESSAGE(([&] { Geodesic_distance_solver<Surface_mesh> s(nan_mesh, VP::number_of_threads(threads)); }),
+                   nan_vertex);
+
+  const Surface_mesh quads = to_mesh<Surface_mesh>(quad_grid(2));
+  EXPECT_MESSAGE(([&] { Geodesic_distance_solver<Surface_mesh> s(quads); }), "face 0 is not a triangle");
+
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(regular_tetrahedron());
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  std::vector<double> d(num_vertices(mesh));
+  auto map = boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh));
+  const Vertex_index outside(static_cast<Surface_mesh::size_type>(num_vertices(mesh) + 10));
+  const std::vector<Vertex_index> sources = { Vertex_index(0), Vertex_index(1), outside };
+  EXPECT_MESSAGE(([&] { solver.compute(map, sources); }), "source 2 is not a vertex");
+  const std::vector<Vertex_index> targets = { Vertex_index(1), outside };
+  EXPECT_MESSAGE(([&] { solver.compute(map, Vertex_index(0), VP::targets(targets)); }), "target 1 is not a vertex");
+  const auto bad_location = std::make_pair(*faces(mesh).begin(), std::array<double, 3>{ { 0.5, 0.9, 0. } });
+  EXPECT_MESSAGE(([&] { solver.compute(map, bad_location); }), "source 0 (in face 0)");
+  EXPECT_MESSAGE(([&] { solver.compute(map, Vertex_index(0), VP::number_of_threads(-3)); }), "got -3");
+}

@@ -107,9 +107,11 @@ public:
   /// \name Creation
   /// @{
 
-  /// builds the per-mesh data of `tm`, with the vertex point map `get(CGAL::vertex_point, tm)`.
-  /// \throws Invalid_input_error if `tm` is not a triangle mesh, an edge length is not finite, or `tm` has
-  /// more than 2^31 - 1 vertices or (2^31 - 1) / 3 faces.
+  /// builds the per-mesh data of `tm`, with the vertex point map `get(CGAL::vertex_point, tm)`, on one thread.
+  /// \pre `tm` outlives the solver and is not modified while the solver is in use.
+  /// \throws Invalid_input_error if `tm` is not a triangle mesh ("face N is not a triangle"), a vertex has a
+  /// non-finite coordinate ("vertex N"), an edge length overflows, or `tm` has more than 2^31 - 1 vertices
+  /// or (2^31 - 1) / 3 faces (vertices and faces numbered in the order of `vertices(tm)` and `faces(tm)`).
   explicit Geodesic_distance_solver(const TriangleMesh& tm)
     : Geodesic_distance_solver(tm, get(CGAL::vertex_point, tm))
   {}
@@ -124,7 +126,8 @@ public:
 
   /// builds the per-mesh data of `tm` with the named parameters `np`: `vertex_point_map` (of type
   /// `Vertex_point_map`), `geom_traits` (of type `Geom_traits`) and `number_of_threads`, the number of
-  /// OpenMP threads of the preprocessing (default 1; 0: OpenMP's default; without OpenMP, 1). The
+  /// OpenMP threads of the preprocessing (default 1, unlike `compute()` whose default is 0; 0: OpenMP's
+  /// default; without OpenMP, 1). The
   /// result does not depend on the number of threads. With more than one thread, the graph functions of
   /// `tm`, the vertex point map and the traits are called from several threads at once (they only read).
   /// \throws Invalid_input_error as the constructor above.
@@ -136,7 +139,8 @@ public:
         CGAL::parameters::get_parameter(np, CGAL::internal_np::geom_traits))),
       m_mesh(tm)
   {
-    build(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::number_of_threads), 1));
+    build(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::number_of_threads),
+                                             internal::default_preprocessing_threads));
   }
   /// @}
 
@@ -144,12 +148,13 @@ public:
   /// @{
 
   /// adds the vertex `v` to the source set.
-  /// \throws Invalid_input_error if `v` is not a vertex of the mesh.
+  /// \throws Invalid_input_error if `v` is not a vertex of the mesh ("source N is not a vertex of the mesh",
+  /// N being the number of sources added before).
   void add_source(vertex_descriptor v) { m_sources.push_back(m_mesh.seed_of(v, static_cast<Index>(m_sources.size()))); }
 
   /// adds the point `location` of the surface to the source set (any number type convertible to `double`).
   /// \throws Invalid_input_error if the face is not a face of the mesh or the barycentric coordinates are not
-  /// finite, non-negative and of sum 1 (up to rounding).
+  /// finite, non-negative and of sum 1 (up to rounding); the message names the source and the face.
   template <class FT>
   void add_source(const std::pair<face_descriptor, std::array<FT, 3> >& location)
   {
@@ -157,6 +162,7 @@ public:
   }
 
   /// adds every vertex or face location of `range` to the source set, in order.
+  /// \throws Invalid_input_error as `add_source()`; the sources before the bad one are added.
   template <class Range>
   void add_sources(const Range& range)
   {
@@ -184,8 +190,10 @@ public:
   ///   value type.
   /// \param vdm the output distance map
   /// \param np the named parameters of `compute_geodesic_distances()` (but `vertex_point_map` and
-  ///   `geom_traits`, given at construction)
-  /// \throws Invalid_input_error if the source set is empty or a parameter is invalid.
+  ///   `geom_traits`, given at construction), with the same types, defaults and meanings
+  /// \pre the mesh was not modified since the construction.
+  /// \throws Invalid_input_error if the source set is empty, a target is not a vertex or a point of the mesh
+  /// ("target N ..."), or a parameter is invalid.
   template <class ConcurrencyTag = CGAL::Sequential_tag, class VertexDistanceMap,
             class NP_T = bool, class NP_Tag = CGAL::internal_np::all_default_t,
             class NP_Base = CGAL::internal_np::No_property>
@@ -199,8 +207,8 @@ public:
   /// computes the geodesic distance from `sources` to every vertex of the mesh and writes it into `vdm`, as
   /// above; `sources` is a `vertex_descriptor`, a face location, or a range of either. The source set is
   /// not used (nor changed).
-  /// \throws Invalid_input_error if a source is not a vertex or a point of the mesh, the range is empty, or
-  /// a parameter is invalid.
+  /// \throws Invalid_input_error if a source is not a vertex or a point of the mesh ("source N ...", N its
+  /// position in `sources`), the range is empty, a target is invalid, or a parameter is invalid.
 #ifdef DOXYGEN_RUNNING
   template <class ConcurrencyTag = CGAL::Sequential_tag, class VertexDistanceMap, class SourceOrRange,
             class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -241,7 +249,8 @@ public:
   /// \param sink receives the rows, one call per source.
   /// \param np the named parameters `lambda`, `lambda_g`, `minimum_window_length`, `maximum_distance` (beyond it,
   ///   `+infinity`: rows become sparse) and `number_of_threads` of `compute_geodesic_distances()`.
-  /// \throws Invalid_input_error if a source is not a vertex or a point of the mesh, or a parameter is invalid.
+  /// \throws Invalid_input_error if a source is not a vertex or a point of the mesh ("source N ...", N its
+  /// position in `sources`), or a parameter is invalid; before any row is computed.
   template <class ConcurrencyTag = CGAL::Sequential_tag, class SourceRange, class RowSink,
             class NP_T = bool, class NP_Tag = CGAL::internal_np::all_default_t,
             class NP_Base = CGAL::internal_np::No_property>
@@ -254,7 +263,7 @@ public:
     std::vector<internal::Seed> seeds;
     seeds.reserve(items.size());
     for(const Source& item : items)
-      seeds.push_back(m_mesh.seed_of(item, 0));  // validated here, serially
+      seeds.push_back(m_mesh.seed_of(item, static_cast<Index>(seeds.size())));  // validated here, serially
     int threads = 0;
     internal::Propagation_settings settings = settings_of(np, threads);
     settings.want_labels = false;
@@ -270,11 +279,13 @@ public:
   /// the distances, indexed by `vertex_id()`.
   const std::vector<double>& distances() const { return m_engine.distances(); }
   /// the distance of `v`.
+  /// \pre `v` is a vertex of the mesh.
   double distance(vertex_descriptor v) const { return m_engine.distances()[vertex_id(v)]; }
   /// the number of targets (named parameter `targets`).
   std::size_t number_of_targets() const { return m_engine.number_of_targets(); }
   /// the distance of target `i` (in the order given): exact, or `+infinity` if it is unreachable or
   /// beyond the distance limit.
+  /// \pre `i < number_of_targets()`.
   double target_distance(std::size_t i) const
   {
     CGAL_precondition(i < number_of_targets());
@@ -293,8 +304,10 @@ public:
   /// change). The path is straight in the unfolding of the faces it crosses, turns only at saddle or
   /// boundary vertices (and, for the approximate variants, at vertices where windows were reset), and its
   /// length is the computed distance (up to rounding).
+  /// \pre the mesh was not modified since the construction.
   /// \throws Invalid_input_error if there was no computation yet, if the point is not a vertex or a point
-  /// of the mesh, or if no source reaches it (or it lies beyond the distance limit).
+  /// of the mesh, or if no source reaches it (or it lies beyond the distance limit): "no path: vertex N is
+  /// not reached ...".
   /// \throws std::runtime_error if the path cannot be followed through the faces (a numerical failure, which
   /// the tests have not met on meshes without faces of zero area); no partial path is written then.
   /// @{
@@ -306,7 +319,7 @@ public:
   template <class VertexOrLocation, class OutputIterator>
   OutputIterator shortest_path_points(const VertexOrLocation& p, OutputIterator out)
   {
-    for(const internal::Trace_point& q : m_paths.trace(m_mesh.arrays, m_engine, m_mesh.target_of(p)))
+    for(const internal::Trace_point& q : m_paths.trace(m_mesh.arrays, m_engine, m_mesh.target_of(p, "the start of the path")))
       *out++ = internal::point_of<Point_3>(m_mesh, m_vpm, q);
     return out;
   }
@@ -317,7 +330,7 @@ public:
   template <class VertexOrLocation, class OutputIterator>
   OutputIterator shortest_path_locations(const VertexOrLocation& p, OutputIterator out)
   {
-    for(const internal::Trace_point& q : m_paths.trace(m_mesh.arrays, m_engine, m_mesh.target_of(p)))
+    for(const internal::Trace_point& q : m_paths.trace(m_mesh.arrays, m_engine, m_mesh.target_of(p, "the start of the path")))
       *out++ = internal::location_of(m_mesh, q);
     return out;
   }
@@ -326,7 +339,9 @@ public:
   /// \name Mesh
   /// @{
 
-  /// the dense index of `v` (vertices are numbered in the order of `vertices(tm)`).
+  /// the dense index of `v` (vertices are numbered in the order of `vertices(tm)`; error messages name
+  /// vertices by this index).
+  /// \pre `v` is a vertex of the mesh.
   std::size_t vertex_id(vertex_descriptor v) const { return static_cast<std::size_t>(get(m_mesh.vertex_id, v)); }
   /// the vertices, in the order of their dense indices.
   const std::vector<vertex_descriptor>& vertex_list() const { return m_mesh.vertices; }

@@ -23,8 +23,6 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
-#include <type_traits>
-
 namespace CGAL {
 namespace VTP_geodesics {
 
@@ -78,7 +76,10 @@ namespace VTP_geodesics {
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads}
 ///     \cgalParamDescription{the number of threads of the parallel scheduling and of the per-mesh
-///       preprocessing; ignored with `CGAL::Sequential_tag`}
+///       preprocessing; ignored with `CGAL::Sequential_tag` (one thread). `0` means OpenMP's default
+///       (`omp_get_max_threads()`: `OMP_NUM_THREADS`, else the number of processors). The constructor of
+///       `Geodesic_distance_solver` takes this parameter too, for its preprocessing alone, with the
+///       default `1` there}
 ///     \cgalParamType{`int`, `>= 0`}
 ///     \cgalParamDefault{`0`: OpenMP's default}
 ///   \cgalParamNEnd
@@ -101,10 +102,48 @@ namespace VTP_geodesics {
 ///     \cgalParamType{`Propagation_statistics&`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_distance}
+///     \cgalParamDescription{a distance limit `R`: every vertex whose computed distance is `<= R` (`R`
+///       included) gets it, exactly as without a limit; every other vertex gets `+infinity` (and `no_source`
+///       in `nearest_source_map`), as if unreachable. The propagation stops once no distance `<= R` can
+///       change, so its work is that of the region within `R`. A vertex at exactly `R` is inside; one whose
+///       true distance is `R` may be computed one rounding error above or below it}
+///     \cgalParamType{`double`, `>= 0` (`+infinity`: no limit)}
+///     \cgalParamDefault{`+infinity`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{targets}
+///     \cgalParamDescription{points whose distance is wanted: with `stop_at_targets` (the default) the
+///       propagation stops as soon as the distance of every target is final. Their distances are read
+///       with `Geodesic_distance_solver::target_distance()` (exact, or `+infinity` if unreachable or beyond
+///       `maximum_distance`); with the free function, use a solver. After a run stopped at its targets,
+///       each other vertex has its exact distance if it was already final at the stop (every vertex
+///       nearer to the sources than the farthest target is), else `+infinity` (and `no_source`)}
+///     \cgalParamType{a `vertex_descriptor`, a face location (`std::pair<face_descriptor, std::array<FT, 3> >`),
+///       or a range of either}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{stop_at_targets}
+///     \cgalParamDescription{whether the propagation stops once the targets are final (`false`: it runs to
+///       the end, or to `maximum_distance`, and every vertex gets its distance)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{record_paths}
+///     \cgalParamDescription{whether the computation keeps what the geodesic paths of
+///       `Geodesic_distance_solver::shortest_path_points()` need, for every vertex and target (O(V + targets)
+///       memory, never the windows); without it a path request runs the propagation again}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws Invalid_input_error on invalid input: not a triangle mesh, a source that is not a vertex or a
-/// point of `tm`, an empty range of sources, an invalid parameter.
+/// \pre `tm` is not modified during the call.
+///
+/// \throws Invalid_input_error on invalid input, with a message that names what is wrong: not a triangle
+/// mesh (face `N` is not a triangle), a non-finite coordinate (of vertex `N`), source `N` (its position in
+/// `sources`) or target `N` that is not a vertex or a point of `tm`, an empty range of sources, an invalid
+/// parameter (with its value). Vertices and faces are numbered in the order of `vertices(tm)` and
+/// `faces(tm)`.
 template <class ConcurrencyTag = CGAL::Sequential_tag,
           class TriangleMesh,
           class VertexDistanceMap,
@@ -129,8 +168,9 @@ void compute_geodesic_distances(const TriangleMesh& tm,
   GT gt = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
 
   // with Parallel_tag, the preprocessing uses the threads of the propagation
-  const int threads = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value
-                        ? choose_parameter(get_parameter(np, internal_np::number_of_threads), 0)
+  const int threads = internal::is_parallel<ConcurrencyTag>()
+                        ? choose_parameter(get_parameter(np, internal_np::number_of_threads),
+                                           internal::default_number_of_threads)
                         : 1;
   Geodesic_distance_solver<TriangleMesh, GT, VPM> solver(
     tm, parameters::vertex_point_map(vpm).geom_traits(gt).number_of_threads(threads));

@@ -15,6 +15,7 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/Window.h>
 
 #include <cmath>
 
@@ -55,9 +56,7 @@ struct Face_frame
   {
     double ux, uy;
     direction(k, ux, uy);
-    const double rx = px - x[k], ry = py - y[k];
-    qx = rx * ux + ry * uy;
-    qy = ux * ry - uy * rx;
+    rotate_into(px - x[k], py - y[k], ux, uy, qx, qy);
   }
 
   // the point (qx, qy) of the frame of edge k in the face frame

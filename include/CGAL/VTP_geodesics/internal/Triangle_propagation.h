@@ -52,19 +52,16 @@ inline void emit_child(const Window& w, double p0, double p1,
                        double ox, double oy, double ux, double uy, double lc, double c_pos,
                        double min_length, std::vector<Window>& out)
 {
-  const double rx = w.sx - ox, ry = w.sy - oy;
   Window c;
-  c.sx = rx * ux + ry * uy;
-  c.sy = ux * ry - uy * rx;
+  rotate_into(w.sx - ox, w.sy - oy, ux, uy, c.sx, c.sy);
   c.sigma = w.sigma;
   c.origin = w.origin;
   if(!(c.sy < 0.))
     return; // source on the line of the edge (degenerate face): nothing crosses
   // intersection of the ray from the source through (p, 0) with the line of the child edge
-  const double ax0 = p0 - ox, ay0 = -oy;
-  const double px0 = ax0 * ux + ay0 * uy, py0 = ux * ay0 - uy * ax0;
-  const double ax1 = p1 - ox, ay1 = -oy;
-  const double px1 = ax1 * ux + ay1 * uy, py1 = ux * ay1 - uy * ax1;
+  double px0, py0, px1, py1;
+  rotate_into(p0 - ox, -oy, ux, uy, px0, py0);
+  rotate_into(p1 - ox, -oy, ux, uy, px1, py1);
   double x0 = ray_crossing(c.sx, c.sy, px0, py0, c_pos);
   double x1 = ray_crossing(c.sx, c.sy, px1, py1, c_pos);
   if(x0 > x1) std::swap(x0, x1);
@@ -177,10 +174,8 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
 inline void emit_whole_edge(double t, double sigma, Index origin, double ox, double oy, double ux, double uy,
                             double lc, std::vector<Window>& out)
 {
-  const double rx = t - ox, ry = -oy;
   Window c;
-  c.sx = rx * ux + ry * uy;
-  c.sy = ux * ry - uy * rx;
+  rotate_into(t - ox, -oy, ux, uy, c.sx, c.sy);
   c.sigma = sigma;
   c.origin = origin;
   c.b0 = 0.;

@@ -42,6 +42,15 @@ struct Window
   Index origin;
 };
 
+// The change of frame, written once: the vector (rx, ry) in the frame of an edge of unit direction (ux, uy)
+// (both given in the same frame): (qx, qy) = (r . u, u x r). The children of a window (their source image
+// and the ends of their rays), the points of faces and the walk of the trace-back all use it.
+inline void rotate_into(double rx, double ry, double ux, double uy, double& qx, double& qy)
+{
+  qx = rx * ux + ry * uy;
+  qy = ux * ry - uy * rx;
+}
+
 // The abscissa where the ray from the image (sx, sy), sy <= 0, to the point (px, py) crosses the x-axis,
 // or `fallback` when the point is not above the image (py <= sy: the ray does not cross properly).
 inline double ray_crossing(double sx, double sy, double px, double py, double fallback)

@@ -237,8 +237,8 @@ private:
         return false;
       const double ux = wx / w, uy = wy / w;
       // the image in the frame of e
-      const double rx = sx - p0x, ry = sy - p0y;
-      const double ex = rx * ux + ry * uy, ey = ux * ry - uy * rx;
+      double ex, ey;
+      rotate_into(sx - p0x, sy - p0y, ux, uy, ex, ey);
       h = e;
       x = (std::min)((std::max)(position * (m.geometry[e].length / w), 0.), m.geometry[e].length);
       sx = ex;

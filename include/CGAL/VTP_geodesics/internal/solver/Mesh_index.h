@@ -90,10 +90,27 @@ public:
     return valid ? id : NO_INDEX;
   }
 
-  Seed seed_of(vertex_descriptor v, Index label) const
+  // What the error messages call a source or target: `role` and its position in the user's list (none
+  // for no_position).
+  static constexpr std::size_t no_position = static_cast<std::size_t>(-1);
+  static std::string name_of(const char* role, std::size_t position)
+  {
+    return position == no_position ? std::string(role) : std::string(role) + " " + std::to_string(position);
+  }
+
+  // The seed of source number `label` (its position in the user's list).
+  Seed seed_of(vertex_descriptor v, Index label) const { return seed_of(v, label, "source", std::size_t(label)); }
+
+  template <class FT>
+  Seed seed_of(const std::pair<face_descriptor, std::array<FT, 3> >& location, Index label) const
+  {
+    return seed_of(location, label, "source", std::size_t(label));
+  }
+
+  Seed seed_of(vertex_descriptor v, Index label, const char* role, std::size_t position) const
   {
     if(!is_vertex(v))
-      throw Invalid_input_error("a source is not a vertex of the mesh");
+      throw Invalid_input_error(name_of(role, position) + " is not a vertex of the mesh");
     Seed s;
     s.kind = Seed::AT_VERTEX;
     s.element = get(vertex_id, v);
@@ -102,11 +119,12 @@ public:
   }
 
   template <class FT>
-  Seed seed_of(const std::pair<face_descriptor, std::array<FT, 3> >& location, Index label) const
+  Seed seed_of(const std::pair<face_descriptor, std::array<FT, 3> >& location, Index label, const char* role,
+               std::size_t position) const
   {
     const Index id = face_index(location.first);
     if(id == NO_INDEX)
-      throw Invalid_input_error("a face location is not in a face of the mesh");
+      throw Invalid_input_error(name_of(role, position) + " (a face location) is not in a face of the mesh");
     double b[3];
     double sum = 0.;
     for(int k = 0; k < 3; ++k)
@@ -118,8 +136,8 @@ public:
     const double tolerance = 1e-9;
     if(!std::isfinite(sum) || !(std::abs(sum - 1.) <= tolerance) || !(b[0] >= -tolerance) || !(b[1] >= -tolerance)
        || !(b[2] >= -tolerance))
-      throw Invalid_input_error("the barycentric coordinates of a face location must be finite, non-negative "
-                                "and of sum 1");
+      throw Invalid_input_error("the barycentric coordinates of " + name_of(role, position) + " (in face "
+                                + std::to_string(id) + ") must be finite, non-negative and of sum 1");
     sum = 0.;
     for(int k = 0; k < 3; ++k)
     {
@@ -129,18 +147,20 @@ public:
     return seed_from_barycentric(arrays, id, b[0] / sum, b[1] / sum, b[2] / sum, label);
   }
 
-  // the target of a vertex or a face location (validated as sources are)
-  Target target_of(vertex_descriptor v) const
+  // the target of a vertex or a face location (validated as sources are; `role` and `position` name it in
+  // the error messages)
+  Target target_of(vertex_descriptor v, const char* role = "target", std::size_t position = no_position) const
   {
     Target t;
-    t.vertex = seed_of(v, 0).element;
+    t.vertex = seed_of(v, 0, role, position).element;
     return t;
   }
 
   template <class FT>
-  Target target_of(const std::pair<face_descriptor, std::array<FT, 3> >& location) const
+  Target target_of(const std::pair<face_descriptor, std::array<FT, 3> >& location, const char* role = "target",
+                   std::size_t position = no_position) const
   {
-    const Seed s = seed_of(location, 0); // validates
+    const Seed s = seed_of(location, 0, role, position); // validates
     if(s.kind == Seed::AT_VERTEX)
     {
       Target t;
@@ -180,13 +200,13 @@ public:
   {
     std::vector<Target> r;
     if constexpr(is_one<TargetOrRange>())
-      r.push_back(target_of(targets));
+      r.push_back(target_of(targets, "target", 0));
     else
     {
       static_assert(Is_range<TargetOrRange>::value,
                     "a target must be a vertex_descriptor, a face location, or a range of either");
       for(const auto& t : targets)
-        r.push_back(target_of(t));
+        r.push_back(target_of(t, "target", r.size()));
     }
     return r;
   }

@@ -28,6 +28,7 @@
 #include <limits>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -82,8 +83,9 @@ public:
       from = m_engine.get();
       index = 0;
       if(!is_reached(*from, target, index))
-        throw Invalid_input_error("no path: the point is not reached by any source (or lies beyond the distance "
-                                  "limit)");
+        throw Invalid_input_error("no path: " + (target.vertex != NO_INDEX ? "vertex " + std::to_string(target.vertex)
+                                                                          : std::string("the point"))
+                                  + " is not reached by any source (or lies beyond the distance limit)");
     }
     std::vector<Trace_point> points;
     const Path_trace tracer(arrays, from->path_record(), from->seeds());

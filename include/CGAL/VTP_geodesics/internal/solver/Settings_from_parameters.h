@@ -35,6 +35,7 @@ namespace internal {
 constexpr double default_lambda_g = 1.;
 constexpr double default_minimum_window_length = 1e-9;
 constexpr int default_number_of_threads = 0;  // OpenMP's default, see number_of_threads()
+constexpr int default_preprocessing_threads = 1;  // of the constructor of the solver
 
 // The settings of a propagation from the named parameters `np` (validated), on a mesh of mean edge
 // length `mean_edge_length` in the engine's unit, `length_scale` (the engine's unit in the unit of the
@@ -59,7 +60,7 @@ Propagation_settings settings_from_parameters(const NamedParameters& np, double 
   if(!(lambda_g >= 0.) || std::isinf(lambda_g))
     throw Invalid_input_error("lambda_g must be finite and >= 0, got " + std::to_string(lambda_g));
   if(threads < 0)
-    throw Invalid_input_error("the number of threads must be >= 0");
+    throw Invalid_input_error("the number of threads must be >= 0, got " + std::to_string(threads));
   if(!(min_length >= 0.) || !(min_length < 1.))
     throw Invalid_input_error("minimum_window_length must be in [0, 1)");
   if(!(limit >= 0.))
