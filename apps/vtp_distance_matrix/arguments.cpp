@@ -34,7 +34,8 @@ void print_usage(std::ostream& os)
         "                      (data, indices int64, indptr int64, attribute shape), the arrays of\n"
         "                      scipy.sparse.csr_matrix((data, indices, indptr), shape); entries\n"
         "                      beyond R and unreachable vertices are absent\n"
-        "  --method vtp|avtp   exact VTP (default) or approximate AVTP\n"
+        "  --method vtp|avtp|vsp  exact VTP (default), approximate AVTP, or virtual source\n"
+        "                      propagation (approximate, an upper bound, fastest)\n"
         "  --lambda L          reset period of avtp, in mean edge lengths (default 8)\n"
         "  --threads T         rows computed at once on T threads (default: OpenMP's default)\n"
         "  --resume            continue an interrupted run with the same arguments: only the missing\n"
@@ -136,9 +137,10 @@ Arguments parse_arguments(int argc, char** argv)
       else if(name == "--method")
       {
         const std::string m = next_value();
-        if(m == "vtp") a.approximate = false;
-        else if(m == "avtp") a.approximate = true;
-        else throw Tool_error("unknown method '" + m + "' (expected vtp or avtp)");
+        a.approximate = m == "avtp";
+        a.virtual_sources = m == "vsp";
+        if(m != "vtp" && m != "avtp" && m != "vsp")
+          throw Tool_error("unknown method '" + m + "' (expected vtp, avtp or vsp)");
       }
       else if(name == "--lambda")
       {

@@ -85,6 +85,7 @@ struct Method
   Method_kind kind = Method_kind::VTP;
   int threads = 1;
   double lambda = inf;      // approximate variants
+  bool virtual_sources = false;  // vsp, pvsp:T (one virtual source per vertex)
   std::string command;      // EXTERNAL: shell command with {mesh}, {source}, {output}
 };
 
@@ -134,6 +135,7 @@ bool parse_vtp_method(const std::vector<std::string>& fields, Method& m)
   expect_fields(fields, 1 + (info->parallel ? 1 : 0) + (info->approximate ? 1 : 0), syntax.c_str());
   m.kind = info->parallel ? (info->approximate ? Method_kind::PAVTP : Method_kind::PVTP)
                           : (info->approximate ? Method_kind::AVTP : Method_kind::VTP);
+  m.virtual_sources = info->virtual_sources;
   std::size_t k = 1;
   if(info->parallel)
     m.threads = parse_int_field(m.label, fields[k++], 1);
@@ -415,7 +417,8 @@ void run_vtp(const Mesh& mesh, Vertex_index source, const Method& method, int re
   Solver solver(mesh);
   h.preprocessing_seconds = solver.preprocessing_seconds();
   h.pseudo_source_vertices = solver.number_of_pseudo_source_vertices();
-  const auto options = CGAL::VTP_geodesics::parameters::lambda(method.lambda).number_of_threads(method.threads);
+  const auto options = CGAL::VTP_geodesics::parameters::lambda(method.lambda).number_of_threads(method.threads)
+                         .virtual_sources(method.virtual_sources);
   // the distances are read from the solver: nothing to write through a map
   for(int r = 0; r < repeat; ++r)
   {
@@ -571,6 +574,7 @@ struct Run_result
   double max_abs_err = nan_value, max_rel_err = nan_value, mean_rel_err = nan_value, speedup_vs_cgal = nan_value;
   double mean_pointwise_rel_err = nan_value, max_pointwise_rel_err = nan_value, speedup_vs_vtp = nan_value;
   double cpu_ratio_vs_vtp = nan_value;  // processor time of VTP / processor time of this method
+  double max_below_vtp = nan_value;     // largest (vtp - d) / largest vtp distance (> 0: below the exact one)
   std::size_t mismatched_infinities = 0;
 };
 
@@ -826,7 +830,7 @@ const char* const csv_columns =
   "mesh,vertices,faces,source,method,threads,seconds,preprocessing_seconds,peak_rss_mb,windows_created,"
   "windows_propagated,peak_window_bytes,max_abs_err_vs_vtp,max_rel_err_vs_vtp,mean_rel_err_vs_vtp,speedup_vs_cgal,"
   "total_seconds,rss_at_start_mb,mean_pointwise_rel_err_vs_vtp,max_pointwise_rel_err_vs_vtp,speedup_vs_vtp,"
-  "peak_live_windows,ns_per_window,pseudo_source_share,cpu_seconds,cpu_ratio_vs_vtp,status";
+  "peak_live_windows,ns_per_window,pseudo_source_share,cpu_seconds,cpu_ratio_vs_vtp,status,max_below_vtp";
 
 struct Mesh_info
 {
@@ -855,7 +859,7 @@ void write_csv_row(std::ostream& os, const Mesh_info& mesh, std::size_t source, 
      << (w && r.method.kind != Method_kind::EXTERNAL ? std::to_string(h.peak_live_windows) : "") << ','
      << number(ns_per_window(r), 6) << ',' << number(mesh.pseudo_source_share, 6) << ','
      << (r.ok ? number(h.cpu_seconds, 9) : "") << ',' << number(r.cpu_ratio_vs_vtp, 6) << ','
-     << csv_field(r.status) << '\n';
+     << csv_field(r.status) << ',' << number(r.max_below_vtp, 6) << '\n';
 }
 
 void print_table_header()
@@ -1103,6 +1107,14 @@ int run(int argc, char** argv)
           r.mean_pointwise_rel_err = c.mean_pointwise_rel_diff;
           r.max_pointwise_rel_err = c.max_pointwise_rel_diff;
           r.mismatched_infinities = c.mismatched_infinities;
+          double below = -inf, scale = 0.;
+          for(double x : vtp.distances)
+            if(std::isfinite(x))
+              scale = (std::max)(scale, x);
+          for(std::size_t i = 0; i < r.distances.size() && i < vtp.distances.size(); ++i)
+            if(std::isfinite(r.distances[i]) && std::isfinite(vtp.distances[i]))
+              below = (std::max)(below, vtp.distances[i] - r.distances[i]);
+          r.max_below_vtp = scale > 0. ? below / scale : below;
           if(c.mismatched_infinities > 0 && r.status == "ok")
             r.status = "ok (" + std::to_string(c.mismatched_infinities) + " reachability mismatches)";
         }
