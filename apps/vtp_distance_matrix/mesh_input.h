@@ -1,6 +1,6 @@
 // vtp_distance_matrix: reading the mesh.
 //
-// With the reading and repair code shared by the tools (apps/common, vtp_tools::read_input_mesh): a valid
+// With the reading and repair code shared by the tools (support/, vtp_support::read_input_mesh): a valid
 // triangle mesh is read as is, vertex i of the mesh being vertex i of the file; other input is triangulated
 // or repaired, and a file vertex may then stand for several mesh vertices (copies) or none. Rows and columns
 // are always in the vertex order of the file. What this file adds: a hash of the mesh, part of the run's
@@ -12,17 +12,17 @@
 #include "hashing.h"
 #include "tool_error.h"
 
-#include <vtp_tools/read_mesh.h>
+#include <vtp_support/read_mesh.h>
 
 #include <string>
 #include <vector>
 
 namespace vtp_matrix {
 
-typedef vtp_tools::Mesh Mesh;
-typedef vtp_tools::Vertex_index Vertex_index;
+typedef vtp_support::Mesh Mesh;
+typedef vtp_support::Vertex_index Vertex_index;
 
-struct Mesh_input : vtp_tools::Input_mesh
+struct Mesh_input : vtp_support::Input_mesh
 {
   // a hash of the mesh of the computation (points, faces) and of how it stands for the file's vertices
   std::string hash;
@@ -35,9 +35,9 @@ inline void read_mesh_input(const std::string& file, Mesh_input& input, int thre
 {
   try
   {
-    vtp_tools::read_input_mesh(file, static_cast<vtp_tools::Input_mesh&>(input), threads);
+    vtp_support::read_input_mesh(file, static_cast<vtp_support::Input_mesh&>(input), threads);
   }
-  catch(const vtp_tools::Input_error& e)
+  catch(const vtp_support::Input_error& e)
   {
     throw Tool_error(e.what());
   }

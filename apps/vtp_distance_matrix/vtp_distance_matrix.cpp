@@ -10,7 +10,7 @@
 // written to the output as they finish, and recorded in a journal, so that a run killed at any moment
 // continues with --resume. See README.md, section "Many sources", and the files of this folder:
 //   arguments.*      the command line            source_list.*   --sources
-//   mesh_input.h     reading the mesh (apps/common) and its hash
+//   mesh_input.h     reading the mesh (support/) and its hash
 //   row_batch.h      computing the rows (the library's batch call, compute_each)
 //   matrix_store.*   output files, journal, resume, sparse assembly
 //   hdf5_layout.*    the HDF5 file               raw_file.*      positioned writes (POSIX or MPI-IO)

@@ -9,8 +9,8 @@
 
 #include "arguments.h"
 
-#include <vtp_tools/methods.h>
-#include <vtp_tools/mesh_formats.h>
+#include <vtp_support/methods.h>
+#include <vtp_support/mesh_formats.h>
 
 #include <algorithm>
 #include <cctype>
@@ -98,9 +98,9 @@ std::string file_name(const std::string& option, const std::string& s)
 std::string methods_help()
 {
   std::string s;
-  for(const vtp_tools::Method_info* m = vtp_tools::methods_begin(); m != vtp_tools::methods_end(); ++m)
-    s += std::string(m == vtp_tools::methods_begin() ? "" : "\n") + m->name + ": " + m->description
-         + (m == vtp_tools::methods_begin() ? " (default)" : "");
+  for(const vtp_support::Method_info* m = vtp_support::methods_begin(); m != vtp_support::methods_end(); ++m)
+    s += std::string(m == vtp_support::methods_begin() ? "" : "\n") + m->name + ": " + m->description
+         + (m == vtp_support::methods_begin() ? " (default)" : "");
   return s;
 }
 
@@ -259,9 +259,9 @@ const Option* find_option(const std::string& name)
 
 void check_arguments(const Arguments& a)
 {
-  const vtp_tools::Method_info* m = vtp_tools::find_method(a.method);
+  const vtp_support::Method_info* m = vtp_support::find_method(a.method);
   if(m == nullptr)
-    throw Tool_error("unknown method '" + a.method + "' (expected " + vtp_tools::method_names() + ")");
+    throw Tool_error("unknown method '" + a.method + "' (expected " + vtp_support::method_names() + ")");
   if((a.has_lambda || a.has_lambda_g) && !m->approximate)
     throw Tool_error("--lambda and --lambda-g need --method avtp or pavtp");
   if(!a.target_output.empty() && !a.has_targets())
@@ -357,7 +357,7 @@ void print_usage(std::ostream& os, const std::string& default_mesh)
       begin = end + 1;
     }
   };
-  item("MESH", "mesh file: " + vtp_tools::readable_extensions_text() + "\n(default: " + default_mesh + ")");
+  item("MESH", "mesh file: " + vtp_support::readable_extensions_text() + "\n(default: " + default_mesh + ")");
   for(const Option& o : option_table())
   {
     const std::string left = std::string(o.name) + (o.value != nullptr ? std::string(" ") + o.value : "");

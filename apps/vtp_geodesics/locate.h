@@ -14,7 +14,7 @@
 // the computation: the nearest point of the surface, as a face location (locate.cpp; CGAL's AABB tree and
 // Polygon_mesh_processing::locate live in that file only).
 
-#include <vtp_tools/read_mesh.h>
+#include <vtp_support/read_mesh.h>
 
 #include <array>
 #include <memory>
@@ -25,7 +25,7 @@ namespace vtp_geodesics_app {
 
 // A face and the barycentric coordinates of the point with respect to source(halfedge(f)), target(halfedge(f)),
 // target(next(halfedge(f))): the face location of CGAL::Polygon_mesh_processing and of the library.
-typedef std::pair<vtp_tools::Mesh::Face_index, std::array<double, 3> > Face_location;
+typedef std::pair<vtp_support::Mesh::Face_index, std::array<double, 3> > Face_location;
 
 struct Located_point
 {
@@ -38,7 +38,7 @@ class Point_locator
 {
 public:
   // `mesh` must have a face, and must outlive the locator.
-  explicit Point_locator(const vtp_tools::Mesh& mesh);
+  explicit Point_locator(const vtp_support::Mesh& mesh);
   ~Point_locator();
   Point_locator(const Point_locator&) = delete;
   Point_locator& operator=(const Point_locator&) = delete;
@@ -49,7 +49,7 @@ public:
 
 private:
   struct Tree;
-  const vtp_tools::Mesh& m_mesh;
+  const vtp_support::Mesh& m_mesh;
   std::unique_ptr<Tree> m_tree;
 };
 

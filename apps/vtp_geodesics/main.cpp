@@ -16,11 +16,11 @@
 // distance limit, distances at targets, geodesic paths. Run `vtp_geodesics --help` for details. The program is
 // split by role:
 //   arguments.cpp   the command line (one table of options)
-//   vtp_tools/read_mesh.h (apps/common)   reading and repair
+//   vtp_support/read_mesh.h (support/)   reading and repair
 //   locate.cpp      points of the command line located on the mesh (AABB tree)
 //   run.cpp         the computation: every call into the library
 //   outputs.cpp     text, PLY, picture, JSON, summary
-//   main.cpp        the stages, their timing, the output files (vtp_tools/output_file.h) and the errors
+//   main.cpp        the stages, their timing, the output files (vtp_support/output_file.h) and the errors
 // On any error it prints one line "vtp_geodesics: error: ..." on stderr, leaves no partial output file and
 // exits with code 2.
 
@@ -29,10 +29,10 @@
 #include "outputs.h"
 #include "run.h"
 
-#include <vtp_tools/number_format.h>
-#include <vtp_tools/output_file.h>
-#include <vtp_tools/read_mesh.h>
-#include <vtp_tools/shortest_path_reference.h>
+#include <vtp_support/number_format.h>
+#include <vtp_support/output_file.h>
+#include <vtp_support/read_mesh.h>
+#include <vtp_support/shortest_path_reference.h>
 
 #include <CGAL/assertions_behaviour.h>
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
@@ -110,8 +110,8 @@ int run(int argc, char** argv)
     print_usage(std::cout, default_mesh());
     return 0;
   }
-  const vtp_tools::Method_info& method = *vtp_tools::find_method(args.method);
-  if(!vtp_tools::method_available(method))
+  const vtp_support::Method_info& method = *vtp_support::find_method(args.method);
+  if(!vtp_support::method_available(method))
     throw Tool_error(std::string("method ") + method.name + " needs OpenMP, and this program was built without it");
 
   // Reading and repair.
@@ -122,8 +122,8 @@ int run(int argc, char** argv)
     if(::access(mesh_file.c_str(), R_OK) != 0)
       throw Tool_error("no mesh given, and the default mesh " + mesh_file + " is missing (give a mesh file)");
   }
-  vtp_tools::Input_mesh input;
-  vtp_tools::read_input_mesh(mesh_file, input, args.threads);
+  vtp_support::Input_mesh input;
+  vtp_support::read_input_mesh(mesh_file, input, args.threads);
   auto check_vertex = [&input](std::size_t v, const char* what) {
     if(v >= input.file_vertices)
       throw Tool_error(std::string(what) + " vertex " + std::to_string(v) + " is out of range (the mesh has "
@@ -159,7 +159,7 @@ int run(int argc, char** argv)
   request.lambda = args.lambda;
   request.lambda_g = args.lambda_g;
   for(std::size_t i = 0; i < args.sources.size(); ++i)
-    for(vtp_tools::Vertex_index v : input.mesh_vertices_of(args.sources[i]))
+    for(vtp_support::Vertex_index v : input.mesh_vertices_of(args.sources[i]))
     {
       request.source_vertices.push_back(v);
       request.source_vertex_labels.push_back(i);
@@ -173,7 +173,7 @@ int run(int argc, char** argv)
   request.want_labels = several_sources || !args.labels.empty();
   request.max_distance = args.max_distance;
   for(std::size_t v : args.targets)
-    for(vtp_tools::Vertex_index c : input.mesh_vertices_of(v))
+    for(vtp_support::Vertex_index c : input.mesh_vertices_of(v))
       request.target_vertices.push_back(c);
   for(const Located_point& p : target_points)
     request.target_locations.push_back(p.location);
@@ -188,7 +188,7 @@ int run(int argc, char** argv)
     const std::size_t v = args.path_to[k];
     if(std::find(args.sources.begin(), args.sources.end(), v) != args.sources.end())
     {
-      const vtp_tools::Point_3& p = input.file_point(v);
+      const vtp_support::Point_3& p = input.file_point(v);
       paths[k].push_back({ { p.x(), p.y(), p.z() } });
       continue;
     }
@@ -203,9 +203,9 @@ int run(int argc, char** argv)
   for(std::size_t j = 0; j < path_points.size(); ++j)
   {
     Run_request::Path path;
-    path.name = "point " + vtp_tools::double_to_string(args.path_to_points[j][0]) + ","
-                + vtp_tools::double_to_string(args.path_to_points[j][1]) + ","
-                + vtp_tools::double_to_string(args.path_to_points[j][2]) + " (--path-to-point)";
+    path.name = "point " + vtp_support::double_to_string(args.path_to_points[j][0]) + ","
+                + vtp_support::double_to_string(args.path_to_points[j][1]) + ","
+                + vtp_support::double_to_string(args.path_to_points[j][2]) + " (--path-to-point)";
     path.is_point = true;
     path.location = path_points[j].location;
     traced[args.path_to.size() + j] = static_cast<long long>(request.paths.size());
@@ -276,53 +276,53 @@ int run(int argc, char** argv)
     for(std::size_t i = 0; i < reference.size(); ++i)
       if(reference[i] > args.max_distance || (args.has_targets() && !std::isfinite(distances[i])))
         reference[i] = std::numeric_limits<double>::infinity();
-    report.comparison = vtp_tools::compare_distances(distances, reference);
+    report.comparison = vtp_support::compare_distances(distances, reference);
     report.checked = true;
   }
 
   // Outputs: every file is written completely (regular files to a temporary file), and only then are they
   // renamed over their targets.
   const Clock::time_point write_start = Clock::now();
-  std::vector<std::unique_ptr<vtp_tools::Output_file> > files;
-  auto open_output = [&files](const std::string& name) -> vtp_tools::Output_file& {
-    files.emplace_back(new vtp_tools::Output_file(name));
+  std::vector<std::unique_ptr<vtp_support::Output_file> > files;
+  auto open_output = [&files](const std::string& name) -> vtp_support::Output_file& {
+    files.emplace_back(new vtp_support::Output_file(name));
     return *files.back();
   };
   if(!args.output.empty())
   {
-    vtp_tools::Output_file& f = open_output(args.output);
+    vtp_support::Output_file& f = open_output(args.output);
     write_distances(f.stream(), distance_format(args.output), input, distances, several_sources ? &labels : nullptr,
                     report.max_distance);
     f.close();
   }
   if(!args.labels.empty())
   {
-    vtp_tools::Output_file& f = open_output(args.labels);
+    vtp_support::Output_file& f = open_output(args.labels);
     write_labels(f.stream(), labels);
     f.close();
   }
   if(!args.target_output.empty())
   {
-    vtp_tools::Output_file& f = open_output(args.target_output);
-    vtp_tools::write_values_text(f.stream(), target_distances);
+    vtp_support::Output_file& f = open_output(args.target_output);
+    vtp_support::write_values_text(f.stream(), target_distances);
     f.close();
   }
   if(!args.path_output.empty())
   {
-    vtp_tools::Output_file& f = open_output(args.path_output);
+    vtp_support::Output_file& f = open_output(args.path_output);
     write_paths(f.stream(), path_format(args.path_output), paths);
     f.close();
   }
   if(picture)
   {
-    vtp_tools::Output_file& f = open_output(args.picture);
+    vtp_support::Output_file& f = open_output(args.picture);
     Picture_request p;
     p.isolines = args.isolines;
     p.has_view = args.has_view;
     p.view = args.view;
     for(std::size_t v : args.sources)
     {
-      const vtp_tools::Point_3& q = input.file_point(v);
+      const vtp_support::Point_3& q = input.file_point(v);
       p.markers.push_back({ { q.x(), q.y(), q.z() } });
     }
     for(const Located_point& q : source_points)
@@ -336,16 +336,16 @@ int run(int argc, char** argv)
   report.peak_rss_mb = peak_rss_mb();
   if(!args.stats_json.empty())
   {
-    vtp_tools::Output_file& f = open_output(args.stats_json);
+    vtp_support::Output_file& f = open_output(args.stats_json);
     f.stream() << stats_json(report);
     f.close();
   }
-  for(const std::unique_ptr<vtp_tools::Output_file>& f : files)
+  for(const std::unique_ptr<vtp_support::Output_file>& f : files)
     f->commit();
 
   // Text for people, on standard output unless it carries data.
   bool stdout_has_data = false;
-  for(const std::unique_ptr<vtp_tools::Output_file>& f : files)
+  for(const std::unique_ptr<vtp_support::Output_file>& f : files)
     stdout_has_data = stdout_has_data || f->writes_to_stdout();
   if(args.output.empty() && args.stats_json.empty() && !stdout_has_data)
     print_summary(std::cout, report);
@@ -385,8 +385,8 @@ int main(int argc, char** argv)
     return run(argc, argv);
   }
   catch(const Tool_error& e) { return fail(e.what()); }
-  catch(const vtp_tools::Input_error& e) { return fail(e.what()); }
-  catch(const vtp_tools::Output_error& e) { return fail(e.what()); }
+  catch(const vtp_support::Input_error& e) { return fail(e.what()); }
+  catch(const vtp_support::Output_error& e) { return fail(e.what()); }
   catch(const CGAL::VTP_geodesics::Invalid_input_error& e) { return fail(e.what()); }
   catch(const std::bad_alloc&) { return fail("out of memory"); }
   catch(const std::exception& e) { return fail(e.what()); }

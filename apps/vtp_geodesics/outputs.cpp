@@ -9,11 +9,11 @@
 
 #include "outputs.h"
 
-#include <vtp_tools/colour_map.h>
-#include <vtp_tools/distance_ply.h>
-#include <vtp_tools/mesh_formats.h>
-#include <vtp_tools/number_format.h>
-#include <vtp_tools/picture.h>
+#include <vtp_support/colour_map.h>
+#include <vtp_support/distance_ply.h>
+#include <vtp_support/mesh_formats.h>
+#include <vtp_support/number_format.h>
+#include <vtp_support/picture.h>
 
 #include <cmath>
 #include <cstdio>
@@ -24,23 +24,23 @@ namespace vtp_geodesics_app {
 
 Distance_format distance_format(const std::string& file)
 {
-  return vtp_tools::lower_extension(file) == "ply" ? Distance_format::PLY : Distance_format::TEXT;
+  return vtp_support::lower_extension(file) == "ply" ? Distance_format::PLY : Distance_format::TEXT;
 }
 
-void write_distances(std::ostream& os, Distance_format format, const vtp_tools::Input_mesh& input,
+void write_distances(std::ostream& os, Distance_format format, const vtp_support::Input_mesh& input,
                      const std::vector<double>& distances, const std::vector<int>* labels, double max_distance)
 {
   if(format == Distance_format::TEXT)
   {
-    vtp_tools::write_values_text(os, distances);
+    vtp_support::write_values_text(os, distances);
     return;
   }
   std::string comment = "VTP_geodesics: geodesic distances (property distance; inf: unreachable)";
   if(labels != nullptr)
     comment += "\nsource: index of the nearest source (-1: none)";
-  comment += "\ncolours: " + std::string(vtp_tools::colour_map_name()) + " from 0 to "
-             + vtp_tools::double_to_string(max_distance) + "; grey: unreachable";
-  vtp_tools::write_distance_ply(os, input, distances, labels, max_distance, comment);
+  comment += "\ncolours: " + std::string(vtp_support::colour_map_name()) + " from 0 to "
+             + vtp_support::double_to_string(max_distance) + "; grey: unreachable";
+  vtp_support::write_distance_ply(os, input, distances, labels, max_distance, comment);
 }
 
 void write_labels(std::ostream& os, const std::vector<int>& labels)
@@ -57,14 +57,14 @@ void write_labels(std::ostream& os, const std::vector<int>& labels)
 
 Path_format path_format(const std::string& file)
 {
-  return vtp_tools::lower_extension(file) == "obj" ? Path_format::OBJ : Path_format::POLYLINES;
+  return vtp_support::lower_extension(file) == "obj" ? Path_format::OBJ : Path_format::POLYLINES;
 }
 
 void write_paths(std::ostream& os, Path_format format, const std::vector<std::vector<std::array<double, 3> > >& paths)
 {
   std::string text;
-  char buffer[vtp_tools::max_double_chars];
-  auto number = [&](double x) { text.append(buffer, vtp_tools::format_double(buffer, x)); };
+  char buffer[vtp_support::max_double_chars];
+  auto number = [&](double x) { text.append(buffer, vtp_support::format_double(buffer, x)); };
   if(format == Path_format::POLYLINES)
   {
     for(const std::vector<std::array<double, 3> >& path : paths)
@@ -109,28 +109,28 @@ void write_paths(std::ostream& os, Path_format format, const std::vector<std::ve
   os.write(text.data(), static_cast<std::streamsize>(text.size()));
 }
 
-void write_picture(std::ostream& os, const vtp_tools::Mesh& mesh, const std::vector<double>& mesh_distances,
+void write_picture(std::ostream& os, const vtp_support::Mesh& mesh, const std::vector<double>& mesh_distances,
                    double max_distance, const Picture_request& request)
 {
-  vtp_tools::Picture_options options;
+  vtp_support::Picture_options options;
   options.isolines = request.isolines;
   if(request.has_view)
   {
     options.has_view = true;
     options.view = request.view;
   }
-  vtp_tools::Distance_picture picture(options);
-  const vtp_tools::Mesh::size_type nv = mesh.number_of_vertices();
+  vtp_support::Distance_picture picture(options);
+  const vtp_support::Mesh::size_type nv = mesh.number_of_vertices();
   picture.set_mesh(
     static_cast<std::size_t>(nv),
     [&mesh](std::size_t i) {
-      const vtp_tools::Point_3& p = mesh.point(vtp_tools::Vertex_index(static_cast<vtp_tools::Mesh::size_type>(i)));
+      const vtp_support::Point_3& p = mesh.point(vtp_support::Vertex_index(static_cast<vtp_support::Mesh::size_type>(i)));
       return std::array<double, 3>{ { p.x(), p.y(), p.z() } };
     },
     static_cast<std::size_t>(mesh.number_of_faces()),
     [&mesh](std::size_t f) {
-      const vtp_tools::Mesh::Halfedge_index h = mesh.halfedge(vtp_tools::Mesh::Face_index(
-        static_cast<vtp_tools::Mesh::size_type>(f)));
+      const vtp_support::Mesh::Halfedge_index h = mesh.halfedge(vtp_support::Mesh::Face_index(
+        static_cast<vtp_support::Mesh::size_type>(f)));
       return std::array<std::uint32_t, 3>{ { static_cast<std::uint32_t>(mesh.source(h)),
                                              static_cast<std::uint32_t>(mesh.target(h)),
                                              static_cast<std::uint32_t>(mesh.target(mesh.next(h))) } };
@@ -167,7 +167,7 @@ std::string json_number(double x)
 {
   if(!std::isfinite(x))
     return "null";
-  return vtp_tools::double_to_string(x);
+  return vtp_support::double_to_string(x);
 }
 
 } // namespace

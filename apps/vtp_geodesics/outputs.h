@@ -15,8 +15,8 @@
 
 #include "run.h"
 
-#include <vtp_tools/read_mesh.h>
-#include <vtp_tools/shortest_path_reference.h>
+#include <vtp_support/read_mesh.h>
+#include <vtp_support/shortest_path_reference.h>
 
 #include <array>
 #include <cstddef>
@@ -45,7 +45,7 @@ struct Report
   double read_seconds = 0., repair_seconds = 0., write_seconds = 0., total_seconds = 0.;
   double peak_rss_mb = 0.;
   bool checked = false;
-  vtp_tools::Distance_comparison comparison;
+  vtp_support::Distance_comparison comparison;
 };
 
 enum class Distance_format { TEXT, PLY };
@@ -55,7 +55,7 @@ Distance_format distance_format(const std::string& file);
 
 // Writes the distances (one per vertex of the file) in `format`; `labels` (nearest source per file vertex) may
 // be null.
-void write_distances(std::ostream& os, Distance_format format, const vtp_tools::Input_mesh& input,
+void write_distances(std::ostream& os, Distance_format format, const vtp_support::Input_mesh& input,
                      const std::vector<double>& distances, const std::vector<int>* labels, double max_distance);
 
 // One value per line: the nearest source of each vertex of the file (-1: none).
@@ -80,7 +80,7 @@ struct Picture_request
 };
 
 // Draws the distance field on the mesh of the computation (`mesh_distances`: per mesh vertex) as a PNG picture.
-void write_picture(std::ostream& os, const vtp_tools::Mesh& mesh, const std::vector<double>& mesh_distances,
+void write_picture(std::ostream& os, const vtp_support::Mesh& mesh, const std::vector<double>& mesh_distances,
                    double max_distance, const Picture_request& request);
 
 std::string stats_json(const Report& r);

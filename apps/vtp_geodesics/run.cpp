@@ -20,7 +20,7 @@
 
 #include <boost/property_map/property_map.hpp>
 
-#include <vtp_tools/shortest_path_reference.h>
+#include <vtp_support/shortest_path_reference.h>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -37,14 +37,14 @@ namespace vtp_geodesics_app {
 
 namespace {
 
-typedef CGAL::VTP_geodesics::Geodesic_distance_solver<vtp_tools::Mesh> Solver;
+typedef CGAL::VTP_geodesics::Geodesic_distance_solver<vtp_support::Mesh> Solver;
 namespace VTP = CGAL::VTP_geodesics;
 
 // Runs `method` from the source set of `solver`; the distances stay in the solver (read with distances()).
 template <class NamedParameters>
-void run_method(const vtp_tools::Method_info& method, Solver& solver, const NamedParameters& np)
+void run_method(const vtp_support::Method_info& method, Solver& solver, const NamedParameters& np)
 {
-  const CGAL::Constant_property_map<vtp_tools::Vertex_index, double> no_map;
+  const CGAL::Constant_property_map<vtp_support::Vertex_index, double> no_map;
   if(!method.parallel)
   {
     solver.compute<CGAL::Sequential_tag>(no_map, np);
@@ -58,12 +58,12 @@ void run_method(const vtp_tools::Method_info& method, Solver& solver, const Name
 }
 
 // A vertex as a face location: a corner of one of its faces (the library takes such a location as the vertex).
-Face_location location_of_vertex(const vtp_tools::Mesh& mesh, vtp_tools::Vertex_index v)
+Face_location location_of_vertex(const vtp_support::Mesh& mesh, vtp_support::Vertex_index v)
 {
-  const vtp_tools::Mesh::Halfedge_index h = mesh.halfedge(v); // a half-edge whose target is v
-  const vtp_tools::Mesh::Halfedge_index g = mesh.is_border(h) ? mesh.opposite(h) : h;
-  const vtp_tools::Mesh::Face_index f = mesh.face(g);
-  const vtp_tools::Mesh::Halfedge_index first = mesh.halfedge(f);
+  const vtp_support::Mesh::Halfedge_index h = mesh.halfedge(v); // a half-edge whose target is v
+  const vtp_support::Mesh::Halfedge_index g = mesh.is_border(h) ? mesh.opposite(h) : h;
+  const vtp_support::Mesh::Face_index f = mesh.face(g);
+  const vtp_support::Mesh::Halfedge_index first = mesh.halfedge(f);
   std::array<double, 3> b = { { 0., 0., 0. } };
   if(mesh.source(first) == v)
     b[0] = 1.;
@@ -74,11 +74,11 @@ Face_location location_of_vertex(const vtp_tools::Mesh& mesh, vtp_tools::Vertex_
   return Face_location(f, b);
 }
 
-std::vector<std::array<double, 3> > to_arrays(const std::vector<vtp_tools::Point_3>& points)
+std::vector<std::array<double, 3> > to_arrays(const std::vector<vtp_support::Point_3>& points)
 {
   std::vector<std::array<double, 3> > r;
   r.reserve(points.size());
-  for(const vtp_tools::Point_3& p : points)
+  for(const vtp_support::Point_3& p : points)
     r.push_back({ { p.x(), p.y(), p.z() } });
   return r;
 }
@@ -87,9 +87,9 @@ std::vector<std::array<double, 3> > to_arrays(const std::vector<vtp_tools::Point
 
 double recommended_lambda() { return CGAL::VTP_geodesics::recommended_lambda; }
 
-Run_result run_propagation(const vtp_tools::Mesh& mesh, const Run_request& request)
+Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& request)
 {
-  const vtp_tools::Method_info& method = *request.method;
+  const vtp_support::Method_info& method = *request.method;
   const double lambda = !method.approximate ? std::numeric_limits<double>::infinity()
                        : (request.has_lambda ? request.lambda : recommended_lambda());
 
@@ -123,7 +123,7 @@ Run_result run_propagation(const vtp_tools::Mesh& mesh, const Run_request& reque
   // The targets, all as face locations: the target vertices (but isolated ones, which no propagation reaches),
   // the target points, then the end points of the paths (so that the run records their trace-back).
   std::vector<Face_location> targets;
-  for(vtp_tools::Vertex_index v : request.target_vertices)
+  for(vtp_support::Vertex_index v : request.target_vertices)
     if(!mesh.is_isolated(v))
       targets.push_back(location_of_vertex(mesh, v));
   const std::size_t first_target_location = targets.size();
@@ -133,7 +133,7 @@ Run_result run_propagation(const vtp_tools::Mesh& mesh, const Run_request& reque
     if(p.is_point)
       targets.push_back(p.location);
     else
-      for(vtp_tools::Vertex_index v : p.copies)
+      for(vtp_support::Vertex_index v : p.copies)
         if(!mesh.is_isolated(v))
           targets.push_back(location_of_vertex(mesh, v));
   }
@@ -191,7 +191,7 @@ Run_result run_propagation(const vtp_tools::Mesh& mesh, const Run_request& reque
   const std::string beyond = request.max_distance < infinity ? " (or it lies beyond --max-distance)" : "";
   for(const Run_request::Path& p : request.paths)
   {
-    std::vector<vtp_tools::Point_3> points;
+    std::vector<vtp_support::Point_3> points;
     if(p.is_point)
     {
       if(label_of_source.empty())
@@ -208,8 +208,8 @@ Run_result run_propagation(const vtp_tools::Mesh& mesh, const Run_request& reque
     else
     {
       CGAL_assertion(!p.copies.empty());
-      vtp_tools::Vertex_index start = p.copies.front();
-      for(vtp_tools::Vertex_index v : p.copies)
+      vtp_support::Vertex_index start = p.copies.front();
+      for(vtp_support::Vertex_index v : p.copies)
         if(r.distances[std::size_t(v)] < r.distances[std::size_t(start)])
           start = v;
       if(!(r.distances[std::size_t(start)] < infinity))
@@ -224,7 +224,7 @@ Run_result run_propagation(const vtp_tools::Mesh& mesh, const Run_request& reque
   if(request.check_cgal)
   {
     const auto t0 = std::chrono::steady_clock::now();
-    r.reference = vtp_tools::shortest_path_reference_distances(mesh, request.source_vertices, request.source_locations);
+    r.reference = vtp_support::shortest_path_reference_distances(mesh, request.source_vertices, request.source_locations);
     r.cgal_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   return r;

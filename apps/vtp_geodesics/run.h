@@ -15,8 +15,8 @@
 
 #include "locate.h"
 
-#include <vtp_tools/methods.h>
-#include <vtp_tools/read_mesh.h>
+#include <vtp_support/methods.h>
+#include <vtp_support/read_mesh.h>
 
 #include <array>
 #include <cstddef>
@@ -28,14 +28,14 @@ namespace vtp_geodesics_app {
 
 struct Run_request
 {
-  const vtp_tools::Method_info* method = nullptr;
+  const vtp_support::Method_info* method = nullptr;
   int threads = 0;                        // parallel methods and preprocessing; 0: OpenMP's default
   bool has_lambda = false;                // approximate methods: reset period (default: the recommended one)
   double lambda = 0.;
   double lambda_g = 1.;                   // approximate methods: guard band
   // The sources: mesh vertices, then points of the surface, each with the index of the source of the command
   // line it stands for (its label; the copies of a vertex share one). None: nothing is computed (all +inf).
-  std::vector<vtp_tools::Vertex_index> source_vertices;
+  std::vector<vtp_support::Vertex_index> source_vertices;
   std::vector<std::size_t> source_vertex_labels;
   std::vector<Face_location> source_locations;
   std::vector<std::size_t> source_location_labels;
@@ -43,7 +43,7 @@ struct Run_request
   double max_distance = std::numeric_limits<double>::infinity();
   // Targets: mesh vertices and points of the surface whose distance must be final when the run stops (with
   // stop_at_targets; else the run goes on to the end).
-  std::vector<vtp_tools::Vertex_index> target_vertices;
+  std::vector<vtp_support::Vertex_index> target_vertices;
   std::vector<Face_location> target_locations;
   bool stop_at_targets = true;
   // Paths to trace after the run; their end points must be among the targets (so that the run records
@@ -51,7 +51,7 @@ struct Run_request
   struct Path
   {
     std::string name;                     // for the errors: "vertex 12 (--path-to)"
-    std::vector<vtp_tools::Vertex_index> copies; // a vertex: the mesh vertices standing for it (not empty)
+    std::vector<vtp_support::Vertex_index> copies; // a vertex: the mesh vertices standing for it (not empty)
     bool is_point = false;                // else a point of the surface:
     Face_location location;
   };
@@ -83,7 +83,7 @@ struct Run_result
 
 // Runs `request` on `mesh`; throws Tool_error (e.g. a path to a vertex that no source reaches) or the
 // library's exceptions.
-Run_result run_propagation(const vtp_tools::Mesh& mesh, const Run_request& request);
+Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& request);
 
 // The lambda used by the approximate methods when none is given.
 double recommended_lambda();

@@ -8,12 +8,12 @@
 //           chosen by bits (coincident vertices, collinear and folded triangles happen);
 //     2     a polygon soup of up to 24 triangles on up to 12 points with coordinates multiples of 1/2,
 //           made a valid triangle mesh as the command-line tool does it (repair_polygon_soup,
-//           orient_polygon_soup; see apps/common/include/vtp_tools/triangle_mesh_from_soup.h);
+//           orient_polygon_soup; see support/include/vtp_support/triangle_mesh_from_soup.h);
 //     3     the convex hull of up to 12 such points.
 //   the next bytes give the sizes, coordinates and diagonals; the last byte read gives the source.
 // Coordinates are quantized to exact binary fractions, so a triangle is either exactly degenerate or far
 // from it. (Triangles that are degenerate up to rounding, which decimal coordinates such as 0.05 give,
-// are covered by the tests Degenerate.nearly_collinear_* of test_robustness.cpp.)
+// are covered by the tests Degenerate.nearly_collinear_* of test_hard_meshes.cpp.)
 //
 // Checks (any failure prints the mesh and aborts, which libFuzzer reports with the input):
 // - no crash, no sanitizer report, no exception other than Invalid_input_error at construction;
@@ -39,9 +39,9 @@
 #include "vtp_test_meshes.h"
 
 #include <CGAL/VTP_geodesics.h>
-#include <vtp_tools/midpoint_subdivision.h>
-#include <vtp_tools/shortest_path_reference.h>
-#include <vtp_tools/triangle_mesh_from_soup.h>
+#include <vtp_support/midpoint_subdivision.h>
+#include <vtp_support/shortest_path_reference.h>
+#include <vtp_support/triangle_mesh_from_soup.h>
 
 #include <CGAL/IO/OFF.h>
 #include <CGAL/convex_hull_3.h>
@@ -159,7 +159,7 @@ bool make_mesh(Bytes& bytes, Surface_mesh& mesh)
   std::vector<Vertex_index> copies;
   try
   {
-    vtp_tools::triangle_mesh_from_soup(points, triangles, mesh, copy_begin, copies);
+    vtp_support::triangle_mesh_from_soup(points, triangles, mesh, copy_begin, copies);
   }
   catch(const CGAL::VTP_geodesics::Invalid_input_error&)
   {
@@ -435,15 +435,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       return std::isfinite(reference[i]) == std::isfinite(d[i])
              && !(std::isfinite(d[i]) && std::abs(d[i] - reference[i]) > tolerance);
     };
-    const std::vector<double> reference = vtp_tools::shortest_path_reference_distances(mesh, s);
+    const std::vector<double> reference = vtp_support::shortest_path_reference_distances(mesh, s);
     std::vector<double> fine[2]; // CGAL on the mesh subdivided once and twice
     auto cgal_on_subdivided = [&](int levels) -> const std::vector<double>& {
       std::vector<double>& r = fine[levels - 1];
       if(r.empty())
       {
         Surface_mesh subdivided = mesh;
-        vtp_tools::midpoint_subdivide(subdivided, levels);
-        r = vtp_tools::shortest_path_reference_distances(subdivided, s);
+        vtp_support::midpoint_subdivide(subdivided, levels);
+        r = vtp_support::shortest_path_reference_distances(subdivided, s);
         r.resize(nv);
       }
       return r;

@@ -31,8 +31,8 @@
 #include "vtp_random_meshes.h"
 
 #include <CGAL/VTP_geodesics.h>
-#include <vtp_tools/midpoint_subdivision.h>
-#include <vtp_tools/shortest_path_reference.h>
+#include <vtp_support/midpoint_subdivision.h>
+#include <vtp_support/shortest_path_reference.h>
 
 #include <CGAL/IO/OFF.h>
 
@@ -196,7 +196,7 @@ std::vector<Inserted_vertex> insert_degeneracies(Polygon_soup& soup, Polygon_sou
 // distance of that vertex).
 std::vector<double> reference_distances(const Case& c, Vertex_index s)
 {
-  using vtp_tools::shortest_path_reference_distances;
+  using vtp_support::shortest_path_reference_distances;
   if(c.inserted.empty())
     return shortest_path_reference_distances(c.mesh, s);
   std::vector<double> d = shortest_path_reference_distances(c.reference_mesh, s);
@@ -496,8 +496,8 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
       {
         // CGAL itself errs on some meshes: tell whether it agrees on the subdivided mesh (same surface)
         Surface_mesh fine = c.mesh;
-        vtp_tools::midpoint_subdivide(fine, 1);
-        std::vector<double> fine_reference = vtp_tools::shortest_path_reference_distances(fine, s);
+        vtp_support::midpoint_subdivide(fine, 1);
+        std::vector<double> fine_reference = vtp_support::shortest_path_reference_distances(fine, s);
         fine_reference.resize(reference.size());
         std::cout << "  CGAL on the midpoint-subdivided mesh "
                   << (compare(d, fine_reference, std::size_t(s)).ok() ? "agrees with " : "disagrees with ") << method

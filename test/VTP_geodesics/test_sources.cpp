@@ -2,6 +2,7 @@
 // surface given as face locations (against CGAL::Surface_mesh_shortest_path with the same locations, and
 // analytic planar cases), the source set of the solver, and bad sources. For VTP, PVTP, AVTP and PAVTP, on
 // Surface_mesh and Polyhedron_3.
+// Many sources one at a time: compute_each() (rows equal single computations bit for bit, errors).
 
 #include "vtp_test_meshes.h"
 #include "vtp_test_utils.h"
@@ -555,4 +556,119 @@ TEST(Bad_input, invalid_face_locations_are_rejected)
   // rounding-level deviations are accepted
   EXPECT_NO_THROW(solver.compute(map, Location(Face_index(0), { { -1e-17, 0.5, 0.5 + 1e-16 } })));
   EXPECT_EQ(solver.number_of_sources(), 0u) << "a rejected source is not added";
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Many sources: compute_each()
+// ---------------------------------------------------------------------------------------------------
+
+namespace {
+
+const Surface_mesh& elephant()
+{
+  static const Surface_mesh mesh = load_mesh("elephant.off");
+  return mesh;
+}
+
+// Rows of compute_each() by row index, with the number of times each row was handed over.
+struct Collected_rows
+{
+  std::vector<std::vector<double> > rows;
+  std::vector<int> calls;
+};
+
+template <class Tag, class Sources, class NP>
+Collected_rows collect_rows(Geodesic_distance_solver<Surface_mesh>& solver, const Sources& sources, const NP& np)
+{
+  Collected_rows c;
+  c.rows.resize(sources.size());
+  c.calls.assign(sources.size(), 0);
+  solver.compute_each<Tag>(sources, [&](std::size_t i, const typename Sources::value_type&, const std::vector<double>& d) {
+    c.rows[i] = d;
+    ++c.calls[i];
+  }, np);
+  return c;
+}
+
+} // namespace
+
+TEST(Compute_each, rows_equal_single_computations_bitwise)
+{
+  const Surface_mesh& mesh = elephant();
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  std::vector<Vertex_index> sources;
+  for(std::size_t i = 0; i < 12; ++i)
+    sources.push_back(Vertex_index(static_cast<Surface_mesh::size_type>(i * 229)));
+  namespace VP = CGAL::VTP_geodesics::parameters;
+  for(double lambda : { INF, 4. })
+    for(double limit : { INF, 0.3 })
+    {
+      const auto np = VP::lambda(lambda).maximum_distance(limit);
+      std::vector<std::vector<double> > expected;
+      for(Vertex_index s : sources)
+      {
+        solver.compute(vtp_test::Discard_map(), s, np);
+        expected.push_back(solver.distances());
+      }
+      const Collected_rows sequential = collect_rows<CGAL::Sequential_tag>(solver, sources, np);
+      EXPECT_EQ(solver.statistics().sources, sources.size());
+      for(std::size_t i = 0; i < sources.size(); ++i)
+      {
+        EXPECT_EQ(sequential.calls[i], 1);
+        EXPECT_TRUE(identical(sequential.rows[i], expected[i])) << "row " << i << ", lambda " << lambda << ", limit " << limit;
+      }
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+      for(int threads : { 1, 2, 3 })
+      {
+        const Collected_rows parallel = collect_rows<CGAL::Parallel_tag>(solver, sources, np.number_of_threads(threads));
+        EXPECT_EQ(solver.statistics().threads, threads);
+        for(std::size_t i = 0; i < sources.size(); ++i)
+        {
+          EXPECT_EQ(parallel.calls[i], 1);
+          EXPECT_TRUE(identical(parallel.rows[i], expected[i])) << "row " << i << ", " << threads << " threads";
+        }
+      }
+#endif
+    }
+  // face locations as sources
+  typedef std::pair<Surface_mesh::Face_index, std::array<double, 3> > Location;
+  const std::vector<Location> locations = { Location(Surface_mesh::Face_index(5), { { 0.2, 0.3, 0.5 } }),
+                                            Location(Surface_mesh::Face_index(900), { { 0., 0.5, 0.5 } }) };
+  const Collected_rows rows = collect_rows<CGAL::Sequential_tag>(solver, locations, CGAL::parameters::default_values());
+  for(std::size_t i = 0; i < locations.size(); ++i)
+  {
+    solver.compute(vtp_test::Discard_map(), locations[i]);
+    EXPECT_TRUE(identical(rows.rows[i], solver.distances()));
+  }
+}
+
+TEST(Compute_each, errors)
+{
+  const Surface_mesh& mesh = elephant();
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  std::vector<Vertex_index> sources(20, Vertex_index(3));
+  // a bad source: refused before any row
+  std::vector<Vertex_index> bad = sources;
+  bad[7] = Vertex_index(static_cast<Surface_mesh::size_type>(num_vertices(mesh) + 1));
+  int calls = 0;
+  EXPECT_THROW(solver.compute_each(bad, [&](std::size_t, Vertex_index, const std::vector<double>&) { ++calls; }),
+               Invalid_input_error);
+  EXPECT_EQ(calls, 0);
+  // a sink that throws: no row after that, and the exception comes out
+  for(int threads : { 1, 2 })
+  {
+    calls = 0;
+    auto sink = [&](std::size_t, Vertex_index, const std::vector<double>&) {
+      if(++calls == 3)
+        throw std::runtime_error("disk full");
+    };
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+    EXPECT_THROW(solver.compute_each<CGAL::Parallel_tag>(sources, sink,
+                                                         CGAL::VTP_geodesics::parameters::number_of_threads(threads)),
+                 std::runtime_error);
+#else
+    EXPECT_THROW(solver.compute_each(sources, sink), std::runtime_error);
+#endif
+    EXPECT_EQ(calls, 3);
+  }
 }

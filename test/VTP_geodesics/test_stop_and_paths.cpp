@@ -6,7 +6,7 @@
 #include "vtp_test_utils.h"
 
 #include <CGAL/VTP_geodesics.h>
-#include <vtp_tools/midpoint_subdivision.h>
+#include <vtp_support/midpoint_subdivision.h>
 
 #include <CGAL/Surface_mesh_shortest_path.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -200,7 +200,7 @@ typedef CGAL::Surface_mesh_shortest_path<Smsp_traits> Smsp;
 TEST(Distance_limit, equals_the_full_run_inside_and_work_shrinks_with_the_radius)
 {
   Surface_mesh mesh = load_mesh("elephant.off");
-  vtp_tools::midpoint_subdivide(mesh, 1);
+  vtp_support::midpoint_subdivide(mesh, 1);
   Solver solver(mesh);
   const Vertex_index s(100);
   for(const Method& m : all_methods())
@@ -271,7 +271,7 @@ TEST(Distance_limit, invalid_limits_are_rejected)
 TEST(Targets, vertex_targets_stop_early_and_equal_the_full_run)
 {
   Surface_mesh mesh = load_mesh("knot1.off");
-  vtp_tools::midpoint_subdivide(mesh, 1);
+  vtp_support::midpoint_subdivide(mesh, 1);
   Solver solver(mesh);
   const Vertex_index s(0);
   for(const Method& m : all_methods())

@@ -4,12 +4,15 @@
 //  - approximate distances are never below the exact ones (every reported distance is the length of
 //    a real surface path), equal the exact ones when lambda * h exceeds the largest distance, and
 //    their error shrinks as lambda grows; PAVTP meets the same invariants and bounds as AVTP.
+//  - PVTP and PAVTP match the analytic distances, reach the same vertices as VTP (unreachable ones get
+//    +infinity), and need OpenMP; AVTP is never below the exact distance on a planar domain.
 // The exact reference is the sequential VTP, itself checked against analytic values and CGAL's
-// Surface_mesh_shortest_path by the other test files.
+// Surface_mesh_shortest_path by test_exact_distances.cpp.
 
+#include "vtp_test_meshes.h"
 #include "vtp_test_utils.h"
 
-#include <vtp_tools/midpoint_subdivision.h>
+#include <vtp_support/midpoint_subdivision.h>
 
 #include <cmath>
 #include <string>
@@ -18,6 +21,7 @@
 using namespace vtp_test;
 using CGAL::VTP_geodesics::Geodesic_distance_solver;
 using CGAL::VTP_geodesics::Propagation_statistics;
+using CGAL::VTP_geodesics::compute_geodesic_distances;
 
 namespace {
 
@@ -79,7 +83,7 @@ std::vector<double> run(Solver& solver, std::size_t source, const Variant& o,
 Surface_mesh fine_mesh(const char* name)
 {
   Surface_mesh mesh = load_mesh(name);
-  vtp_tools::midpoint_subdivide(mesh, 1);
+  vtp_support::midpoint_subdivide(mesh, 1);
   return mesh;
 }
 
@@ -241,7 +245,7 @@ TEST(Parallel_variants, pavtp_meets_the_avtp_invariants)
 TEST(Parallel_variants, pavtp_reaches_every_reachable_vertex)
 {
   Surface_mesh mesh = load_mesh("elephant.off");
-  vtp_tools::midpoint_subdivide(mesh, 2);
+  vtp_support::midpoint_subdivide(mesh, 2);
   Solver solver(mesh);
   Propagation_statistics vs;
   const std::vector<double> exact = run<CGAL::Sequential_tag>(solver, 0, Variant(), &vs);
@@ -260,3 +264,136 @@ TEST(Parallel_variants, pavtp_reaches_every_reachable_vertex)
 }
 
 #endif // CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+
+// ---------------------------------------------------------------------------------------------------
+// Parallel (PVTP, PAVTP) and approximate (AVTP) variants: analytic distances, real meshes, unreachable vertices
+// ---------------------------------------------------------------------------------------------------
+
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+
+TEST(Parallel, matches_the_analytic_distances)
+{
+  const int n = 24;
+  const Polygon_soup soup = planar_grid(n, n, 1., 1., 0.3, 5u);
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  for(int threads : {0, 1, 2})
+  {
+    const std::size_t s = grid_vertex(n, 7, 11);
+    std::vector<double> expected(soup.points.size()), d(soup.points.size(), NOT_A_VERTEX);
+    for(std::size_t i = 0; i < soup.points.size(); ++i)
+      expected[i] = distance(soup.points[s], soup.points[i]);
+    solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
+                                       Vertex_index(static_cast<Surface_mesh::size_type>(s)),
+                                       CGAL::VTP_geodesics::parameters::number_of_threads(threads));
+    const Propagation_statistics& st = solver.statistics();
+    EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE, "parallel, " + std::to_string(threads) + " threads"));
+    EXPECT_EQ(st.method, "pvtp");
+    EXPECT_GE(st.threads, 1);
+    if(threads > 0)
+    {
+      EXPECT_LE(st.threads, threads);
+    }
+  }
+}
+
+TEST(Parallel, matches_sequential_on_real_meshes)
+{
+  for(const char* name : {"elephant-with-holes.off", "knot1.off"})
+  {
+    const Surface_mesh mesh = load_mesh(name);
+    Geodesic_distance_solver<Surface_mesh> solver(mesh);
+    for(Vertex_index s : {Vertex_index(0), Vertex_index(static_cast<Surface_mesh::size_type>(num_vertices(mesh) / 2))})
+    {
+      const std::vector<double> sequential = vtp_distances(mesh, s);
+      std::vector<double> parallel(num_vertices(mesh), NOT_A_VERTEX);
+      solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(parallel.begin(), get(boost::vertex_index, mesh)), s);
+      EXPECT_TRUE(distances_near(parallel, sequential, EXACT_TOLERANCE,
+                                 std::string(name) + ", parallel vs sequential, source " + std::to_string(std::size_t(s))));
+    }
+  }
+}
+
+TEST(Parallel, unreachable_vertices)
+{
+  Polygon_soup soup = planar_grid(6, 6, 1., 1.);
+  soup.append(regular_tetrahedron(), Vector_3(10, 0, 0));
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  std::vector<double> d(num_vertices(mesh), NOT_A_VERTEX);
+  Propagation_statistics st;
+  compute_geodesic_distances<CGAL::Parallel_tag>(
+    mesh, boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), Vertex_index(0),
+    CGAL::VTP_geodesics::parameters::statistics(st));
+  for(std::size_t i = 0; i < 49; ++i)
+    EXPECT_NEAR(d[i], distance(soup.points[0], soup.points[i]), EXACT_TOLERANCE * std::sqrt(2.));
+  for(std::size_t i = 49; i < 53; ++i)
+    EXPECT_EQ(d[i], INF);
+  EXPECT_EQ(st.reached_vertices, 49u);
+}
+
+// PAVTP: same lower bound as AVTP below (every distance is the length of a real path).
+TEST(Parallel, approximate_never_below_the_exact_distance)
+{
+  const int n = 24;
+  const Polygon_soup soup = planar_grid(n, n, 1., 1., 0.3, 12u);
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  const std::size_t s = grid_vertex(n, 20, 5);
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  const double lambda = 1.;
+  std::vector<double> d(soup.points.size(), NOT_A_VERTEX);
+  solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
+                                     Vertex_index(static_cast<Surface_mesh::size_type>(s)),
+                                     CGAL::VTP_geodesics::parameters::lambda(lambda));
+  const Propagation_statistics& st = solver.statistics();
+  EXPECT_EQ(st.method, "pavtp");
+  EXPECT_EQ(st.reached_vertices, soup.points.size());
+  double below = 0.;
+  for(std::size_t i = 0; i < soup.points.size(); ++i)
+  {
+    ASSERT_TRUE(std::isfinite(d[i])) << "vertex " << i;
+    below = (std::max)(below, distance(soup.points[s], soup.points[i]) - d[i]);
+  }
+  EXPECT_LE(below, EXACT_TOLERANCE * std::sqrt(2.));
+  ASSERT_GT(st.max_distance, 5. * lambda * solver.mean_edge_length());
+  EXPECT_GT(st.resets, 0u);
+}
+
+#else
+
+TEST(Parallel, requires_openmp)
+{
+  GTEST_SKIP() << "CGAL::VTP_geodesics_OpenMP_support is not available: the parallel variant is not tested";
+}
+
+#endif // CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+
+// The approximate variant drops windows, so each of its distances is the length of some path on the
+// surface: never below the exact geodesic distance. On a convex planar domain that is the Euclidean one.
+TEST(Approximate, never_below_the_exact_distance)
+{
+  const int n = 24;
+  const Polygon_soup soup = planar_grid(n, n, 1., 1., 0.3, 11u);
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  const std::size_t s = grid_vertex(n, 2, 3);
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  for(double lambda : {0.5, 1., 3.})
+  {
+    std::vector<double> d(soup.points.size(), NOT_A_VERTEX);
+    solver.compute(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
+                   Vertex_index(static_cast<Surface_mesh::size_type>(s)), CGAL::VTP_geodesics::parameters::lambda(lambda));
+    const Propagation_statistics& st = solver.statistics();
+    EXPECT_EQ(st.method, "avtp");
+    EXPECT_EQ(st.reached_vertices, soup.points.size());
+    EXPECT_EQ(d[s], 0.);
+    double below = 0.;
+    for(std::size_t i = 0; i < soup.points.size(); ++i)
+    {
+      ASSERT_TRUE(std::isfinite(d[i])) << "vertex " << i;
+      below = (std::max)(below, distance(soup.points[s], soup.points[i]) - d[i]);
+    }
+    EXPECT_LE(below, EXACT_TOLERANCE * std::sqrt(2.)) << "lambda = " << lambda;
+    // the propagation radius (about 1.3) is many times lambda * h (h is about 0.05): windows were reset
+    ASSERT_GT(st.max_distance, 5. * lambda * solver.mean_edge_length());
+    EXPECT_GT(st.resets, 0u) << "lambda = " << lambda;
+  }
+}

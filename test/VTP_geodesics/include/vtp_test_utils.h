@@ -83,6 +83,17 @@ inline double max_finite(const std::vector<double>& values)
   return m;
 }
 
+// Compares two results for exact equality (+infinity included), reporting the first difference.
+inline ::testing::AssertionResult identical(const std::vector<double>& a, const std::vector<double>& b)
+{
+  if(a.size() != b.size())
+    return ::testing::AssertionFailure() << "sizes differ: " << a.size() << " and " << b.size();
+  for(std::size_t i = 0; i < a.size(); ++i)
+    if(!(a[i] == b[i]))
+      return ::testing::AssertionFailure() << "first difference at vertex " << i << ": " << a[i] << " and " << b[i];
+  return ::testing::AssertionSuccess();
+}
+
 // Compares `actual` with `expected` entry by entry. Entries where `expected` is NaN are not vertices and
 // are skipped; where `expected` is +infinity, `actual` must be +infinity; elsewhere `actual` must be
 // finite with |actual - expected| <= relative_tolerance * (largest finite expected value).

@@ -11,8 +11,8 @@
 #include "vtp_test_meshes.h"
 #include "vtp_test_utils.h"
 
-#include <vtp_tools/midpoint_subdivision.h>
-#include <vtp_tools/shortest_path_reference.h>
+#include <vtp_support/midpoint_subdivision.h>
+#include <vtp_support/shortest_path_reference.h>
 
 #include <CGAL/Surface_mesh_shortest_path.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -30,8 +30,8 @@
 using namespace vtp_test;
 using CGAL::VTP_geodesics::Geodesic_distance_solver;
 using CGAL::VTP_geodesics::Propagation_statistics;
-using vtp_tools::midpoint_subdivide;
-using vtp_tools::shortest_path_reference_distances;
+using vtp_support::midpoint_subdivide;
+using vtp_support::shortest_path_reference_distances;
 
 namespace {
 
@@ -795,5 +795,123 @@ TEST(Removed_elements, removed_then_reused_slots)
     EXPECT_TRUE(satisfies_invariants(mesh, d, s, "three peaks with removed elements"));
     EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE,
                                "three peaks with removed and reused elements, source " + std::to_string(std::size_t(s))));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Hard but valid input against CGAL::Surface_mesh_shortest_path: several components, an isolated vertex,
+// removed elements
+// ---------------------------------------------------------------------------------------------------
+
+// Two connected components: the other component is unreachable (+infinity); the component of the source
+// matches the oracle run on that component alone.
+TEST(Hard_input, two_components)
+{
+  const Polygon_soup a = to_soup(load_mesh("three_peaks.off"));
+  const Polygon_soup b = to_soup(load_mesh("sphere.off"));
+  Polygon_soup both = a;
+  both.append(b, Vector_3(100, 0, 0));
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(both);
+  const Surface_mesh mesh_a = to_mesh<Surface_mesh>(a);
+  const Surface_mesh mesh_b = to_mesh<Surface_mesh>(b);
+  const std::size_t na = a.points.size(), nb = b.points.size();
+
+  {
+    const Vertex_index s(17);
+    std::vector<double> expected = shortest_path_reference_distances(mesh_a, s);
+    expected.resize(na + nb, INF);
+    CGAL::VTP_geodesics::Propagation_statistics st;
+    const std::vector<double> d = vtp_distances(mesh, s, CGAL::parameters::default_values(), &st);
+    EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE, "two components, source in the first"));
+    EXPECT_EQ(st.reached_vertices, na);
+  }
+  {
+    const Vertex_index s_b(5);
+    const std::vector<double> reference = shortest_path_reference_distances(mesh_b, s_b);
+    std::vector<double> expected(na, INF);
+    expected.insert(expected.end(), reference.begin(), reference.end());
+    CGAL::VTP_geodesics::Propagation_statistics st;
+    const std::vector<double> d = vtp_distances(mesh, Vertex_index(static_cast<Surface_mesh::size_type>(na + 5)),
+                                                CGAL::parameters::default_values(), &st);
+    EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE, "two components, source in the second"));
+    EXPECT_EQ(st.reached_vertices, nb);
+  }
+}
+
+// An isolated vertex (in no face) is unreachable; as a source it reaches only itself.
+TEST(Hard_input, isolated_vertex)
+{
+  Polygon_soup soup = to_soup(load_mesh("sphere.off"));
+  const std::size_t n = soup.points.size();
+  soup.points.push_back(Point_3(0.1, 0.2, 0.3)); // inside the sphere, in no face
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  ASSERT_EQ(num_vertices(mesh), n + 1);
+  ASSERT_TRUE(mesh.is_isolated(Vertex_index(static_cast<Surface_mesh::size_type>(n))));
+
+  {
+    const Surface_mesh sphere = to_mesh<Surface_mesh>(to_soup(load_mesh("sphere.off")));
+    std::vector<double> expected = shortest_path_reference_distances(sphere, Vertex_index(3));
+    expected.push_back(INF);
+    const std::vector<double> d = vtp_distances(mesh, Vertex_index(3));
+    EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE, "sphere plus an isolated vertex"));
+  }
+  {
+    std::vector<double> expected(n + 1, INF);
+    expected[n] = 0.;
+    CGAL::VTP_geodesics::Propagation_statistics st;
+    const std::vector<double> d = vtp_distances(mesh, Vertex_index(static_cast<Surface_mesh::size_type>(n)),
+                                                CGAL::parameters::default_values(), &st);
+    EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE, "isolated source"));
+    EXPECT_EQ(st.reached_vertices, 1u);
+    EXPECT_EQ(st.max_distance, 0.);
+  }
+}
+
+// A Surface_mesh with removed (not garbage-collected) elements: the removed ones must be skipped, and the
+// distances of the others match the oracle on a compacted copy.
+TEST(Hard_input, surface_mesh_with_removed_elements)
+{
+  Surface_mesh mesh = load_mesh("elephant.off");
+  // remove all the faces around one vertex (which removes the vertex: it becomes isolated) ...
+  const Vertex_index removed_vertex(1000);
+  std::vector<Surface_mesh::Face_index> around;
+  for(Surface_mesh::Face_index f : CGAL::faces_around_target(mesh.halfedge(removed_vertex), mesh))
+    around.push_back(f);
+  for(Surface_mesh::Face_index f : around)
+    CGAL::Euler::remove_face(mesh.halfedge(f), mesh);
+  // ... and one face elsewhere
+  const Surface_mesh::Face_index removed_face(4000);
+  ASSERT_FALSE(mesh.is_removed(removed_face));
+  CGAL::Euler::remove_face(mesh.halfedge(removed_face), mesh);
+  ASSERT_TRUE(mesh.has_garbage());
+  ASSERT_TRUE(mesh.is_removed(removed_vertex));
+  ASSERT_TRUE(mesh.is_removed(removed_face));
+
+  std::vector<std::size_t> new_index;
+  const Surface_mesh compact = to_mesh<Surface_mesh>(to_soup(mesh, &new_index));
+  // (BGL's num_vertices() of a Surface_mesh counts the removed vertices too)
+  ASSERT_EQ(compact.number_of_vertices(), mesh.number_of_vertices());
+  ASSERT_EQ(compact.number_of_faces(), mesh.number_of_faces());
+
+  // a source far from the holes, and one on the border of the first hole
+  Vertex_index on_hole = Surface_mesh::null_vertex();
+  for(Vertex_index v : vertices(mesh))
+    if(mesh.is_border(v) && on_hole == Surface_mesh::null_vertex())
+      on_hole = v;
+  ASSERT_NE(on_hole, Surface_mesh::null_vertex());
+  for(Vertex_index s : {Vertex_index(0), on_hole})
+  {
+    ASSERT_FALSE(mesh.is_removed(s));
+    const std::vector<double> reference =
+      shortest_path_reference_distances(compact, Vertex_index(static_cast<Surface_mesh::size_type>(new_index[s])));
+    std::vector<double> expected(index_range(mesh), NOT_A_VERTEX);
+    for(Vertex_index v : vertices(mesh))
+      expected[v] = reference[new_index[v]];
+    CGAL::VTP_geodesics::Propagation_statistics st;
+    const std::vector<double> d = vtp_distances(mesh, s, CGAL::parameters::default_values(), &st);
+    EXPECT_EQ(st.vertices, std::size_t(mesh.number_of_vertices()));
+    EXPECT_EQ(st.faces, std::size_t(mesh.number_of_faces()));
+    EXPECT_TRUE(distances_near(d, expected, EXACT_TOLERANCE,
+                               "elephant with removed elements, source " + std::to_string(std::size_t(s))));
   }
 }

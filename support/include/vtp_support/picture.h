@@ -7,8 +7,8 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef VTP_TOOLS_PICTURE_H
-#define VTP_TOOLS_PICTURE_H
+#ifndef VTP_SUPPORT_PICTURE_H
+#define VTP_SUPPORT_PICTURE_H
 
 // A headless picture of a scalar field on a triangle mesh (a distance field): the mesh, coloured by the field
 // (colour_map.h), shaded, with isolines at round values, seen in orthographic projection from a direction that
@@ -27,8 +27,8 @@
 //   picture.add_marker(p);  picture.add_polyline(points);
 //   picture.write_png(stream);
 
-#include <vtp_tools/colour_map.h>
-#include <vtp_tools/number_format.h>
+#include <vtp_support/colour_map.h>
+#include <vtp_support/number_format.h>
 
 #include <cairo.h>
 #include <png.h>
@@ -45,7 +45,7 @@
 #include <string>
 #include <vector>
 
-namespace vtp_tools {
+namespace vtp_support {
 
 struct Picture_options
 {
@@ -715,6 +715,6 @@ private:
   std::vector<std::vector<Vec3> > m_polylines;
 };
 
-} // namespace vtp_tools
+} // namespace vtp_support
 
-#endif // VTP_TOOLS_PICTURE_H
+#endif // VTP_SUPPORT_PICTURE_H

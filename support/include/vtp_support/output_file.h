@@ -7,8 +7,8 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef VTP_TOOLS_OUTPUT_FILE_H
-#define VTP_TOOLS_OUTPUT_FILE_H
+#ifndef VTP_SUPPORT_OUTPUT_FILE_H
+#define VTP_SUPPORT_OUTPUT_FILE_H
 
 // Output files that never destroy anything (POSIX):
 //
@@ -42,7 +42,7 @@
 #include <sys/types.h>
 #include <unistd.h>
 
-namespace vtp_tools {
+namespace vtp_support {
 
 // Error of an output file; the message is one line that names the file.
 struct Output_error : std::runtime_error
@@ -355,6 +355,6 @@ private:
   std::unique_ptr<std::ostream> m_stream;
 };
 
-} // namespace vtp_tools
+} // namespace vtp_support
 
-#endif // VTP_TOOLS_OUTPUT_FILE_H
+#endif // VTP_SUPPORT_OUTPUT_FILE_H

@@ -7,8 +7,8 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef VTP_TOOLS_DISTANCE_PLY_H
-#define VTP_TOOLS_DISTANCE_PLY_H
+#ifndef VTP_SUPPORT_DISTANCE_PLY_H
+#define VTP_SUPPORT_DISTANCE_PLY_H
 
 // A distance field as a PLY file: the mesh as read (the vertices of the file in file order, and its faces),
 // with the per-vertex properties
@@ -19,8 +19,8 @@
 // CGAL::IO::write_PLY and CGAL::IO::write_PLY_with_properties). MeshLab, ParaView and Blender show the colours;
 // ParaView also colours by `distance`.
 
-#include <vtp_tools/colour_map.h>
-#include <vtp_tools/read_mesh.h>
+#include <vtp_support/colour_map.h>
+#include <vtp_support/read_mesh.h>
 
 #include <CGAL/IO/PLY.h>
 #include <CGAL/IO/io.h>
@@ -34,7 +34,7 @@
 #include <string>
 #include <vector>
 
-namespace vtp_tools {
+namespace vtp_support {
 
 namespace ply_detail {
 
@@ -140,6 +140,6 @@ inline void write_distance_ply(std::ostream& os, const Input_mesh& input, const 
   }
 }
 
-} // namespace vtp_tools
+} // namespace vtp_support
 
-#endif // VTP_TOOLS_DISTANCE_PLY_H
+#endif // VTP_SUPPORT_DISTANCE_PLY_H

@@ -7,8 +7,8 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef VTP_TOOLS_NUMBER_FORMAT_H
-#define VTP_TOOLS_NUMBER_FORMAT_H
+#ifndef VTP_SUPPORT_NUMBER_FORMAT_H
+#define VTP_SUPPORT_NUMBER_FORMAT_H
 
 // Fast text output of numbers: the shortest decimal text that reads back as exactly the same double
 // (std::to_chars), "inf" / "-inf" for infinities and "nan" for NaN.
@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-namespace vtp_tools {
+namespace vtp_support {
 
 // Room needed by `format_double()`: the longest shortest round-trip text of a double is 24 characters
 // ("-2.2250738585072014e-308").
@@ -69,6 +69,6 @@ inline void write_values_text(std::ostream& os, const std::vector<double>& value
   }
 }
 
-} // namespace vtp_tools
+} // namespace vtp_support
 
-#endif // VTP_TOOLS_NUMBER_FORMAT_H
+#endif // VTP_SUPPORT_NUMBER_FORMAT_H

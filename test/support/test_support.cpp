@@ -1,14 +1,14 @@
-// Tests of the code shared by the command-line tools (apps/common): safe output files, number formatting, the
+// Tests of the code shared by the command-line tools (support/): safe output files, number formatting, the
 // fast OFF reader (against CGAL's reader), the PLY writer (read back with CGAL's PLY reader) and the picture.
 //
-// Every file these tests write is in VTP_TOOLS_TEST_TMP_DIR (in the build tree).
+// Every file these tests write is in VTP_SUPPORT_TEST_TMP_DIR (in the build tree).
 
-#include <vtp_tools/distance_ply.h>
-#include <vtp_tools/fast_off_reader.h>
-#include <vtp_tools/number_format.h>
-#include <vtp_tools/output_file.h>
-#include <vtp_tools/picture.h>
-#include <vtp_tools/read_mesh.h>
+#include <vtp_support/distance_ply.h>
+#include <vtp_support/fast_off_reader.h>
+#include <vtp_support/number_format.h>
+#include <vtp_support/output_file.h>
+#include <vtp_support/picture.h>
+#include <vtp_support/read_mesh.h>
 
 #include <CGAL/IO/OFF.h>
 #include <CGAL/IO/read_ply_points.h>
@@ -37,12 +37,12 @@
 
 namespace {
 
-using vtp_tools::Mesh;
-using vtp_tools::Point_3;
-using vtp_tools::Vertex_index;
+using vtp_support::Mesh;
+using vtp_support::Point_3;
+using vtp_support::Vertex_index;
 
-const std::string tmp_dir = VTP_TOOLS_TEST_TMP_DIR;
-const std::string mesh_dir = VTP_TOOLS_TEST_MESH_DIR;
+const std::string tmp_dir = VTP_SUPPORT_TEST_TMP_DIR;
+const std::string mesh_dir = VTP_SUPPORT_TEST_MESH_DIR;
 
 std::string read_all(const std::string& file)
 {
@@ -104,8 +104,8 @@ TEST(OutputFile, NewRegularFileAppearsOnlyAtCommit)
   const std::string folder = fresh_folder("new_file");
   const std::string target = folder + "/out.txt";
   {
-    vtp_tools::Output_file f(target);
-    EXPECT_EQ(f.kind(), vtp_tools::Output_file::REPLACED);
+    vtp_support::Output_file f(target);
+    EXPECT_EQ(f.kind(), vtp_support::Output_file::REPLACED);
     f.stream() << "hello\n";
     f.close();
     EXPECT_NE(::access(target.c_str(), F_OK), 0) << "the target exists before commit()";
@@ -122,7 +122,7 @@ TEST(OutputFile, UncommittedFileLeavesTheTargetAsItWas)
   const std::string target = folder + "/out.txt";
   write_all(target, "old\n");
   {
-    vtp_tools::Output_file f(target);
+    vtp_support::Output_file f(target);
     f.stream() << "new, but never committed\n";
   }
   EXPECT_EQ(read_all(target), "old\n");
@@ -138,7 +138,7 @@ TEST(OutputFile, ExistingFileIsReplacedAtomicallyAndKeepsItsMode)
   struct stat before, after;
   ASSERT_EQ(::stat(target.c_str(), &before), 0);
   {
-    vtp_tools::Output_file f(target);
+    vtp_support::Output_file f(target);
     f.stream() << "new\n";
     f.commit();
   }
@@ -155,8 +155,8 @@ TEST(OutputFile, SymbolicLinksAreFollowedAndStay)
   ASSERT_EQ(::symlink("target.txt", (folder + "/link1").c_str()), 0);   // relative link
   ASSERT_EQ(::symlink((folder + "/link1").c_str(), (folder + "/link2").c_str()), 0); // chain of two
   {
-    vtp_tools::Output_file f(folder + "/link2");
-    EXPECT_EQ(f.kind(), vtp_tools::Output_file::REPLACED);
+    vtp_support::Output_file f(folder + "/link2");
+    EXPECT_EQ(f.kind(), vtp_support::Output_file::REPLACED);
     EXPECT_EQ(f.target(), folder + "/target.txt");
     f.stream() << "new\n";
     f.commit();
@@ -172,7 +172,7 @@ TEST(OutputFile, DanglingLinkGetsItsTargetCreated)
   const std::string folder = fresh_folder("dangling");
   ASSERT_EQ(::symlink("target.txt", (folder + "/link").c_str()), 0);
   {
-    vtp_tools::Output_file f(folder + "/link");
+    vtp_support::Output_file f(folder + "/link");
     f.stream() << "new\n";
     f.commit();
   }
@@ -188,8 +188,8 @@ TEST(OutputFile, FifoIsWrittenThrough)
   std::string received;
   std::thread reader([&] { received = read_all(fifo); });
   {
-    vtp_tools::Output_file f(fifo);
-    EXPECT_EQ(f.kind(), vtp_tools::Output_file::WRITTEN_THROUGH);
+    vtp_support::Output_file f(fifo);
+    EXPECT_EQ(f.kind(), vtp_support::Output_file::WRITTEN_THROUGH);
     f.stream() << "through the pipe\n";
     f.commit();
   }
@@ -204,8 +204,8 @@ TEST(OutputFile, FifoIsWrittenThrough)
 TEST(OutputFile, DevicesAndStandardOutputAreWrittenThrough)
 {
   {
-    vtp_tools::Output_file f("/dev/null");
-    EXPECT_EQ(f.kind(), vtp_tools::Output_file::WRITTEN_THROUGH);
+    vtp_support::Output_file f("/dev/null");
+    EXPECT_EQ(f.kind(), vtp_support::Output_file::WRITTEN_THROUGH);
     f.stream() << "nothing\n";
     f.commit();
   }
@@ -214,13 +214,13 @@ TEST(OutputFile, DevicesAndStandardOutputAreWrittenThrough)
   EXPECT_TRUE(S_ISCHR(st.st_mode));
   for(const char* name : { "-", "/dev/stdout", "/dev/fd/1", "/proc/self/fd/1" })
   {
-    vtp_tools::Output_file f(name);
+    vtp_support::Output_file f(name);
     EXPECT_TRUE(f.writes_to_stdout()) << name;
     f.commit();
   }
   EXPECT_TRUE(is_symlink("/dev/stdout"));
   {
-    vtp_tools::Output_file f("/dev/stderr");
+    vtp_support::Output_file f("/dev/stderr");
     EXPECT_EQ(f.descriptor(), 2);
   }
 }
@@ -228,9 +228,9 @@ TEST(OutputFile, DevicesAndStandardOutputAreWrittenThrough)
 TEST(OutputFile, FoldersAndMissingFoldersAreErrors)
 {
   const std::string folder = fresh_folder("errors");
-  EXPECT_THROW(vtp_tools::Output_file f(folder), vtp_tools::Output_error);
-  EXPECT_THROW(vtp_tools::Output_file f(folder + "/no_such_folder/out.txt"), vtp_tools::Output_error);
-  EXPECT_THROW(vtp_tools::Output_file f(""), vtp_tools::Output_error);
+  EXPECT_THROW(vtp_support::Output_file f(folder), vtp_support::Output_error);
+  EXPECT_THROW(vtp_support::Output_file f(folder + "/no_such_folder/out.txt"), vtp_support::Output_error);
+  EXPECT_THROW(vtp_support::Output_file f(""), vtp_support::Output_error);
 }
 
 TEST(OutputFile, WriteErrorsAreReported)
@@ -238,9 +238,9 @@ TEST(OutputFile, WriteErrorsAreReported)
   struct stat st;
   if(::stat("/dev/full", &st) != 0)
     GTEST_SKIP() << "no /dev/full";
-  vtp_tools::Output_file f("/dev/full");
+  vtp_support::Output_file f("/dev/full");
   f.stream() << std::string(1 << 21, 'x');
-  EXPECT_THROW(f.close(), vtp_tools::Output_error);
+  EXPECT_THROW(f.close(), vtp_support::Output_error);
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -253,16 +253,16 @@ TEST(NumberFormat, ShortestTextReadsBackExactly)
   for(int i = 0; i < 100000; ++i)
   {
     const double x = uniform(random) * std::pow(10., static_cast<int>(random() % 40) - 20);
-    const std::string text = vtp_tools::double_to_string(x);
+    const std::string text = vtp_support::double_to_string(x);
     EXPECT_EQ(std::strtod(text.c_str(), nullptr), x) << text;
   }
-  EXPECT_EQ(vtp_tools::double_to_string(std::numeric_limits<double>::infinity()), "inf");
-  EXPECT_EQ(vtp_tools::double_to_string(-std::numeric_limits<double>::infinity()), "-inf");
-  EXPECT_EQ(vtp_tools::double_to_string(0.), "0");
-  EXPECT_EQ(vtp_tools::double_to_string(1.), "1");
-  EXPECT_EQ(vtp_tools::double_to_string(0.1), "0.1");
+  EXPECT_EQ(vtp_support::double_to_string(std::numeric_limits<double>::infinity()), "inf");
+  EXPECT_EQ(vtp_support::double_to_string(-std::numeric_limits<double>::infinity()), "-inf");
+  EXPECT_EQ(vtp_support::double_to_string(0.), "0");
+  EXPECT_EQ(vtp_support::double_to_string(1.), "1");
+  EXPECT_EQ(vtp_support::double_to_string(0.1), "0.1");
   std::ostringstream os;
-  vtp_tools::write_values_text(os, { 0., 0.5, std::numeric_limits<double>::infinity() });
+  vtp_support::write_values_text(os, { 0., 0.5, std::numeric_limits<double>::infinity() });
   EXPECT_EQ(os.str(), "0\n0.5\ninf\n");
 }
 
@@ -309,8 +309,8 @@ TEST(FastOffReader, SameMeshAsCgal)
   {
     SCOPED_TRACE(name);
     Mesh fast, cgal;
-    const vtp_tools::Fast_off_result r = vtp_tools::read_off_triangle_mesh(mesh_dir + "/" + name, fast);
-    ASSERT_EQ(r.status, vtp_tools::Fast_off_result::MESH) << r.reason;
+    const vtp_support::Fast_off_result r = vtp_support::read_off_triangle_mesh(mesh_dir + "/" + name, fast);
+    ASSERT_EQ(r.status, vtp_support::Fast_off_result::MESH) << r.reason;
     ASSERT_TRUE(CGAL::IO::read_polygon_mesh(mesh_dir + "/" + name, cgal));
     expect_same_mesh(fast, cgal);
   }
@@ -325,14 +325,14 @@ TEST(FastOffReader, SameMeshWithAnyNumberOfThreads)
   {
     SCOPED_TRACE(name);
     Mesh one;
-    ASSERT_EQ(vtp_tools::read_off_triangle_mesh(mesh_dir + "/" + name, one, 1).status,
-              vtp_tools::Fast_off_result::MESH);
+    ASSERT_EQ(vtp_support::read_off_triangle_mesh(mesh_dir + "/" + name, one, 1).status,
+              vtp_support::Fast_off_result::MESH);
     for(int threads : { 2, 3, 0 })
     {
       SCOPED_TRACE(threads);
       Mesh many;
-      ASSERT_EQ(vtp_tools::read_off_triangle_mesh(mesh_dir + "/" + name, many, threads).status,
-                vtp_tools::Fast_off_result::MESH);
+      ASSERT_EQ(vtp_support::read_off_triangle_mesh(mesh_dir + "/" + name, many, threads).status,
+                vtp_support::Fast_off_result::MESH);
       ASSERT_TRUE(many.is_valid(false)); // (Surface_mesh's check: a file has isolated vertices)
       ASSERT_EQ(many.number_of_halfedges(), one.number_of_halfedges());
       ASSERT_EQ(many.number_of_faces(), one.number_of_faces());
@@ -359,8 +359,8 @@ TEST(FastOffReader, SameMeshWithAnyNumberOfThreads)
     for(int threads : { 1, 2 })
     {
       Mesh m;
-      const vtp_tools::Fast_off_result r = vtp_tools::read_off_triangle_mesh(file, m, threads);
-      EXPECT_EQ(r.status, vtp_tools::Fast_off_result::NOT_HANDLED);
+      const vtp_support::Fast_off_result r = vtp_support::read_off_triangle_mesh(file, m, threads);
+      EXPECT_EQ(r.status, vtp_support::Fast_off_result::NOT_HANDLED);
       EXPECT_EQ(r.reason, c.second);
     }
   }
@@ -373,8 +373,8 @@ TEST(FastOffReader, CommentsBlankLinesAndFaceColours)
   write_all(file, "# a comment\nOFF\n\n# counts\n4 4 0\n0 0 0\n1 0 0 # trailing comment\n\t0 1 0\n0 0 1\r\n"
                   "3 0 2 1 255 0 0\n3 0 1 3\n\n3 1 2 3\n3 0 3 2\n");
   Mesh fast, cgal;
-  const vtp_tools::Fast_off_result r = vtp_tools::read_off_triangle_mesh(file, fast);
-  ASSERT_EQ(r.status, vtp_tools::Fast_off_result::MESH) << r.reason;
+  const vtp_support::Fast_off_result r = vtp_support::read_off_triangle_mesh(file, fast);
+  ASSERT_EQ(r.status, vtp_support::Fast_off_result::MESH) << r.reason;
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(file, cgal));
   expect_same_mesh(fast, cgal);
 }
@@ -397,7 +397,7 @@ TEST(FastOffReader, LeavesEverythingElseToCgal)
     const std::string file = folder + "/" + c.first + ".off";
     write_all(file, c.second);
     Mesh m;
-    EXPECT_EQ(vtp_tools::read_off_triangle_mesh(file, m).status, vtp_tools::Fast_off_result::NOT_HANDLED);
+    EXPECT_EQ(vtp_support::read_off_triangle_mesh(file, m).status, vtp_support::Fast_off_result::NOT_HANDLED);
   }
 }
 
@@ -421,10 +421,10 @@ TEST(FastOffReader, DefiniteErrors)
     Mesh m;
     try
     {
-      vtp_tools::read_off_triangle_mesh(file, m);
+      vtp_support::read_off_triangle_mesh(file, m);
       ADD_FAILURE() << "no error for: " << c.first;
     }
-    catch(const vtp_tools::Fast_off_error& e)
+    catch(const vtp_support::Fast_off_error& e)
     {
       EXPECT_EQ(std::string(e.what()), c.second);
     }
@@ -437,7 +437,7 @@ TEST(ReadInputMesh, TinyValuesUnderflowLikeCgal)
   const std::string file = folder + "/tiny.off";
   write_all(file, "OFF\n3 1 0\n0 0 0\n1e-320 0 0\n0 1e-400 1\n3 0 1 2\n");
   Mesh m;
-  ASSERT_EQ(vtp_tools::read_off_triangle_mesh(file, m).status, vtp_tools::Fast_off_result::MESH);
+  ASSERT_EQ(vtp_support::read_off_triangle_mesh(file, m).status, vtp_support::Fast_off_result::MESH);
   EXPECT_EQ(m.point(Vertex_index(1)).x(), 1e-320);
   EXPECT_EQ(m.point(Vertex_index(2)).y(), 0.);
 }
@@ -447,8 +447,8 @@ TEST(ReadInputMesh, TinyValuesUnderflowLikeCgal)
 // ------------------------------------------------------------------------------------------------
 void check_ply_round_trip(const std::string& mesh_file, bool with_labels)
 {
-  vtp_tools::Input_mesh input;
-  vtp_tools::read_input_mesh(mesh_file, input);
+  vtp_support::Input_mesh input;
+  vtp_support::read_input_mesh(mesh_file, input);
   std::vector<double> distances(input.file_vertices);
   std::vector<int> labels(input.file_vertices);
   for(std::size_t i = 0; i < distances.size(); ++i)
@@ -460,8 +460,8 @@ void check_ply_round_trip(const std::string& mesh_file, bool with_labels)
 
   const std::string file = fresh_folder("ply") + "/out.ply";
   {
-    vtp_tools::Output_file f(file);
-    vtp_tools::write_distance_ply(f.stream(), input, distances, with_labels ? &labels : nullptr, 1., "test");
+    vtp_support::Output_file f(file);
+    vtp_support::write_distance_ply(f.stream(), input, distances, with_labels ? &labels : nullptr, 1., "test");
     f.commit();
   }
   // Faces, as a polygon soup (a repaired input is written as read, and may not be a valid mesh).
@@ -525,13 +525,13 @@ void check_ply_round_trip(const std::string& mesh_file, bool with_labels)
     {
       EXPECT_EQ(std::get<2>(rows[i]), labels[i]);
     }
-    const vtp_tools::Rgb c = vtp_tools::colour_of_distance(distances[i], 1.);
+    const vtp_support::Rgb c = vtp_support::colour_of_distance(distances[i], 1.);
     EXPECT_EQ(std::get<3>(rows[i]), c.r);
     EXPECT_EQ(std::get<4>(rows[i]), c.g);
     EXPECT_EQ(std::get<5>(rows[i]), c.b);
   }
   // Unreachable: grey.
-  EXPECT_EQ(std::get<3>(rows.back()), vtp_tools::unreachable_colour().r);
+  EXPECT_EQ(std::get<3>(rows.back()), vtp_support::unreachable_colour().r);
   // The file also opens as a mesh with a `distance` property when it is one.
   if(input.direct)
   {
@@ -554,7 +554,7 @@ TEST(DistancePly, RepairedInputIsWrittenAsRead)
 {
   // Two tetrahedra sharing vertex 0, plus an isolated vertex: repaired (vertex 0 duplicated) for the
   // computation, written back with the 8 vertices and 8 faces of the file.
-  check_ply_round_trip(VTP_TOOLS_TEST_CLI_DATA_DIR "/nonmanifold_vertex.off", true);
+  check_ply_round_trip(VTP_SUPPORT_TEST_CLI_DATA_DIR "/nonmanifold_vertex.off", true);
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -576,9 +576,9 @@ struct Rendered
 Rendered render(const Mesh& m, const std::vector<double>& values, int isolines, bool marker,
                const std::vector<std::array<double, 3> >& polyline = std::vector<std::array<double, 3> >())
 {
-  vtp_tools::Picture_options o;
+  vtp_support::Picture_options o;
   o.isolines = isolines;
-  vtp_tools::Distance_picture picture(o);
+  vtp_support::Distance_picture picture(o);
   double max_value = 0.;
   for(double v : values)
     if(std::isfinite(v))
@@ -675,12 +675,12 @@ TEST(Picture, UnreachableIsGreyAndViewFitsTheMesh)
 
 TEST(Picture, RoundIsolineSteps)
 {
-  EXPECT_DOUBLE_EQ(vtp_tools::picture_detail::isoline_step(0.973, 10), 0.1);
-  EXPECT_DOUBLE_EQ(vtp_tools::picture_detail::isoline_step(1.8, 10), 0.2);
-  EXPECT_DOUBLE_EQ(vtp_tools::picture_detail::isoline_step(230., 10), 25.);
-  EXPECT_EQ(vtp_tools::picture_detail::isoline_step(1., 0), 0.);
-  EXPECT_EQ(vtp_tools::picture_detail::label_text(0.25, 0.25), "0.25");
-  EXPECT_EQ(vtp_tools::picture_detail::label_text(30., 10.), "30");
+  EXPECT_DOUBLE_EQ(vtp_support::picture_detail::isoline_step(0.973, 10), 0.1);
+  EXPECT_DOUBLE_EQ(vtp_support::picture_detail::isoline_step(1.8, 10), 0.2);
+  EXPECT_DOUBLE_EQ(vtp_support::picture_detail::isoline_step(230., 10), 25.);
+  EXPECT_EQ(vtp_support::picture_detail::isoline_step(1., 0), 0.);
+  EXPECT_EQ(vtp_support::picture_detail::label_text(0.25, 0.25), "0.25");
+  EXPECT_EQ(vtp_support::picture_detail::label_text(30., 10.), "30");
 }
 
 } // namespace

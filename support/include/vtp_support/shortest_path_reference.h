@@ -7,8 +7,8 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef VTP_TOOLS_SHORTEST_PATH_REFERENCE_H
-#define VTP_TOOLS_SHORTEST_PATH_REFERENCE_H
+#ifndef VTP_SUPPORT_SHORTEST_PATH_REFERENCE_H
+#define VTP_SUPPORT_SHORTEST_PATH_REFERENCE_H
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Surface_mesh.h>
@@ -24,7 +24,7 @@
 #include <utility>
 #include <vector>
 
-namespace vtp_tools {
+namespace vtp_support {
 
 // Reference distances computed with `CGAL::Surface_mesh_shortest_path` (Chen and Han / Xin and Wang),
 // with the traits `Surface_mesh_shortest_path_traits<K, Surface_mesh<Point>>`, `K` being the kernel of
@@ -217,6 +217,6 @@ inline Distance_comparison compare_distances(const std::vector<double>& a, const
   return result;
 }
 
-} // namespace vtp_tools
+} // namespace vtp_support
 
-#endif // VTP_TOOLS_SHORTEST_PATH_REFERENCE_H
+#endif // VTP_SUPPORT_SHORTEST_PATH_REFERENCE_H

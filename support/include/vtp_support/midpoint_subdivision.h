@@ -7,8 +7,8 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef VTP_TOOLS_MIDPOINT_SUBDIVISION_H
-#define VTP_TOOLS_MIDPOINT_SUBDIVISION_H
+#ifndef VTP_SUPPORT_MIDPOINT_SUBDIVISION_H
+#define VTP_SUPPORT_MIDPOINT_SUBDIVISION_H
 
 #include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -23,7 +23,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace vtp_tools {
+namespace vtp_support {
 
 // Performs `levels` rounds of 1-to-4 midpoint subdivision of the triangle mesh `m`: a new vertex
 // is inserted at the midpoint of every edge and every triangle is split into four triangles (three
@@ -99,6 +99,6 @@ void midpoint_subdivide(PolygonMesh& m, int levels = 1)
   }
 }
 
-} // namespace vtp_tools
+} // namespace vtp_support
 
-#endif // VTP_TOOLS_MIDPOINT_SUBDIVISION_H
+#endif // VTP_SUPPORT_MIDPOINT_SUBDIVISION_H

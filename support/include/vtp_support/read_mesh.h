@@ -7,8 +7,8 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef VTP_TOOLS_READ_MESH_H
-#define VTP_TOOLS_READ_MESH_H
+#ifndef VTP_SUPPORT_READ_MESH_H
+#define VTP_SUPPORT_READ_MESH_H
 
 // Reading a mesh file into the triangle mesh of a computation, for the command-line tools.
 //
@@ -20,9 +20,9 @@
 //   repair of soups that are not valid meshes), which tells which mesh vertices stand for each file vertex.
 // Results are reported per vertex of the file with `Input_mesh::on_file_vertices()`.
 
-#include <vtp_tools/fast_off_reader.h>
-#include <vtp_tools/mesh_formats.h>
-#include <vtp_tools/triangle_mesh_from_soup.h>
+#include <vtp_support/fast_off_reader.h>
+#include <vtp_support/mesh_formats.h>
+#include <vtp_support/triangle_mesh_from_soup.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -46,7 +46,7 @@
 #include <errno.h>
 #include <sys/stat.h>
 
-namespace vtp_tools {
+namespace vtp_support {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point_3;
@@ -314,6 +314,6 @@ inline void read_input_mesh(const std::string& file, Input_mesh& input, int thre
   input.repair_seconds = read_detail::seconds_since(t1);
 }
 
-} // namespace vtp_tools
+} // namespace vtp_support
 
-#endif // VTP_TOOLS_READ_MESH_H
+#endif // VTP_SUPPORT_READ_MESH_H

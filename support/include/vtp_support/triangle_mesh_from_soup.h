@@ -7,8 +7,8 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef VTP_TOOLS_TRIANGLE_MESH_FROM_SOUP_H
-#define VTP_TOOLS_TRIANGLE_MESH_FROM_SOUP_H
+#ifndef VTP_SUPPORT_TRIANGLE_MESH_FROM_SOUP_H
+#define VTP_SUPPORT_TRIANGLE_MESH_FROM_SOUP_H
 
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 
@@ -30,7 +30,7 @@
 #include <utility>
 #include <vector>
 
-namespace vtp_tools {
+namespace vtp_support {
 
 // What `triangle_mesh_from_soup()` did to make a triangle mesh out of a polygon soup.
 struct Soup_repair_report
@@ -276,6 +276,6 @@ std::vector<double> values_on_soup_points(const std::vector<std::size_t>& copy_b
   return result;
 }
 
-} // namespace vtp_tools
+} // namespace vtp_support
 
-#endif // VTP_TOOLS_TRIANGLE_MESH_FROM_SOUP_H
+#endif // VTP_SUPPORT_TRIANGLE_MESH_FROM_SOUP_H

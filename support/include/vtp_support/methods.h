@@ -7,8 +7,8 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef VTP_TOOLS_METHODS_H
-#define VTP_TOOLS_METHODS_H
+#ifndef VTP_SUPPORT_METHODS_H
+#define VTP_SUPPORT_METHODS_H
 
 // The table of the package's methods, shared by the command-line tools and the benchmark: each method
 // is one choice of scheduling (sequential or parallel) and of window resets (exact or approximate).
@@ -16,7 +16,7 @@
 #include <cstddef>
 #include <string>
 
-namespace vtp_tools {
+namespace vtp_support {
 
 struct Method_info
 {
@@ -76,6 +76,6 @@ inline bool parallel_methods_available()
 
 inline bool method_available(const Method_info& m) { return !m.parallel || parallel_methods_available(); }
 
-} // namespace vtp_tools
+} // namespace vtp_support
 
-#endif // VTP_TOOLS_METHODS_H
+#endif // VTP_SUPPORT_METHODS_H

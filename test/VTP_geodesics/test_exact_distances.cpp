@@ -1,17 +1,24 @@
-// Analytic ground truth: meshes whose exact geodesic distances follow from elementary geometry
-// (planar domains, developable surfaces, unfoldings of convex polyhedra). No expected value
-// comes from the code under test.
+// Exact distances from one source vertex (VTP), against values that do not come from the code under test:
+// - closed forms: meshes whose geodesic distances follow from elementary geometry (planar domains,
+//   developable surfaces, unfoldings of convex polyhedra);
+// - CGAL::Surface_mesh_shortest_path (an independent exact algorithm) on real meshes, one case per
+//   (mesh, source), sources on the boundary and at saddle vertices included;
+// - invariance under midpoint subdivision.
+// Hard but valid meshes (components, degenerate faces, ...) are in test_hard_meshes.cpp.
 
 #include "vtp_test_meshes.h"
 #include "vtp_test_utils.h"
 
-#include <vtp_tools/midpoint_subdivision.h>
+#include <vtp_support/midpoint_subdivision.h>
+#include <vtp_support/shortest_path_reference.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -279,7 +286,7 @@ TEST(Analytic, subdivided_regular_tetrahedron)
   for(int levels = 1; levels <= 4; ++levels)
   {
     Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
-    vtp_tools::midpoint_subdivide(mesh, levels);
+    vtp_support::midpoint_subdivide(mesh, levels);
     ASSERT_EQ(num_faces(mesh), std::size_t(4) << (2 * levels));
     ASSERT_EQ(mesh.point(Vertex_index(0)), t[0]);
 
@@ -312,4 +319,177 @@ TEST(Analytic, subdivided_regular_tetrahedron)
       EXPECT_NEAR(d[vi], std::sqrt(19.) * a / 4., EXACT_TOLERANCE * a);
     }
   }
+}
+
+using vtp_support::midpoint_subdivide;
+using vtp_support::shortest_path_reference_distances;
+
+namespace {
+
+// Meshes are read once per process.
+const Surface_mesh& cached_mesh(const std::string& name)
+{
+  static std::map<std::string, Surface_mesh> cache;
+  auto it = cache.find(name);
+  if(it == cache.end())
+    it = cache.emplace(name, load_mesh(name)).first;
+  return it->second;
+}
+
+std::size_t count_finite(const std::vector<double>& d)
+{
+  std::size_t n = 0;
+  for(double x : d)
+    if(std::isfinite(x))
+      ++n;
+  return n;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Oracle: CGAL::Surface_mesh_shortest_path, one test case per (mesh, source).
+// ---------------------------------------------------------------------------------------------------
+
+enum class Source_choice { first, middle, last, boundary, saddle };
+
+const char* source_choice_name(Source_choice c)
+{
+  switch(c)
+  {
+    case Source_choice::first: return "first_vertex";
+    case Source_choice::middle: return "middle_vertex";
+    case Source_choice::last: return "last_vertex";
+    case Source_choice::boundary: return "boundary_vertex";
+    case Source_choice::saddle: return "saddle_vertex";
+  }
+  return "unknown";
+}
+
+struct Oracle_case
+{
+  std::string mesh;
+  Source_choice source;
+};
+
+std::ostream& operator<<(std::ostream& os, const Oracle_case& c)
+{
+  return os << c.mesh << " / " << source_choice_name(c.source);
+}
+
+std::string oracle_case_name(const ::testing::TestParamInfo<Oracle_case>& info)
+{
+  std::string name = info.param.mesh.substr(0, info.param.mesh.rfind('.'));
+  for(char& ch : name)
+    if(!std::isalnum(static_cast<unsigned char>(ch)))
+      ch = '_';
+  return name + "__" + source_choice_name(info.param.source);
+}
+
+class Oracle : public ::testing::TestWithParam<Oracle_case>
+{};
+
+TEST_P(Oracle, matches_surface_mesh_shortest_path)
+{
+  const Surface_mesh& mesh = cached_mesh(GetParam().mesh);
+  const std::size_t n = num_vertices(mesh);
+  Vertex_index source;
+  switch(GetParam().source)
+  {
+    case Source_choice::first: source = Vertex_index(0); break;
+    case Source_choice::middle: source = Vertex_index(static_cast<Surface_mesh::size_type>(n / 2)); break;
+    case Source_choice::last: source = Vertex_index(static_cast<Surface_mesh::size_type>(n - 1)); break;
+    case Source_choice::boundary:
+      source = first_boundary_vertex(mesh);
+      ASSERT_NE(source, Surface_mesh::null_vertex()) << "the mesh has no boundary";
+      ASSERT_TRUE(mesh.is_border(source));
+      break;
+    case Source_choice::saddle:
+      source = strongest_saddle_vertex(mesh);
+      ASSERT_NE(source, Surface_mesh::null_vertex()) << "the mesh has no saddle vertex";
+      ASSERT_GT(angle_sum(mesh, source), 2. * PI);
+      ASSERT_FALSE(mesh.is_border(source));
+      break;
+  }
+
+  const std::vector<double> reference = shortest_path_reference_distances(mesh, source);
+  ASSERT_EQ(count_finite(reference), n) << "the test meshes are connected";
+  const std::vector<double> d = vtp_distances(mesh, source);
+  EXPECT_EQ(d[source], 0.);
+  std::ostringstream what;
+  what << GetParam() << " (vertex " << std::size_t(source) << ")";
+  EXPECT_TRUE(distances_near(d, reference, EXACT_TOLERANCE, what.str()));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+  Real_meshes, Oracle,
+  ::testing::Values(Oracle_case{"elephant-with-holes.off", Source_choice::boundary},
+                    Oracle_case{"elephant-with-holes.off", Source_choice::saddle},
+                    Oracle_case{"elephant-with-holes.off", Source_choice::middle},
+                    Oracle_case{"elephant.off", Source_choice::first},
+                    Oracle_case{"elephant.off", Source_choice::middle},
+                    Oracle_case{"elephant.off", Source_choice::saddle},
+                    Oracle_case{"mushroom.off", Source_choice::first},
+                    Oracle_case{"mushroom.off", Source_choice::boundary},
+                    Oracle_case{"mushroom.off", Source_choice::saddle},
+                    Oracle_case{"three_peaks.off", Source_choice::middle},
+                    Oracle_case{"three_peaks.off", Source_choice::boundary},
+                    Oracle_case{"three_peaks.off", Source_choice::saddle},
+                    Oracle_case{"knot1.off", Source_choice::first},
+                    Oracle_case{"knot1.off", Source_choice::middle},
+                    Oracle_case{"knot1.off", Source_choice::saddle},
+                    Oracle_case{"mech-holes-shark.off", Source_choice::first},
+                    Oracle_case{"mech-holes-shark.off", Source_choice::boundary},
+                    Oracle_case{"mech-holes-shark.off", Source_choice::saddle},
+                    Oracle_case{"sphere.off", Source_choice::first},
+                    Oracle_case{"sphere.off", Source_choice::middle},
+                    Oracle_case{"sphere.off", Source_choice::last}),
+  oracle_case_name);
+
+// ---------------------------------------------------------------------------------------------------
+// Invariance: 1-to-4 midpoint subdivision keeps the surface (each triangle is cut into four coplanar
+// ones), hence the geodesic distances between the original vertices.
+// ---------------------------------------------------------------------------------------------------
+
+void check_subdivision_invariance(const Surface_mesh& mesh, int levels, const std::vector<Vertex_index>& sources,
+                                  const std::string& name)
+{
+  Surface_mesh fine = mesh;
+  midpoint_subdivide(fine, levels);
+  const std::size_t n = num_vertices(mesh);
+  ASSERT_EQ(num_faces(fine), num_faces(mesh) << (2 * levels));
+  for(Vertex_index v : vertices(mesh))
+    ASSERT_EQ(fine.point(v), mesh.point(v)) << "the original vertices must come first, in order";
+
+  for(Vertex_index s : sources)
+  {
+    const std::vector<double> coarse_d = vtp_distances(mesh, s);
+    const std::vector<double> fine_d = vtp_distances(fine, s);
+    const std::vector<double> fine_on_coarse(fine_d.begin(), fine_d.begin() + static_cast<std::ptrdiff_t>(n));
+    EXPECT_TRUE(distances_near(fine_on_coarse, coarse_d, EXACT_TOLERANCE,
+                               name + ", " + std::to_string(levels) + " subdivision level(s), source " +
+                                 std::to_string(std::size_t(s))));
+  }
+}
+
+} // namespace
+
+TEST(Subdivision_invariance, elephant)
+{
+  const Surface_mesh& mesh = cached_mesh("elephant.off");
+  check_subdivision_invariance(mesh, 1, {Vertex_index(0), strongest_saddle_vertex(mesh)}, "elephant");
+}
+
+TEST(Subdivision_invariance, mushroom_with_boundary)
+{
+  const Surface_mesh& mesh = cached_mesh("mushroom.off");
+  check_subdivision_invariance(mesh, 1, {Vertex_index(7), first_boundary_vertex(mesh)}, "mushroom");
+}
+
+TEST(Subdivision_invariance, jittered_grid)
+{
+  const int n = 24;
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(planar_grid(n, n, 1., 1., 0.3, 4242u));
+  check_subdivision_invariance(mesh, 2,
+                               {Vertex_index(static_cast<Surface_mesh::size_type>(grid_vertex(n, 0, 0))),
+                                Vertex_index(static_cast<Surface_mesh::size_type>(grid_vertex(n, 13, 9)))},
+                               "jittered grid");
 }

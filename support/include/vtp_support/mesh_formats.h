@@ -7,8 +7,8 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef VTP_TOOLS_MESH_FORMATS_H
-#define VTP_TOOLS_MESH_FORMATS_H
+#ifndef VTP_SUPPORT_MESH_FORMATS_H
+#define VTP_SUPPORT_MESH_FORMATS_H
 
 // The mesh file formats the tools read, by file extension.
 
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace vtp_tools {
+namespace vtp_support {
 
 inline std::string lower_extension(const std::string& file)
 {
@@ -48,6 +48,6 @@ inline std::string readable_extensions_text()
   return s;
 }
 
-} // namespace vtp_tools
+} // namespace vtp_support
 
-#endif // VTP_TOOLS_MESH_FORMATS_H
+#endif // VTP_SUPPORT_MESH_FORMATS_H

@@ -7,8 +7,8 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef VTP_TOOLS_FAST_OFF_READER_H
-#define VTP_TOOLS_FAST_OFF_READER_H
+#ifndef VTP_SUPPORT_FAST_OFF_READER_H
+#define VTP_SUPPORT_FAST_OFF_READER_H
 
 // A fast path from a plain ASCII OFF file that is a valid triangle mesh to a `Surface_mesh`: the file is parsed in
 // chunks with std::from_chars, checked to be a valid mesh with the same rules as
@@ -40,7 +40,7 @@
 #include <omp.h>
 #endif
 
-namespace vtp_tools {
+namespace vtp_support {
 
 struct Fast_off_error : std::runtime_error
 {
@@ -532,6 +532,6 @@ Fast_off_result read_off_triangle_mesh(const std::string& file, CGAL::Surface_me
   return result;
 }
 
-} // namespace vtp_tools
+} // namespace vtp_support
 
-#endif // VTP_TOOLS_FAST_OFF_READER_H
+#endif // VTP_SUPPORT_FAST_OFF_READER_H
