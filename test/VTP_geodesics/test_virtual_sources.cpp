@@ -348,3 +348,25 @@ TEST(Virtual_sources, compute_each_parallel_tag_and_unreachable)
   for(std::size_t i = 0; i < d.size(); ++i)
     EXPECT_EQ(std::isinf(d[i]), i >= 4) << "vertex " << i;
 }
+
+// Hard but valid input (zero-length edges, nearly collinear faces, boundaries, several components): no
+// crash, no NaN, never below the exact distance, +infinity exactly where VTP has it.
+TEST(Virtual_sources, hard_meshes_keep_the_upper_bound)
+{
+  for(const char* name : {"degenerate_zero_length_edges.off", "nearly_collinear_flat.off",
+                          "nearly_collinear_height_field.off", "mech-holes-shark.off", "knot1.off", "mushroom.off"})
+  {
+    const Surface_mesh mesh = load_mesh(name);
+    Solver solver(mesh);
+    for(std::size_t s : {std::size_t(0), std::size_t(num_vertices(mesh) / 3)})
+    {
+      const Vertex_index v(static_cast<Surface_mesh::size_type>(s));
+      const std::vector<double> exact = run(solver, mesh, v, CGAL::parameters::default_values());
+      const std::vector<double> d = run(solver, mesh, v, VP::virtual_sources(true));
+      for(double x : d)
+        ASSERT_FALSE(std::isnan(x)) << name;
+      // the mean error is not the point here (a bound of 100%: only the upper bound and reachability)
+      EXPECT_TRUE(upper_bound_and_mean_error(d, exact, 1., std::string(name) + ", source " + std::to_string(s)));
+    }
+  }
+}
