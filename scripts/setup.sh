@@ -4,8 +4,9 @@
 # matplotlib (benchmark plots, and the colour map of the tools, sampled at configure time), cairo, libpng and a
 # font for the tools' pictures, Doxygen for the manual (`doc` target), and for vtp_distance_matrix: HDF5 (the
 # serial C library: all MPI ranks write the one file through MPI-IO, see apps/vtp_distance_matrix/matrix_store.h),
-# Open MPI, and h5py and SciPy to read its files back in the tests. Safe to run again (apt-get install is
-# idempotent).
+# Open MPI, and h5py and SciPy to read its files back in the tests; for the Python module vtp_geodesics: the
+# Python headers, pybind11, pytest, and setuptools, wheel, pip and venv for `pip install --no-build-isolation .`.
+# Safe to run again (apt-get install is idempotent).
 set -euo pipefail
 
 PACKAGES=(
@@ -30,6 +31,14 @@ PACKAGES=(
   python3-h5py
   python3-numpy
   python3-scipy
+  python3-dev
+  pybind11-dev
+  python3-pybind11
+  python3-pytest
+  python3-setuptools
+  python3-wheel
+  python3-pip
+  python3-venv
 )
 
 if [ "$(id -u)" -eq 0 ]; then

@@ -3,6 +3,8 @@
 #include "raw_file.h"
 #include "tool_error.h"
 
+#include <vtp_support/paths.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -34,15 +36,7 @@ std::string mpi_error(int code)
 }
 #endif
 
-std::string folder_of(const std::string& path)
-{
-  const std::string::size_type slash = path.find_last_of('/');
-  if(slash == std::string::npos)
-    return ".";
-  if(slash == 0)
-    return "/";
-  return path.substr(0, slash);
-}
+using vtp_support::folder_of;
 
 } // namespace
 
@@ -250,8 +244,8 @@ std::vector<std::string> files_with_prefix(const std::string& prefix)
 {
   std::vector<std::string> found;
   const std::string folder = folder_of(prefix);
-  const std::string::size_type slash = prefix.find_last_of('/');
-  const std::string name_prefix = slash == std::string::npos ? prefix : prefix.substr(slash + 1);
+  const bool bare_name = prefix.find('/') == std::string::npos;
+  const std::string name_prefix = vtp_support::file_name_of(prefix);
   DIR* dir = ::opendir(folder.c_str());
   if(dir == nullptr)
     return found;
@@ -259,7 +253,7 @@ std::vector<std::string> files_with_prefix(const std::string& prefix)
   {
     const std::string name = e->d_name;
     if(name.compare(0, name_prefix.size(), name_prefix) == 0)
-      found.push_back(slash == std::string::npos ? name : folder + "/" + name);
+      found.push_back(bare_name ? name : folder + "/" + name);
   }
   ::closedir(dir);
   return found;

@@ -13,75 +13,17 @@
 #include <vtp_support/mesh_formats.h>
 
 #include <algorithm>
-#include <cctype>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <string>
 
 namespace vtp_geodesics_app {
 
 namespace {
 
-std::size_t parse_index(const std::string& option, const std::string& s)
-{
-  if(s.empty() || !std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c) != 0; }))
-    throw Tool_error("invalid value '" + s + "' for " + option + " (expected a non-negative integer)");
-  errno = 0;
-  const unsigned long long v = std::strtoull(s.c_str(), nullptr, 10);
-  if(errno == ERANGE || v > static_cast<unsigned long long>(std::numeric_limits<std::size_t>::max()))
-    throw Tool_error("value '" + s + "' for " + option + " is too large");
-  return static_cast<std::size_t>(v);
-}
-
-double parse_double(const std::string& option, const std::string& s)
-{
-  const char* begin = s.c_str();
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(begin, &end);
-  if(s.empty() || end != begin + s.size() || std::isspace(static_cast<unsigned char>(s[0])) || std::isnan(v)
-     || (errno == ERANGE && std::isinf(v)))
-    throw Tool_error("invalid value '" + s + "' for " + option + " (expected a number)");
-  return v;
-}
-
-// "I,J,K": a non-empty list of indices.
-std::vector<std::size_t> parse_index_list(const std::string& option, const std::string& s)
-{
-  std::vector<std::size_t> r;
-  std::string::size_type begin = 0;
-  for(;;)
-  {
-    const std::string::size_type end = s.find(',', begin);
-    const std::string item = s.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
-    if(item.empty())
-      throw Tool_error("invalid list '" + s + "' for " + option + ": empty item (expected indices separated by commas, "
-                       "e.g. 0,17,42)");
-    r.push_back(parse_index(option, item));
-    if(end == std::string::npos)
-      return r;
-    begin = end + 1;
-  }
-}
-
-// "X,Y,Z": three finite numbers.
-std::array<double, 3> parse_point(const std::string& option, const std::string& s)
-{
-  std::array<double, 3> p = { { 0., 0., 0. } };
-  std::string::size_type begin = 0;
-  for(int k = 0; k < 3; ++k)
-  {
-    const std::string::size_type end = s.find(',', begin);
-    if((k < 2) != (end != std::string::npos))
-      throw Tool_error("invalid value '" + s + "' for " + option + " (expected three numbers X,Y,Z)");
-    p[k] = parse_double(option, s.substr(begin, end == std::string::npos ? std::string::npos : end - begin));
-    if(!std::isfinite(p[k]))
-      throw Tool_error("invalid value '" + s + "' for " + option + " (expected finite numbers)");
-    begin = end + 1;
-  }
-  return p;
-}
+using vtp_support::parse_double;
+using vtp_support::parse_index;
+using vtp_support::parse_index_list;
+using vtp_support::parse_point;
 
 void append(std::vector<std::size_t>& list, const std::vector<std::size_t>& more)
 {
@@ -106,9 +48,9 @@ std::string methods_help()
 
 } // namespace
 
-const std::vector<Option>& option_table()
+const vtp_support::Option_table<Arguments>& option_table()
 {
-  static const std::vector<Option> table = {
+  static const vtp_support::Option_table<Arguments> table = {
     { "--source", "V[,V...]",
       "source vertices: indices in file order, separated by commas\n"
       "(default: 0, unless --source-point is given); may be repeated\n"
@@ -141,12 +83,7 @@ const std::vector<Option>& option_table()
       "distance limit (>= 0): every vertex at distance <= R gets its\n"
       "exact distance, every other vertex inf (as if unreachable); the\n"
       "propagation stops there, its work is that of the region within R",
-      [](Arguments& a, const std::string& n, const std::string& v) {
-        a.max_distance = parse_double(n, v);
-        if(!(a.max_distance >= 0.))
-          throw Tool_error(n + " must be >= 0");
-        a.has_max_distance = true;
-      } },
+      vtp_support::apply_distance_limit<Arguments, &Arguments::max_distance, &Arguments::has_max_distance> },
     { "--target", "V[,V...]",
       "target vertices (file order; may be repeated): the propagation\n"
       "stops as soon as the distance of every target is final; the\n"
@@ -247,16 +184,6 @@ const std::vector<Option>& option_table()
 
 namespace {
 
-const Option* find_option(const std::string& name)
-{
-  if(name == "-h")
-    return &option_table().back();
-  for(const Option& o : option_table())
-    if(name == o.name)
-      return &o;
-  return nullptr;
-}
-
 void check_arguments(const Arguments& a)
 {
   const vtp_support::Method_info* m = vtp_support::find_method(a.method);
@@ -285,48 +212,14 @@ Arguments parse_arguments(int argc, char** argv)
 {
   Arguments a;
   bool has_mesh = false;
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if(arg.size() > 1 && arg[0] == '-')
-    {
-      // "--name=value" or "--name value"
-      std::string name = arg, value;
-      bool has_inline_value = false;
-      const std::string::size_type eq = arg.find('=');
-      if(arg.compare(0, 2, "--") == 0 && eq != std::string::npos)
-      {
-        name = arg.substr(0, eq);
-        value = arg.substr(eq + 1);
-        has_inline_value = true;
-      }
-      const Option* o = find_option(name);
-      if(o == nullptr)
-        throw Tool_error("unknown option '" + arg + "' (see --help)");
-      if(o->value == nullptr)
-      {
-        if(has_inline_value)
-          throw Tool_error("option " + name + " takes no value");
-        value.clear();
-      }
-      else if(!has_inline_value)
-      {
-        if(i + 1 >= argc)
-          throw Tool_error("missing value for " + name);
-        value = argv[++i];
-      }
-      o->apply(a, name, value);
-    }
-    else
-    {
-      if(arg.empty() || arg == "-")
-        throw Tool_error("invalid mesh file name '" + arg + "'");
-      if(has_mesh)
-        throw Tool_error("more than one mesh file given ('" + a.mesh + "' and '" + arg + "')");
-      a.mesh = arg;
-      has_mesh = true;
-    }
-  }
+  vtp_support::parse_command_line(argc, argv, option_table(), a, [&has_mesh](Arguments& a, const std::string& arg) {
+    if(arg.empty() || arg == "-")
+      throw Tool_error("invalid mesh file name '" + arg + "'");
+    if(has_mesh)
+      throw Tool_error("more than one mesh file given ('" + a.mesh + "' and '" + arg + "')");
+    a.mesh = arg;
+    has_mesh = true;
+  });
   if(a.sources.empty() && a.source_points.empty())
     a.sources.push_back(0);
   if(!a.help)
@@ -344,25 +237,11 @@ void print_usage(std::ostream& os, const std::string& default_mesh)
         "a distance limit, distances at targets, and geodesic paths.\n"
         "\n";
   const std::size_t column = 25;
-  auto item = [&](const std::string& left, const std::string& help) {
-    std::string line = "  " + left;
-    line += (line.size() + 1 < column) ? std::string(column - line.size(), ' ') : std::string(" ");
-    std::string::size_type begin = 0;
-    for(bool first = true; begin <= help.size(); first = false)
-    {
-      std::string::size_type end = help.find('\n', begin);
-      if(end == std::string::npos)
-        end = help.size();
-      os << (first ? line : std::string(column, ' ')) << help.substr(begin, end - begin) << "\n";
-      begin = end + 1;
-    }
-  };
-  item("MESH", "mesh file: " + vtp_support::readable_extensions_text() + "\n(default: " + default_mesh + ")");
+  vtp_support::print_help_item(os, "MESH", "mesh file: " + vtp_support::readable_extensions_text() + "\n(default: "
+                                             + default_mesh + ")", column);
   for(const Option& o : option_table())
-  {
-    const std::string left = std::string(o.name) + (o.value != nullptr ? std::string(" ") + o.value : "");
-    item(left, o.help != nullptr ? std::string(o.help) : methods_help());
-  }
+    vtp_support::print_help_item(os, std::string(o.name) + (o.value != nullptr ? std::string(" ") + o.value : ""),
+                                 o.help != nullptr ? std::string(o.help) : methods_help(), column);
   os << "\n"
         "Input that is not a triangle mesh is repaired, and one line \"vtp_geodesics: note: ...\"\n"
         "on stderr says what was done:\n"

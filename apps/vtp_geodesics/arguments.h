@@ -10,25 +10,23 @@
 #ifndef VTP_GEODESICS_APP_ARGUMENTS_H
 #define VTP_GEODESICS_APP_ARGUMENTS_H
 
-// The command line of vtp_geodesics: one table of options (`option_table()`), from which the parser and the
-// help are made. To add an option: a field in `Arguments`, an entry in the table (arguments.cpp), and its
-// checks in `check_arguments()`.
+// The command line of vtp_geodesics: one table of options (`option_table()`, made with the command-line helper
+// of the support layer, vtp_support/command_line.h), from which the parser and the help are made. To add an
+// option: a field in `Arguments`, an entry in the table (arguments.cpp), and its checks in `check_arguments()`.
+
+#include <vtp_support/command_line.h>
 
 #include <array>
 #include <cstddef>
 #include <limits>
 #include <ostream>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace vtp_geodesics_app {
 
 // Every error of the program: reported as one line "vtp_geodesics: error: ...", exit code 2.
-struct Tool_error : std::runtime_error
-{
-  explicit Tool_error(const std::string& what) : std::runtime_error(what) {}
-};
+using vtp_support::Tool_error;
 
 struct Arguments
 {
@@ -69,16 +67,9 @@ struct Arguments
   bool has_paths() const { return !path_to.empty() || !path_to_points.empty(); }
 };
 
-struct Option
-{
-  const char* name;        // "--source"
-  const char* value;       // name of the value in the help ("V"), or nullptr for a flag
-  const char* help;        // lines separated by '\n'
-  // Stores the value; `value` is empty for a flag. Throws Tool_error on a bad value.
-  void (*apply)(Arguments& a, const std::string& name, const std::string& value);
-};
+typedef vtp_support::Option<Arguments> Option;
 
-const std::vector<Option>& option_table();
+const vtp_support::Option_table<Arguments>& option_table();
 
 // Parses the command line; throws Tool_error. `--help` only sets `help`.
 Arguments parse_arguments(int argc, char** argv);

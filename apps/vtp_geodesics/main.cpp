@@ -43,6 +43,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <filesystem>
 #include <limits>
 #include <iostream>
 #include <memory>
@@ -76,9 +77,7 @@ std::string executable_folder()
   const ssize_t n = ::readlink("/proc/self/exe", buffer.data(), PATH_MAX);
   if(n <= 0)
     return std::string();
-  const std::string path(buffer.data(), static_cast<std::size_t>(n));
-  const std::string::size_type slash = path.find_last_of('/');
-  return slash == std::string::npos ? std::string() : path.substr(0, slash);
+  return std::filesystem::path(std::string(buffer.data(), static_cast<std::size_t>(n))).parent_path().string();
 }
 
 std::string default_mesh()

@@ -60,98 +60,94 @@ void print_usage(std::ostream& os)
 
 namespace {
 
-std::size_t parse_count(const std::string& option, const std::string& s, std::size_t min_value, std::size_t max_value)
+using vtp_support::parse_integer;
+
+// What the options set: the arguments, and the method lists checked once the whole line is read.
+struct Parsed
 {
-  if(s.empty() || s.find_first_not_of("0123456789") != std::string::npos)
-    throw Usage_error("invalid value '" + s + "' for " + option + " (expected an integer)");
-  errno = 0;
-  const unsigned long long v = std::strtoull(s.c_str(), nullptr, 10);
-  if(errno == ERANGE || v < min_value || v > max_value)
-    throw Usage_error("value '" + s + "' for " + option + " is out of range [" + std::to_string(min_value) + ", "
-                      + std::to_string(max_value) + "]");
-  return static_cast<std::size_t>(v);
+  Arguments a;
+  std::string methods = "vtp,cgal";
+  std::vector<Method> externals;
+};
+
+// The help is print_usage() above (it has sections), so the entries have none.
+const vtp_support::Option_table<Parsed>& option_table()
+{
+  typedef const std::string& S;
+  static const vtp_support::Option_table<Parsed> table = {
+    { "--help", nullptr, nullptr, [](Parsed& p, S, S) { p.a.help = true; } },
+    { "--subdivide", "N", nullptr, [](Parsed& p, S n, S v) { p.a.subdivide = static_cast<int>(parse_integer(n, v, 0, 6)); } },
+    { "--loop", "N", nullptr, [](Parsed& p, S n, S v) { p.a.loop = static_cast<int>(parse_integer(n, v, 0, 6)); } },
+    { "--remesh", "R", nullptr,
+      [](Parsed& p, S, S v) {
+        char* end = nullptr;
+        p.a.remesh = std::strtod(v.c_str(), &end);
+        if(v.empty() || *end != '\0' || !(p.a.remesh >= 0.01) || !(p.a.remesh <= 100.))
+          throw Tool_error("invalid value '" + v + "' for --remesh (expected a number in [0.01, 100])");
+      } },
+    { "--remesh-iterations", "K", nullptr,
+      [](Parsed& p, S n, S v) { p.a.remesh_iterations = static_cast<int>(parse_integer(n, v, 1, 100)); } },
+    { "--save-meshes", "DIR", nullptr,
+      [](Parsed& p, S, S v) {
+        p.a.save_meshes = v;
+        if(p.a.save_meshes.empty())
+          throw Tool_error("empty folder name for --save-meshes");
+      } },
+    { "--external", "NAME=COMMAND", nullptr,
+      [](Parsed& p, S, S v) {
+        const std::string::size_type eq = v.find('=');
+        if(eq == std::string::npos || eq == 0 || eq + 1 == v.size())
+          throw Tool_error("invalid --external '" + v + "' (expected NAME=COMMAND)");
+        Method m;
+        m.label = v.substr(0, eq);
+        m.kind = Method_kind::EXTERNAL;
+        m.command = v.substr(eq + 1);
+        if(m.label.find_first_of(",: ") != std::string::npos)
+          throw Tool_error("invalid external method name '" + m.label + "'");
+        p.externals.push_back(m);
+      } },
+    { "--sources", "K", nullptr, [](Parsed& p, S n, S v) { p.a.sources = parse_integer(n, v, 1, 1000000); } },
+    { "--methods", "LIST", nullptr, [](Parsed& p, S, S v) { p.methods = v; } },
+    { "--csv", "FILE", nullptr,
+      [](Parsed& p, S, S v) {
+        p.a.csv = v;
+        if(p.a.csv.empty())
+          throw Tool_error("empty file name for --csv");
+      } },
+    { "--repeat", "R", nullptr, [](Parsed& p, S n, S v) { p.a.repeat = static_cast<int>(parse_integer(n, v, 1, 1000)); } },
+  };
+  return table;
 }
 
 } // namespace
 
 Arguments parse_arguments(int argc, char** argv)
 {
-  Arguments a;
-  std::string methods = "vtp,cgal";
-  std::vector<Method> externals;
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if(i + 1 >= argc)
-        throw Usage_error("missing value for " + arg);
-      return argv[++i];
-    };
-    if(arg == "--help" || arg == "-h") a.help = true;
-    else if(arg == "--subdivide") a.subdivide = static_cast<int>(parse_count(arg, value(), 0, 6));
-    else if(arg == "--loop") a.loop = static_cast<int>(parse_count(arg, value(), 0, 6));
-    else if(arg == "--remesh")
-    {
-      const std::string v = value();
-      char* end = nullptr;
-      a.remesh = std::strtod(v.c_str(), &end);
-      if(v.empty() || *end != '\0' || !(a.remesh >= 0.01) || !(a.remesh <= 100.))
-        throw Usage_error("invalid value '" + v + "' for --remesh (expected a number in [0.01, 100])");
-    }
-    else if(arg == "--remesh-iterations") a.remesh_iterations = static_cast<int>(parse_count(arg, value(), 1, 100));
-    else if(arg == "--save-meshes")
-    {
-      a.save_meshes = value();
-      if(a.save_meshes.empty())
-        throw Usage_error("empty folder name for --save-meshes");
-    }
-    else if(arg == "--external")
-    {
-      const std::string v = value();
-      const std::string::size_type eq = v.find('=');
-      if(eq == std::string::npos || eq == 0 || eq + 1 == v.size())
-        throw Usage_error("invalid --external '" + v + "' (expected NAME=COMMAND)");
-      Method m;
-      m.label = v.substr(0, eq);
-      m.kind = Method_kind::EXTERNAL;
-      m.command = v.substr(eq + 1);
-      if(m.label.find_first_of(",: ") != std::string::npos)
-        throw Usage_error("invalid external method name '" + m.label + "'");
-      externals.push_back(m);
-    }
-    else if(arg == "--sources") a.sources = parse_count(arg, value(), 1, 1000000);
-    else if(arg == "--methods") methods = value();
-    else if(arg == "--csv")
-    {
-      a.csv = value();
-      if(a.csv.empty())
-        throw Usage_error("empty file name for --csv");
-    }
-    else if(arg == "--repeat") a.repeat = static_cast<int>(parse_count(arg, value(), 1, 1000));
-    else if(arg.size() > 1 && arg[0] == '-')
-      throw Usage_error("unknown option '" + arg + "' (see --help)");
-    else
-      a.meshes.push_back(arg);
-  }
+  Parsed p;
+  vtp_support::parse_command_line(argc, argv, option_table(), p,
+                                  [](Parsed& p, const std::string& mesh) { p.a.meshes.push_back(mesh); });
+  Arguments& a = p.a;
+  const std::string& methods = p.methods;
+  const std::vector<Method>& externals = p.externals;
   if(a.help)
     return a;
   if(a.meshes.empty())
-    throw Usage_error("no mesh given (see --help)");
+    throw Tool_error("no mesh given (see --help)");
   for(const std::string& spec : split(methods, ','))
   {
     if(spec.empty())
-      throw Usage_error("empty method name in --methods '" + methods + "'");
+      throw Tool_error("empty method name in --methods '" + methods + "'");
     Method m = parse_method(spec);
     for(const Method& other : a.methods)
       if(other.label == m.label)
-        throw Usage_error("method '" + spec + "' given twice");
+        throw Tool_error("method '" + spec + "' given twice");
     a.methods.push_back(m);
   }
   for(const Method& m : externals)
   {
     for(const Method& other : a.methods)
       if(other.label == m.label)
-        throw Usage_error("method '" + m.label + "' given twice");
+        throw Tool_error("method '" + m.label + "' given twice");
     a.methods.push_back(m);
   }
   return a;

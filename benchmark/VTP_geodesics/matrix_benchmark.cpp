@@ -18,6 +18,8 @@
 
 #include <CGAL/property_map.h>
 
+#include <vtp_support/command_line.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -40,31 +42,59 @@ double median(std::vector<double> v)
   return v.empty() ? 0. : v[v.size() / 2];
 }
 
-} // namespace
-
-int main(int argc, char** argv)
+struct Arguments
 {
   std::size_t rows = 100;
   int repeat = 3, threads = 2;
   std::string file;
-  for(int i = 1; i < argc; ++i)
+  bool help = false;
+};
+
+const char* const usage = "usage: matrix_benchmark [--rows K] [--repeat R] [--threads T] MESH\n";
+
+Arguments parse_arguments(int argc, char** argv)
+{
+  typedef const std::string& S;
+  using vtp_support::parse_integer;
+  static const vtp_support::Option_table<Arguments> table = {
+    { "--rows", "K", nullptr, [](Arguments& a, S n, S v) { a.rows = parse_integer(n, v, 1, 1u << 31); } },
+    { "--repeat", "R", nullptr, [](Arguments& a, S n, S v) { a.repeat = static_cast<int>(parse_integer(n, v, 1, 1000)); } },
+    { "--threads", "T", nullptr, [](Arguments& a, S n, S v) { a.threads = static_cast<int>(parse_integer(n, v, 1, 4096)); } },
+    { "--help", nullptr, nullptr, [](Arguments& a, S, S) { a.help = true; } },
+  };
+  Arguments a;
+  vtp_support::parse_command_line(argc, argv, table, a, [](Arguments& a, const std::string& file) {
+    if(!a.file.empty())
+      throw Tool_error("more than one mesh given ('" + a.file + "' and '" + file + "')");
+    a.file = file;
+  });
+  if(!a.help && a.file.empty())
+    throw Tool_error("no mesh given");
+  return a;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Arguments args;
+  try
   {
-    const std::string a = argv[i];
-    if(a == "--rows" && i + 1 < argc) rows = static_cast<std::size_t>(std::atol(argv[++i]));
-    else if(a == "--repeat" && i + 1 < argc) repeat = std::atoi(argv[++i]);
-    else if(a == "--threads" && i + 1 < argc) threads = std::atoi(argv[++i]);
-    else if(!a.empty() && a[0] != '-' && file.empty()) file = a;
-    else
-    {
-      std::fprintf(stderr, "usage: matrix_benchmark [--rows K] [--repeat R] [--threads T] MESH\n");
-      return 2;
-    }
+    args = parse_arguments(argc, argv);
   }
-  if(file.empty() || rows == 0 || repeat < 1 || threads < 1)
+  catch(const Tool_error& e)
   {
-    std::fprintf(stderr, "usage: matrix_benchmark [--rows K] [--repeat R] [--threads T] MESH\n");
+    std::fprintf(stderr, "matrix_benchmark: error: %s\n%s", e.what(), usage);
     return 2;
   }
+  if(args.help)
+  {
+    std::fputs(usage, stdout);
+    return 0;
+  }
+  std::size_t rows = args.rows;
+  const int repeat = args.repeat, threads = args.threads;
+  const std::string& file = args.file;
   Mesh_input input;
   try
   {

@@ -19,7 +19,7 @@ int parse_int_field(const std::string& method, const std::string& s, int min_val
   errno = 0;
   const long v = std::strtol(s.c_str(), &end, 10);
   if(s.empty() || *end != '\0' || errno == ERANGE || v < min_value || v > 4096)
-    throw Usage_error("invalid parameter '" + s + "' in method '" + method + "'");
+    throw Tool_error("invalid parameter '" + s + "' in method '" + method + "'");
   return static_cast<int>(v);
 }
 
@@ -28,7 +28,7 @@ double parse_positive_field(const std::string& method, const std::string& s)
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
   if(s.empty() || *end != '\0' || !(v > 0.))
-    throw Usage_error("invalid parameter '" + s + "' in method '" + method + "'");
+    throw Tool_error("invalid parameter '" + s + "' in method '" + method + "'");
   return v;
 }
 
@@ -44,7 +44,7 @@ struct Method_parser
 void expect_fields(const std::vector<std::string>& fields, std::size_t n, const char* syntax)
 {
   if(fields.size() != n)
-    throw Usage_error("invalid method '" + fields[0] + "...' (expected " + syntax + ")");
+    throw Tool_error("invalid method '" + fields[0] + "...' (expected " + syntax + ")");
 }
 
 // The VTP family (vtp, pvtp:T, avtp:lambda, pavtp:T:lambda) comes from the table of methods shared with the
@@ -66,7 +66,7 @@ bool parse_vtp_method(const std::vector<std::string>& fields, Method& m)
   if(info->approximate)
     m.lambda = parse_positive_field(m.label, fields[k++]);
   if(!vtp_support::method_available(*info))
-    throw Usage_error("method " + std::string(info->name) + " is not available (vtp_benchmark was built without OpenMP)");
+    throw Tool_error("method " + std::string(info->name) + " is not available (vtp_benchmark was built without OpenMP)");
   return true;
 }
 
@@ -89,20 +89,6 @@ const Method_parser method_parsers[] = {
 
 } // namespace
 
-std::vector<std::string> split(const std::string& s, char separator)
-{
-  std::vector<std::string> parts;
-  std::string::size_type begin = 0;
-  for(;;)
-  {
-    const std::string::size_type end = s.find(separator, begin);
-    parts.push_back(s.substr(begin, end == std::string::npos ? std::string::npos : end - begin));
-    if(end == std::string::npos)
-      return parts;
-    begin = end + 1;
-  }
-}
-
 Method parse_method(const std::string& spec)
 {
   const std::vector<std::string> fields = split(spec, ':');
@@ -123,16 +109,16 @@ Method parse_method(const std::string& spec)
     {
 #ifndef VTP_BENCHMARK_WITH_HEAT_METHOD
       if(m.kind == Method_kind::HEAT_DIRECT || m.kind == Method_kind::HEAT_IDT)
-        throw Usage_error("method " + spec + " is not available (vtp_benchmark was built without Eigen)");
+        throw Tool_error("method " + spec + " is not available (vtp_benchmark was built without Eigen)");
 #endif
-      throw Usage_error("method " + std::string(p.name) + " is not available (vtp_benchmark was built without OpenMP)");
+      throw Tool_error("method " + std::string(p.name) + " is not available (vtp_benchmark was built without OpenMP)");
     }
     return m;
   }
   std::string known = "vtp, pvtp:T, avtp:lambda, pavtp:T:lambda";
   for(const Method_parser& p : method_parsers)
     known += (known.empty() ? "" : ", ") + std::string(p.syntax);
-  throw Usage_error("unknown method '" + spec + "' (known: " + known + ")");
+  throw Tool_error("unknown method '" + spec + "' (known: " + known + ")");
 }
 
 } // namespace vtp_benchmark

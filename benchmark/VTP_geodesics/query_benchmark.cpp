@@ -22,12 +22,15 @@
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 
+#include <vtp_support/command_line.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <stdexcept>
@@ -143,37 +146,58 @@ Result run_forked(const Mesh& mesh, Query q, bool parallel, int threads, double 
   return r;
 }
 
-} // namespace
-
-int main(int argc, char** argv)
+struct Arguments
 {
   int repeat = 3, threads = 2;
   double fraction = 0.1;
   std::vector<std::string> files;
-  for(int i = 1; i < argc; ++i)
+  bool help = false;
+};
+
+Arguments parse_arguments(int argc, char** argv)
+{
+  typedef const std::string& S;
+  using vtp_support::parse_integer;
+  static const vtp_support::Option_table<Arguments> table = {
+    { "--repeat", "R", nullptr, [](Arguments& a, S n, S v) { a.repeat = static_cast<int>(parse_integer(n, v, 1, 1000)); } },
+    { "--threads", "T", nullptr, [](Arguments& a, S n, S v) { a.threads = static_cast<int>(parse_integer(n, v, 1, 4096)); } },
+    { "--limit", "F", nullptr,
+      [](Arguments& a, S n, S v) {
+        a.fraction = vtp_support::parse_double(n, v);
+        if(!(a.fraction > 0.))
+          throw vtp_support::Tool_error("the limit fraction of " + n + " must be > 0");
+      } },
+    { "--help", nullptr, nullptr, [](Arguments& a, S, S) { a.help = true; } },
+  };
+  Arguments a;
+  vtp_support::parse_command_line(argc, argv, table, a, [](Arguments& a, const std::string& f) { a.files.push_back(f); });
+  if(!a.help && a.files.empty())
+    throw vtp_support::Tool_error("give at least one mesh");
+  return a;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Arguments args;
+  try
   {
-    const std::string a = argv[i];
-    if(a == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
-    else if(a == "--threads" && i + 1 < argc) threads = std::max(1, std::atoi(argv[++i]));
-    else if(a == "--limit" && i + 1 < argc) fraction = std::atof(argv[++i]);
-    else if(a == "--help" || a == "-h")
-    {
-      std::cout << "usage: vtp_query_benchmark [--repeat R] [--threads T] [--limit F] MESH...\n";
-      return 0;
-    }
-    else if(!a.empty() && a[0] == '-')
-    {
-      std::cerr << "vtp_query_benchmark: error: unknown option " << a << std::endl;
-      return 2;
-    }
-    else
-      files.push_back(a);
+    args = parse_arguments(argc, argv);
   }
-  if(files.empty() || !(fraction > 0.))
+  catch(const std::exception& e)
   {
-    std::cerr << "vtp_query_benchmark: error: give at least one mesh (and a limit fraction > 0)" << std::endl;
+    std::cerr << "vtp_query_benchmark: error: " << e.what() << std::endl;
     return 2;
   }
+  if(args.help)
+  {
+    std::cout << "usage: vtp_query_benchmark [--repeat R] [--threads T] [--limit F] MESH...\n";
+    return 0;
+  }
+  const int repeat = args.repeat, threads = args.threads;
+  const double fraction = args.fraction;
+  const std::vector<std::string>& files = args.files;
   try
   {
     std::cout << "| Mesh | #V | Run | Time (s) | vs full | Vertices processed | Windows propagated | Peak RSS (MB) | vs full |\n"
@@ -219,7 +243,7 @@ int main(int argc, char** argv)
             best[c] = x;
           rss[c] = std::max(rss[c], peak);
         }
-      const std::string name = file.substr(file.find_last_of('/') + 1);
+      const std::string name = std::filesystem::path(file).filename().string();
       for(std::size_t c = 0; c < cases.size(); ++c)
       {
         const std::size_t full = cases[c].parallel ? 4 : 0;

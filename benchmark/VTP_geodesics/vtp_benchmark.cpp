@@ -84,14 +84,14 @@ int run(int argc, char** argv)
   }
   for(const std::string& file : args.meshes)
     if(!std::ifstream(file))
-      throw Usage_error("cannot open '" + file + "'");
+      throw Tool_error("cannot open '" + file + "'");
 
   std::ofstream csv;
   if(!args.csv.empty())
   {
     csv.open(args.csv);
     if(!csv)
-      throw Usage_error("cannot write '" + args.csv + "'");
+      throw Tool_error("cannot write '" + args.csv + "'");
     csv << csv_columns << '\n';
   }
 
@@ -251,7 +251,7 @@ int run(int argc, char** argv)
       {
         csv.flush();
         if(!csv)
-          throw Usage_error("cannot write '" + args.csv + "'");
+          throw Tool_error("cannot write '" + args.csv + "'");
       }
     }
   }

@@ -17,6 +17,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <vtp_support/command_line.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -40,10 +42,9 @@ typedef Mesh::Vertex_index Vertex_index;
 const double inf = std::numeric_limits<double>::infinity();
 const double nan_value = std::numeric_limits<double>::quiet_NaN();
 
-struct Usage_error : std::runtime_error
-{
-  explicit Usage_error(const std::string& what) : std::runtime_error(what) {}
-};
+// Bad arguments and unreadable input: one line "vtp_benchmark: error: ...", exit code 2.
+using vtp_support::Tool_error;
+using vtp_support::split;
 
 // ------------------------------------------------------------------------------------------------
 // Methods (methods.cpp). To add one, add an enumerator, a parser in `method_parsers` (or, for a method of
@@ -61,10 +62,8 @@ struct Method
   std::string command;      // EXTERNAL: shell command with {mesh}, {source}, {output}
 };
 
-// "vtp", "pvtp:4", "cgal", ...; throws Usage_error.
+// "vtp", "pvtp:4", "cgal", ...; throws Tool_error.
 Method parse_method(const std::string& spec);
-
-std::vector<std::string> split(const std::string& s, char separator);
 
 // ------------------------------------------------------------------------------------------------
 // Command line (arguments.cpp)

@@ -31,6 +31,7 @@
 #include "vtp_random_meshes.h"
 
 #include <CGAL/VTP_geodesics.h>
+#include <vtp_support/command_line.h>
 #include <vtp_support/midpoint_subdivision.h>
 #include <vtp_support/shortest_path_reference.h>
 
@@ -76,6 +77,7 @@ struct Settings
   unsigned timeout = 120;
   std::string dump;
   bool verbose = false;
+  bool help = false;
 };
 
 // ------------------------------------------------------------------------------------------------
@@ -569,14 +571,44 @@ void usage(std::ostream& os)
         "Exit code: 0 if every case agrees, 1 on a mismatch, 2 on a usage error, 3 on a timeout.\n";
 }
 
-std::uint64_t parse_number(const std::string& option, const char* value)
+// The options; the help is usage() above.
+const vtp_support::Option_table<Settings>& option_table()
 {
-  if(value == nullptr)
-    throw std::invalid_argument("missing value for " + option);
-  const std::string s(value);
-  if(s.empty() || s.find_first_not_of("0123456789") != std::string::npos)
-    throw std::invalid_argument("invalid value '" + s + "' for " + option);
-  return std::strtoull(value, nullptr, 10);
+  typedef const std::string& S;
+  using vtp_support::parse_integer;
+  const unsigned long long any = std::numeric_limits<std::uint64_t>::max();
+  static const vtp_support::Option_table<Settings> table = {
+    { "--help", nullptr, nullptr, [](Settings& s, S, S) { s.help = true; } },
+    { "--seed", "S", nullptr, [](Settings& s, S n, S v) { s.seed = parse_integer(n, v, 0, any); } },
+    { "--cases", "N", nullptr, [](Settings& s, S n, S v) { s.cases = parse_integer(n, v, 0, any); } },
+    { "--case", "K", nullptr, [](Settings& s, S n, S v) { s.the_case = parse_integer(n, v, 0, any); s.single_case = true; } },
+    { "--min-vertices", "v", nullptr, [](Settings& s, S n, S v) { s.min_vertices = parse_integer(n, v, 0, any); } },
+    { "--max-vertices", "V", nullptr, [](Settings& s, S n, S v) { s.max_vertices = parse_integer(n, v, 0, any); } },
+    { "--sources", "P", nullptr, [](Settings& s, S n, S v) { s.sources = parse_integer(n, v, 0, any); } },
+    { "--timeout", "T", nullptr,
+      [](Settings& s, S n, S v) { s.timeout = static_cast<unsigned>(parse_integer(n, v, 0, std::numeric_limits<unsigned>::max())); } },
+    { "--dump", "DIR", nullptr, [](Settings& s, S, S v) { s.dump = v; } },
+    { "--verbose", nullptr, nullptr, [](Settings& s, S, S) { s.verbose = true; } },
+    { "--methods", "M", nullptr,
+      [](Settings& s, S, S v) {
+        s.vtp = s.pvtp = false;
+        for(const std::string& m : vtp_support::split(v, ','))
+        {
+          if(m == "vtp") s.vtp = true;
+          else if(m == "pvtp")
+          {
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+            s.pvtp = true;
+#else
+            throw vtp_support::Tool_error("pvtp needs OpenMP, and this program was built without it");
+#endif
+          }
+          else
+            throw vtp_support::Tool_error("unknown method '" + m + "' (expected vtp or pvtp)");
+        }
+      } },
+  };
+  return table;
 }
 
 Settings parse(int argc, char** argv)
@@ -585,62 +617,20 @@ Settings parse(int argc, char** argv)
 #ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
   s.pvtp = true;
 #endif
-  for(int i = 1; i < argc; ++i)
+  vtp_support::parse_command_line(argc, argv, option_table(), s, [](Settings&, const std::string& a) {
+    throw vtp_support::Tool_error("unknown argument '" + a + "' (see --help)");
+  });
+  if(s.help)
   {
-    const std::string a = argv[i];
-    const char* value = (i + 1 < argc) ? argv[i + 1] : nullptr;
-    if(a == "--help" || a == "-h")
-    {
-      usage(std::cout);
-      std::exit(0);
-    }
-    else if(a == "--seed") { s.seed = parse_number(a, value); ++i; }
-    else if(a == "--cases") { s.cases = parse_number(a, value); ++i; }
-    else if(a == "--case") { s.the_case = parse_number(a, value); s.single_case = true; ++i; }
-    else if(a == "--min-vertices") { s.min_vertices = parse_number(a, value); ++i; }
-    else if(a == "--max-vertices") { s.max_vertices = parse_number(a, value); ++i; }
-    else if(a == "--sources") { s.sources = parse_number(a, value); ++i; }
-    else if(a == "--timeout") { s.timeout = static_cast<unsigned>(parse_number(a, value)); ++i; }
-    else if(a == "--dump")
-    {
-      if(value == nullptr)
-        throw std::invalid_argument("missing value for --dump");
-      s.dump = value;
-      ++i;
-    }
-    else if(a == "--verbose") s.verbose = true;
-    else if(a == "--methods")
-    {
-      if(value == nullptr)
-        throw std::invalid_argument("missing value for --methods");
-      s.vtp = s.pvtp = false;
-      std::stringstream list(value);
-      std::string m;
-      while(std::getline(list, m, ','))
-      {
-        if(m == "vtp") s.vtp = true;
-        else if(m == "pvtp")
-        {
-#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
-          s.pvtp = true;
-#else
-          throw std::invalid_argument("pvtp needs OpenMP, and this program was built without it");
-#endif
-        }
-        else
-          throw std::invalid_argument("unknown method '" + m + "' (expected vtp or pvtp)");
-      }
-      ++i;
-    }
-    else
-      throw std::invalid_argument("unknown argument '" + a + "' (see --help)");
+    usage(std::cout);
+    std::exit(0);
   }
   if(s.min_vertices < 4)
     s.min_vertices = 4;
   if(s.max_vertices < s.min_vertices)
-    throw std::invalid_argument("--max-vertices must be >= --min-vertices (and >= 4)");
+    throw vtp_support::Tool_error("--max-vertices must be >= --min-vertices (and >= 4)");
   if(!s.vtp && !s.pvtp)
-    throw std::invalid_argument("no method selected");
+    throw vtp_support::Tool_error("no method selected");
   return s;
 }
 

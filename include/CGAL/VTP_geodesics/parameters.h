@@ -18,6 +18,9 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <cstddef>
+#include <limits>
+
 namespace CGAL {
 namespace VTP_geodesics {
 
@@ -26,6 +29,12 @@ namespace VTP_geodesics {
 /// command-line tools when none is given: on our benchmark meshes it keeps the mean relative error
 /// around 0.1% (see the benchmark section of the user manual).
 constexpr double recommended_lambda = 8.;
+
+/// \ingroup PkgVTPGeodesicsRef
+/// The value that a nearest-source map (named parameter `nearest_source_map`) receives for a vertex that
+/// no source reaches (or that lies beyond the distance limit, or whose distance is not final after a
+/// run stopped at its targets).
+constexpr std::size_t no_source = (std::numeric_limits<std::size_t>::max)();
 
 /// \cond SKIP_IN_MANUAL
 namespace internal_np {

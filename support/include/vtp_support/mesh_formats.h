@@ -13,6 +13,7 @@
 // The mesh file formats the tools read, by file extension.
 
 #include <cctype>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -20,11 +21,12 @@ namespace vtp_support {
 
 inline std::string lower_extension(const std::string& file)
 {
-  const std::string::size_type dot = file.find_last_of('.');
-  const std::string::size_type slash = file.find_last_of('/');
-  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
+  // not std::filesystem::path::extension(), which gives none for a name such as ".off"
+  const std::string name = std::filesystem::path(file).filename().string();
+  const std::string::size_type dot = name.find_last_of('.');
+  if(dot == std::string::npos)
     return std::string();
-  std::string ext = file.substr(dot + 1);
+  std::string ext = name.substr(dot + 1);
   for(char& c : ext)
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return ext;

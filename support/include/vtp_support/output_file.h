@@ -25,6 +25,8 @@
 // Typical use: open every output, write them, `close()` each (which reports write errors), then `commit()`
 // each. An `Output_file` destroyed before `commit()` removes its temporary file.
 
+#include <vtp_support/paths.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -52,21 +54,8 @@ struct Output_error : std::runtime_error
 
 namespace output_detail {
 
-inline std::string folder_of(const std::string& path)
-{
-  const std::string::size_type slash = path.find_last_of('/');
-  if(slash == std::string::npos)
-    return ".";
-  if(slash == 0)
-    return "/";
-  return path.substr(0, slash);
-}
-
-inline std::string base_of(const std::string& path)
-{
-  const std::string::size_type slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
+using vtp_support::folder_of;
+inline std::string base_of(const std::string& path) { return file_name_of(path); }
 
 // If `path` names a file descriptor of this process through /proc (/proc/self/fd/N, /dev/fd/N, which is a
 // link to /proc/self/fd), returns N; else -1.

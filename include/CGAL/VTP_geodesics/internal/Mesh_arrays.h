@@ -14,6 +14,8 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
+#include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
+
 #include <CGAL/assertions.h>
 
 #include <algorithm>
@@ -233,14 +235,9 @@ struct Mesh_arrays
     for(Index first = 0; first < n; first += block)
     {
       const Index last = (std::min)(n, first + block);
-      const long long firstl = static_cast<long long>(first), lastl = static_cast<long long>(last);
-#ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1)
-#else
-      (void)threads;
-#endif
-      for(long long il = firstl; il < lastl; ++il)
-        value[static_cast<std::size_t>(il - firstl)] = term(static_cast<Index>(il));
+      Parallel_for(threads).run(static_cast<long long>(last - first), [&](long long i, int) {
+        value[static_cast<std::size_t>(i)] = term(first + static_cast<Index>(i));
+      });
       for(Index i = first; i < last; ++i)
         add(i, value[i - first]);
     }

@@ -15,6 +15,7 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/Window.h>
 
 #include <CGAL/assertions.h>
 
@@ -26,21 +27,6 @@
 namespace CGAL {
 namespace VTP_geodesics {
 namespace internal {
-
-// A window on a half-edge h = (A -> B), in the frame of h (A = (0,0), B = (length,0), the face
-// of h above the x-axis). It covers [b0, b1] on the edge and carries the geodesics that come,
-// straight in the unfolding, from the (pseudo-)source image (sx, sy), sy <= 0, whose own
-// distance to the source is sigma. The distance of a point (x, 0) of the window is
-// sigma + sqrt((x - sx)^2 + sy^2). The window is waiting to be propagated into face(h).
-// `origin` says which (pseudo-)source the image stands for: a vertex index, or the number of
-// vertices plus the index of a point source (see Seeding.h); children keep the origin of their parent.
-struct Window
-{
-  double b0, b1;
-  double sx, sy;
-  double sigma;
-  Index origin;
-};
 
 // Window lists, one per half-edge, stored in fixed-size blocks linked by indices: windows of a
 // list are contiguous inside a block, there is no allocation per window, and memory is recycled

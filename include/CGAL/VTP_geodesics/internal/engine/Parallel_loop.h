@@ -225,13 +225,11 @@ private:
     }
   }
 
-  // A face unit (at most 3 lists, see start_round()): the detached windows of its lists, what they offer
-  // to their opposite vertices, and the lists its children make ready (at most 3: those across the edges
+  // A face unit (at most 3 lists, see start_round()): the detached windows of its lists and the lists its
+  // children make ready (at most 3: those across the edges
   // of the face). One cache line per unit: units taken by different threads share no line.
   struct alignas(64) Unit
   {
-    double distance_to_C[3];
-    Index origin_to_C[3];
     Index chain[3];
     Index queued[3];
     int number_queued = 0;
@@ -273,9 +271,8 @@ private:
       m_unit_begin[u + 1] += m_unit_begin[u];
     m_unit_fill.assign(m_unit_begin.begin(), m_unit_begin.end() - 1);
     m_unit_lists.resize(n);
+    m_offers.resize(n);
     m_units.resize(units);
-    if(st.record.is_active())
-      m_offers.resize(n);
     for(std::size_t i = 0; i < n; ++i)
     {
       const Index h = m_from[i];
@@ -351,11 +348,7 @@ private:
       st.store.take_chain(unit.chain[j], s.in, p);
       s.out_ac.clear();
       s.out_cb.clear();
-      const Offer offer = st.propagate_one(h, s);
-      unit.distance_to_C[j] = offer.distance;
-      unit.origin_to_C[j] = offer.origin;
-      if(st.record.is_active())
-        m_offers[k] = offer;
+      m_offers[k] = st.propagate_one(h, s);
       st.store_all_children(h, s, p, unit);
     }
   }
@@ -371,12 +364,8 @@ private:
       const Unit& unit = m_units[u];
       for(std::size_t k = m_unit_begin[u]; k < m_unit_begin[u + 1]; ++k)
       {
-        const std::size_t j = k - m_unit_begin[u];
         const Index c = m.source[Mesh_arrays::prev(m_from[m_unit_lists[k]])];
-        if(st.record.is_active())
-          st.light(c, m_offers[k]);
-        else
-          st.light(c, unit.distance_to_C[j], unit.origin_to_C[j]);
+        st.light(c, m_offers[k]);
       }
       st.fifo.insert(st.fifo.end(), unit.queued, unit.queued + unit.number_queued);
     }
@@ -409,7 +398,7 @@ private:
   std::vector<Index> m_unit_of_face;               // per face, NO_INDEX between rounds
   std::vector<std::size_t> m_unit_begin, m_unit_fill, m_unit_lists;
   std::vector<Unit> m_units;
-  std::vector<Offer> m_offers;                     // per list of the round, when paths are recorded
+  std::vector<Offer> m_offers;                     // per list of the round: what it offers to its third vertex
   Stealing_ranges m_ranges;                        // one per thread
   std::vector<std::size_t> m_range_begin, m_unit_thread, m_unit_order;
   Round_team m_sync;

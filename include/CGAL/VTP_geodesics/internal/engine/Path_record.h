@@ -15,6 +15,8 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/Window.h>
+#include <CGAL/VTP_geodesics/internal/engine/Targets.h>
 
 #include <limits>
 #include <vector>
@@ -47,8 +49,29 @@ inline Offer straight_offer(double distance, Index origin)
   return o;
 }
 
+// The offer of window w of the list of h to the point (px, py) of face(h) (frame of h), at `distance`:
+// straight from the image of w when the point is seen through the window, else bent at its nearer end.
+inline Offer offer_through_window(double distance, Index h, const Window& w, double px, double py)
+{
+  Offer o;
+  o.distance = distance;
+  o.origin = w.origin;
+  o.halfedge = h;
+  o.sx = w.sx;
+  o.sy = w.sy;
+  double bend;
+  if(window_bend(w, px, py, bend))
+    o.bend = bend;
+  return o;
+}
+
 // The trace-back record of a propagation: for each vertex and each target, the offer that gave its
 // current distance. O(V + targets), filled only when paths are asked for.
+//
+// Like the stop rule (Stop_rule.h), the record is told what happens through hooks, which do nothing
+// unless paths are recorded: the loops and the shared steps (Propagation_state.h) call them and never
+// test whether the record is active. A hook that may run on several threads at once only writes the
+// entries of its caller (a vertex or target of the face it owns).
 struct Path_record
 {
   std::vector<Offer> vertex;
@@ -70,6 +93,42 @@ struct Path_record
   }
 
   bool is_active() const { return m_active; }
+
+  // ------------------------------------------------------------------------------------------------
+  // hooks
+  // ------------------------------------------------------------------------------------------------
+
+  // The distance of vertex v was lowered by `offer`.
+  void on_vertex_lowered(Index v, const Offer& offer)
+  {
+    if(m_active)
+      vertex[static_cast<std::size_t>(v)] = offer;
+  }
+
+  // Target t was lowered to `distance`, straight from `origin` (a source point of its face, or a vertex).
+  void on_target_reached_straight(Index t, double distance, Index origin)
+  {
+    if(m_active)
+      target[static_cast<std::size_t>(t)] = straight_offer(distance, origin);
+  }
+
+  // Target t (the point `point`, inside face(h)) was lowered to `distance` by window w of the list of h.
+  void on_target_reached_by_window(Index t, double distance, Index h, const Window& w, const Target& point)
+  {
+    if(m_active)
+    {
+      const std::size_t k = static_cast<std::size_t>(h % 3);
+      target[static_cast<std::size_t>(t)] = offer_through_window(distance, h, w, point.x[k], point.y[k]);
+    }
+  }
+
+  // The list of h offers `offer` to the third vertex (px, py) of face(h) through window w: what the
+  // trace-back needs is added to the offer (which the vertex keeps if it lowers its distance).
+  void on_list_offer(Offer& offer, Index h, const Window& w, double px, double py) const
+  {
+    if(m_active)
+      offer = offer_through_window(offer.distance, h, w, px, py);
+  }
 
 private:
   bool m_active = false;

@@ -14,10 +14,12 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
+#include <CGAL/VTP_geodesics/internal/Face_frame.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/Window.h>
 #include <CGAL/VTP_geodesics/internal/engine/Path_record.h>
 #include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
-#include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
+#include <CGAL/VTP_geodesics/internal/engine/Targets.h>
 
 #include <cmath>
 #include <cstddef>
@@ -166,10 +168,7 @@ private:
     if(offer.bend == offer.bend) // bent at an end of the window
       x = offer.bend;
     else
-    {
-      const double den = py - offer.sy;
-      x = den > 0. ? offer.sx + (px - offer.sx) * (-offer.sy / den) : px;
-    }
+      x = ray_crossing(offer.sx, offer.sy, px, py, px);
     x = (std::min)((std::max)(x, 0.), m.geometry[h].length);
     double sx = offer.sx, sy = offer.sy;
     if(through_vertex(h, x, sx, sy, out, origin))
@@ -324,7 +323,7 @@ private:
     {
       p.kind = Trace_point::IN_FACE;
       p.element = f;
-      to_face_frame(m, f, static_cast<int>(o % 3), sx, sy, p.x, p.y);
+      Face_frame(m, f).from_edge_frame(static_cast<int>(o % 3), sx, sy, p.x, p.y);
     }
     push(out, p);
     straight_to(origin, out);

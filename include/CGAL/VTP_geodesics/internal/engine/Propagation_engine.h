@@ -22,6 +22,7 @@
 #include <CGAL/VTP_geodesics/internal/engine/Sequential_loop.h>
 #include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
 #include <CGAL/VTP_geodesics/internal/engine/Virtual_source_front.h>
+#include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
 
 #include <CGAL/tags.h>
 
@@ -30,10 +31,6 @@
 #include <limits>
 #include <type_traits>
 #include <vector>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace CGAL {
 namespace VTP_geodesics {
@@ -45,8 +42,27 @@ namespace internal {
 // | Sequential_tag: vertex heap          | VTP                 | AVTP                 |
 // | Parallel_tag: buckets, K lists, T th.| PVTP                | PAVTP                |
 //
-// Seeding: Seeding.h; shared state and steps: Propagation_state.h; schedules: Vertex_schedule.h;
-// loops: Sequential_loop.h, Parallel_loop.h; reset policy: Window_reset.h.
+// (A front of another kind, e.g. one virtual source per vertex, is a third row: its own loop on the
+// same state and steps. A start from known distances is another seeding, next to Seeding.h.)
+//
+// Where each concept lives (internal/ and internal/engine/):
+//   the window and its geometry (evaluation, ray crossing, bounds)  Window.h
+//   the frame of a face (points of faces, edge frames)              Face_frame.h
+//   a list crossing a triangle (Rule 1, children)                   Triangle_propagation.h
+//   filtering a list (vertex trimming, tiny windows)                List_filter.h
+//   pairwise pruning of the windows of a list (Rule 2)              Pair_pruning.h
+//   the window lists per half-edge (blocks, pools)                  Window_storage.h
+//   sources -> seeds, and the start of a propagation                engine/Seeding.h
+//   targets (vertices, points of faces)                             engine/Targets.h
+//   shared state and steps (light, emit, sweep, propagate one list) engine/Propagation_state.h
+//   schedules (heap, buckets)                                       engine/Vertex_schedule.h
+//   loops                                  engine/Sequential_loop.h, engine/Parallel_loop.h
+//   reset policy (AVTP / PAVTP)                                     engine/Window_reset.h
+//   stop rule (distance limit, targets), a hook                     engine/Stop_rule.h
+//   path recording (offers per vertex and target), a hook           engine/Path_record.h
+//   path trace-back                                                 engine/Path_trace.h
+//   threads: thread count, parallel_for (preprocessing, rows)       parallel/Parallel_for.h
+//   threads of the parallel loop                  parallel/Round_team.h, parallel/Stealing_ranges.h
 //
 // An engine is a workspace: it reads the mesh arrays (shared, read-only) and owns everything one
 // propagation writes, so that several engines can run on one mesh at the same time.
@@ -55,14 +71,9 @@ class Propagation_engine
 public:
   template <class ConcurrencyTag>
   void run(const Mesh_arrays& m, const std::vector<Seed>& seeds, std::vector<Target>&& targets,
-           const Propagation_settings& settings, int number_of_threads, Propagation_statistics& statistics)
+           const Propagation_settings& settings, int requested_threads, Propagation_statistics& statistics)
   {
-    const bool parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
-#ifndef _OPENMP
-    static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
-                  "Parallel_tag is enabled but OpenMP is unavailable "
-                  "(link CGAL::VTP_geodesics_OpenMP_support, or compile with -fopenmp).");
-#endif
+    const bool parallel = is_parallel<ConcurrencyTag>();
     const auto t0 = std::chrono::steady_clock::now();
     m_virtual_sources = settings.virtual_sources;
     if(m_virtual_sources)
@@ -84,16 +95,8 @@ public:
       statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       return;
     }
-    int threads = 1;
-    if(parallel)
-    {
-      threads = number_of_threads;
-#ifdef _OPENMP
-      if(threads <= 0)
-        threads = omp_get_max_threads();
-#endif
-      threads = (std::max)(1, (std::min)(threads, 126));
-    }
+    // at most 126 threads (one pool of window blocks each, see Window_storage)
+    int threads = parallel ? (std::min)(number_of_threads(requested_threads), 126) : 1;
     m_seeds = seeds;
     m_state.start(m, settings, static_cast<std::size_t>(threads), std::move(targets));
     if(parallel)

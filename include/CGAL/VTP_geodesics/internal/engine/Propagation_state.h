@@ -136,8 +136,7 @@ public:
       dist[v] = offer.distance;
       if(!label.empty())
         label[v] = label_of_origin(offer.origin);
-      if(record.is_active())
-        record.vertex[v] = offer;
+      record.on_vertex_lowered(v, offer);
       schedule.push(v, offer.distance);
     }
   }
@@ -147,8 +146,8 @@ public:
   // Target t is reached at distance d straight from `origin` (serial).
   void offer_to_target(Index t, double d, Index origin)
   {
-    if(stop.offer(t, d) && record.is_active())
-      record.target[static_cast<std::size_t>(t)] = straight_offer(d, origin);
+    if(stop.offer(t, d))
+      record.on_target_reached_straight(t, d, origin);
   }
 
   void enqueue(Index h)
@@ -182,8 +181,7 @@ public:
     if(!stop.has_targets())
       return;
     stop.on_vertex_processed(v, dist[v], [&](Index t, Index) {
-      if(record.is_active())
-        record.target[static_cast<std::size_t>(t)] = straight_offer(stop.target_value(static_cast<std::size_t>(t)), v);
+      record.on_target_reached_straight(t, stop.target_value(static_cast<std::size_t>(t)), v);
     });
   }
 
@@ -322,9 +320,8 @@ public:
       return offer;
     if(stop.has_targets())
       stop.on_list_crossing(h, s.in, s.events, [&](Index t, const Window& w) {
-        if(record.is_active())
-          record.target[static_cast<std::size_t>(t)] = offer_of_window(h, w, stop.targets()[static_cast<std::size_t>(t)],
-                                                                      stop.target_value(static_cast<std::size_t>(t)));
+        const std::size_t i = static_cast<std::size_t>(t);
+        record.on_target_reached_by_window(t, stop.target_value(i), h, w, stop.targets()[i]);
       });
     const Index h_cb = m.opposite[Mesh_arrays::next(h)];
     const Index h_ac = m.opposite[Mesh_arrays::prev(h)];
@@ -336,36 +333,9 @@ public:
     {
       const Window& w = s.in[r.best];
       offer.origin = w.origin;
-      if(record.is_active())
-      {
-        offer.halfedge = h;
-        offer.sx = w.sx;
-        offer.sy = w.sy;
-        // as in propagate_list(): straight when C is seen through the window, else bent at its nearer end
-        const double den = g.cy - w.sy;
-        const double xc = den > 0. ? w.sx + (g.cx - w.sx) * (-w.sy / den) : g.cx;
-        if(!(xc >= w.b0 && xc <= w.b1))
-          offer.bend = (std::min)((std::max)(xc, w.b0), w.b1);
-      }
+      record.on_list_offer(offer, h, w, g.cx, g.cy);
     }
     return offer;
-  }
-
-  // The offer of window w of the list of h to target t (as Stop_rule::on_list_crossing() evaluated it).
-  static Offer offer_of_window(Index h, const Window& w, const Target& t, double distance)
-  {
-    Offer o;
-    o.distance = distance;
-    o.origin = w.origin;
-    o.halfedge = h;
-    o.sx = w.sx;
-    o.sy = w.sy;
-    const std::size_t k = static_cast<std::size_t>(h % 3);
-    const double den = t.y[k] - w.sy;
-    const double xc = den > 0. ? w.sx + (t.x[k] - w.sx) * (-w.sy / den) : t.x[k];
-    if(!(xc >= w.b0 && xc <= w.b1))
-      o.bend = (std::min)((std::max)(xc, w.b0), w.b1);
-    return o;
   }
 
   // Appends children to the list of h with blocks of pool p; if the face of h is swept, h is queued into

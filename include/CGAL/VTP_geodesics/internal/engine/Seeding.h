@@ -14,8 +14,9 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
+#include <CGAL/VTP_geodesics/internal/Face_frame.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
-#include <CGAL/VTP_geodesics/internal/Window_storage.h>
+#include <CGAL/VTP_geodesics/internal/Window.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
 
 #include <CGAL/assertions.h>
@@ -114,100 +115,19 @@ inline Seed seed_from_barycentric(const Mesh_arrays& m, Index f, double b0, doub
     if(b[(k + 2) % 3] == 0.)
       return on_edge(h0 + k, b[(k + 1) % 3] * m.geometry[h0 + k].length);
   // the point in the frame of h0: A = (0,0), B = (L,0), C = (cx,cy)
-  const Halfedge_geometry& g = m.geometry[h0];
-  const double px = b[1] * g.length + b[2] * g.cx, py = b[2] * g.cy;
+  const Face_frame frame(m, f);
+  const double px = b[1] * frame.x[1] + b[2] * frame.x[2], py = b[2] * frame.y[2];
   if(m.is_degenerate_face[f])
   {
     // on the line of the longest edge: project
-    int k = 0;
-    for(int j = 1; j < 3; ++j)
-      if(m.geometry[h0 + j].length > m.geometry[h0 + k].length)
-        k = j;
-    const double vx[3] = { 0., g.length, g.cx }, vy[3] = { 0., 0., g.cy };
-    const double ex = vx[(k + 1) % 3] - vx[k], ey = vy[(k + 1) % 3] - vy[k];
-    const double e2 = ex * ex + ey * ey;
-    const double t = e2 > 0. ? ((px - vx[k]) * ex + (py - vy[k]) * ey) / std::sqrt(e2) : 0.;
-    return on_edge(h0 + k, t);
+    const int k = longest_edge(m, f);
+    return on_edge(h0 + k, frame.projection(k, px, py));
   }
   s.kind = Seed::IN_FACE;
   s.element = f;
   s.x = px;
   s.y = py;
   return s;
-}
-
-// The coordinates of the point (x, y) of the frame of half-edge 3f + j in the frame of half-edge 3f.
-inline void to_face_frame(const Mesh_arrays& m, Index f, int j, double x, double y, double& px, double& py)
-{
-  const Halfedge_geometry& g = m.geometry[3 * f];
-  const double vx[3] = { 0., g.length, g.cx }, vy[3] = { 0., 0., g.cy };
-  const double ex = vx[(j + 1) % 3] - vx[j], ey = vy[(j + 1) % 3] - vy[j];
-  const double e = std::sqrt(ex * ex + ey * ey);
-  const double ux = e > 0. ? ex / e : 1., uy = e > 0. ? ey / e : 0.;
-  px = vx[j] + x * ux - y * uy;
-  py = vy[j] + x * uy + y * ux;
-}
-
-// The target at the point (px, py) of face f, given in the frame of half-edge 3f: its coordinates in the
-// frames of the three half-edges of f, and its distances to the corners.
-inline Target face_target(const Mesh_arrays& m, Index f, double px, double py)
-{
-  Target t;
-  t.face = f;
-  const Halfedge_geometry& g = m.geometry[3 * f];
-  const double vx[3] = { 0., g.length, g.cx }, vy[3] = { 0., 0., g.cy };
-  for(int k = 0; k < 3; ++k)
-  {
-    const double ex = vx[(k + 1) % 3] - vx[k], ey = vy[(k + 1) % 3] - vy[k];
-    const double e = std::sqrt(ex * ex + ey * ey);
-    const double ux = e > 0. ? ex / e : 1., uy = e > 0. ? ey / e : 0.;
-    const double rx = px - vx[k], ry = py - vy[k];
-    t.x[k] = rx * ux + ry * uy;
-    t.y[k] = (std::max)(0., ux * ry - uy * rx);
-    t.corner_distance[k] = std::sqrt(rx * rx + ry * ry);
-  }
-  return t;
-}
-
-// The target at the point of face f with barycentric coordinates (b0, b1, b2) (see seed_from_barycentric()).
-// A point with two zero coordinates is the vertex it denotes. A point of a face of (almost) zero area is
-// taken on the longest edge of the face, in the face on the other side of that edge when that one is not
-// degenerate (windows cannot cross a face of zero area).
-inline Target target_from_barycentric(const Mesh_arrays& m, Index f, double b0, double b1, double b2)
-{
-  const Index h0 = 3 * f;
-  const double b[3] = { b0, b1, b2 };
-  for(int k = 0; k < 3; ++k)
-    if(b[(k + 1) % 3] == 0. && b[(k + 2) % 3] == 0.)
-    {
-      Target t;
-      t.vertex = m.source[h0 + k];
-      return t;
-    }
-  const Halfedge_geometry& g = m.geometry[h0];
-  double px = b1 * g.length + b2 * g.cx, py = b2 * g.cy;
-  if(m.is_degenerate_face[f])
-  {
-    int k = 0;
-    for(int j = 1; j < 3; ++j)
-      if(m.geometry[h0 + j].length > m.geometry[h0 + k].length)
-        k = j;
-    const double vx[3] = { 0., g.length, g.cx }, vy[3] = { 0., 0., g.cy };
-    const double ex = vx[(k + 1) % 3] - vx[k], ey = vy[(k + 1) % 3] - vy[k];
-    const double e = std::sqrt(ex * ex + ey * ey);
-    const double length = m.geometry[h0 + k].length;
-    double t = e > 0. ? ((px - vx[k]) * ex + (py - vy[k]) * ey) / e : 0.;
-    t = (std::min)((std::max)(t, 0.), length);
-    const Index o = m.opposite[h0 + k];
-    if(o != NO_INDEX && !m.is_degenerate_face[Mesh_arrays::face(o)])
-    {
-      const Index g2 = Mesh_arrays::face(o);
-      to_face_frame(m, g2, static_cast<int>(o % 3), length - t, 0., px, py);
-      return face_target(m, g2, px, py);
-    }
-    to_face_frame(m, f, k, t, 0., px, py);
-  }
-  return face_target(m, f, px, py);
 }
 
 // Starts the propagation from `seeds`: the vertices get distance 0 and act as pseudo-sources; a point
@@ -267,11 +187,10 @@ inline void seed_sources(Propagation_state& st, const std::vector<Seed>& seeds)
     else
     {
       const Index h0 = 3 * s.element;
-      const Halfedge_geometry& g = m.geometry[h0];
-      const double vx[3] = { 0., g.length, g.cx }, vy[3] = { 0., 0., g.cy };
+      const Face_frame frame(m, s.element);
       for(int k = 0; k < 3; ++k)
       {
-        const double dx = s.x - vx[k], dy = s.y - vy[k];
+        const double dx = s.x - frame.x[k], dy = s.y - frame.y[k];
         st.light(m.source[h0 + k], std::sqrt(dx * dx + dy * dy), origin);
       }
       st.stop.for_each_target_in_face(s.element, [&](Index t) {
@@ -285,13 +204,10 @@ inline void seed_sources(Propagation_state& st, const std::vector<Seed>& seeds)
         if(o == NO_INDEX)
           continue;
         // the point in the frame of h0 + k (from vertex k to vertex k+1), then in the frame of its opposite
-        const double ex = vx[(k + 1) % 3] - vx[k], ey = vy[(k + 1) % 3] - vy[k];
-        const double e = std::sqrt(ex * ex + ey * ey);
-        if(!(e > 0.))
+        double ux, uy, x, y;
+        if(!(frame.direction(k, ux, uy) > 0.))
           continue;
-        const double ux = ex / e, uy = ey / e;
-        const double rx = s.x - vx[k], ry = s.y - vy[k];
-        const double x = rx * ux + ry * uy, y = ux * ry - uy * rx;
+        frame.to_edge_frame(k, s.x, s.y, x, y);
         Window w;
         w.b0 = 0.;
         w.b1 = m.geometry[o].length;

@@ -15,7 +15,8 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
-#include <CGAL/VTP_geodesics/internal/Window_storage.h>
+#include <CGAL/VTP_geodesics/internal/Window.h>
+#include <CGAL/VTP_geodesics/internal/engine/Targets.h>
 #include <CGAL/VTP_geodesics/internal/engine/Vertex_schedule.h>
 
 #include <CGAL/assertions.h>
@@ -30,40 +31,6 @@
 namespace CGAL {
 namespace VTP_geodesics {
 namespace internal {
-
-// A point whose distance is wanted: a vertex, or a point of a face given in the frame of each of the
-// face's half-edges (so that the windows of any list crossing the face can be evaluated at it).
-struct Target
-{
-  Index vertex = NO_INDEX;  // a vertex target; otherwise:
-  Index face = NO_INDEX;
-  double x[3] = { 0., 0., 0. }, y[3] = { 0., 0., 0. };  // the point in the frame of half-edge 3f + k
-  double corner_distance[3] = { 0., 0., 0. };           // its distance to vertex source(3f + k)
-};
-
-// The smallest distance that window w offers at a point (px, py), py >= 0, of the face it is about to
-// cross: the straight segment from its source image when the point is seen through the window, else
-// the path bent at the nearer end of the window (a real path, longer than the straight one).
-inline double window_distance_at(const Window& w, double px, double py)
-{
-  const double den = py - w.sy;
-  const double xc = den > 0. ? w.sx + (px - w.sx) * (-w.sy / den) : px;
-  const double e = (std::min)((std::max)(xc, w.b0), w.b1);
-  const double ax = e - w.sx, bx = px - e;
-  if(e == xc)
-  {
-    const double dx = px - w.sx, dy = py - w.sy;
-    return w.sigma + std::sqrt(dx * dx + dy * dy);
-  }
-  return w.sigma + std::sqrt(ax * ax + w.sy * w.sy) + std::sqrt(bx * bx + py * py);
-}
-
-// The smallest distance a window offers on its own edge: every path it carries beyond is longer.
-inline double window_lower_bound(const Window& w)
-{
-  const double e = (std::min)((std::max)(w.sx, w.b0), w.b1) - w.sx;
-  return w.sigma + std::sqrt(e * e + w.sy * w.sy);
-}
 
 // What the threads of one round (or the sequential loop, after each list) report to the stop rule:
 // new smallest window bounds of lists, and new distances of targets.

@@ -20,6 +20,7 @@
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
 #include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
 #include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
+#include <CGAL/VTP_geodesics/internal/engine/Targets.h>
 
 #include <CGAL/assertions.h>
 

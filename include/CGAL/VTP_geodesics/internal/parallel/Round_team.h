@@ -14,8 +14,6 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
-#include <CGAL/VTP_geodesics/internal/parallel/Team_barrier.h>
-
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -25,14 +23,29 @@
 #include <mutex>
 #include <thread>
 
+#if defined(_MSC_VER) && (defined(_M_X64) || defined(_M_IX86))
+#include <intrin.h>
+#endif
+
 namespace CGAL {
 namespace VTP_geodesics {
 namespace internal {
 
+// The processor's spin-wait hint: leaves the core's resources to a hardware sibling and lets a
+// hypervisor see that the thread spins.
+inline void spin_pause()
+{
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+  __builtin_ia32_pause();
+#elif defined(_MSC_VER) && (defined(_M_X64) || defined(_M_IX86))
+  _mm_pause();
+#endif
+}
+
 // The synchronisation of a team that works in rounds published by one thread (the master, thread 0),
 // where no thread waits for another to arrive:
 //  - the master prepares a round, then publishes it (a new round number, with release semantics);
-//  - every thread, master included, takes work items of the current round (Tagged_ranges: an item can
+//  - every thread, master included, takes work items of the current round (Stealing_ranges.h: an item can
 //    only be taken with the round number it belongs to) and counts the items it finished;
 //  - the round is over when the finished items add up to the round's items: the master then goes on.
 // A thread that is not running (the machine is busy with other work) does not hold the others back,
@@ -54,7 +67,7 @@ public:
 
   // master: publishes round `round` (> the previous one, > 0) of `items` items, after writing everything
   // the items need. A thread still trying to take items of a round `horizon` rounds older (which could
-  // then be mistaken for this one by tags of `horizon` values, see Stealing_range) is waited for.
+  // then be mistaken for this one by tags of `horizon` values, see Stealing_range in Stealing_ranges.h) is waited for.
   void publish(std::uint32_t round, std::size_t items, std::uint32_t horizon)
   {
     for(int t = 1; t < m_threads; ++t)

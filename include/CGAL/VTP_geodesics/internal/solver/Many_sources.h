@@ -1,0 +1,93 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_SOLVER_MANY_SOURCES_H
+#define CGAL_VTP_GEODESICS_INTERNAL_SOLVER_MANY_SOURCES_H
+
+#include <CGAL/license/VTP_geodesics.h>
+
+#include <CGAL/VTP_geodesics/Propagation_statistics.h>
+#include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
+#include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
+#include <CGAL/VTP_geodesics/internal/solver/Statistics_merge.h>
+
+#include <CGAL/tags.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+namespace CGAL {
+namespace VTP_geodesics {
+namespace internal {
+
+// The rows of Geodesic_distance_solver::compute_each(): one propagation per seed, each with the
+// sequential scheduling in the workspace of its thread (`workspaces` grows to one engine per thread),
+// handed to `sink(i, items[i], distances)` by one thread at a time. With `parallel`, the seeds are
+// shared among number_of_threads(threads) threads (at most one per seed), dynamically; else one after
+// the other. An exception of a propagation or of the sink stops the handing out of rows and is thrown
+// again once the rows under way are done. `statistics` receives the sum of the rows.
+template <class Item, class RowSink>
+void compute_rows(const Mesh_arrays& arrays, const std::vector<Item>& items, const std::vector<Seed>& seeds,
+                  RowSink& sink, const Propagation_settings& settings, bool parallel, int threads,
+                  std::vector<std::unique_ptr<Propagation_engine> >& workspaces, Propagation_statistics& statistics)
+{
+  CGAL_precondition(items.size() == seeds.size());
+  threads = parallel ? number_of_threads(threads) : 1;
+  threads = (std::max)(1, (std::min)(threads, static_cast<int>((std::max)(std::size_t(1), seeds.size()))));
+  while(workspaces.size() < static_cast<std::size_t>(threads))
+    workspaces.emplace_back(new Propagation_engine());
+  std::vector<Propagation_statistics> per_thread(static_cast<std::size_t>(threads));
+
+  const auto t0 = std::chrono::steady_clock::now();
+  Parallel_for loop(threads, Parallel_for::DYNAMIC);
+  std::mutex sink_mutex;
+  bool sink_failed = false;  // under sink_mutex
+  loop.run(static_cast<long long>(seeds.size()), [&](long long il, int t) {
+    const std::size_t i = static_cast<std::size_t>(il);
+    Propagation_engine& workspace = *workspaces[static_cast<std::size_t>(t)];
+    Propagation_statistics st;
+    workspace.template run<CGAL::Sequential_tag>(arrays, std::vector<Seed>(1, seeds[i]), std::vector<Target>(),
+                                                 settings, 1, st);
+    add_row_statistics(st, per_thread[static_cast<std::size_t>(t)]);
+    std::lock_guard<std::mutex> lock(sink_mutex);
+    if(sink_failed || loop.failed())
+      return;
+    try
+    {
+      sink(i, items[i], workspace.distances());
+    }
+    catch(...)
+    {
+      sink_failed = true;
+      throw;
+    }
+  }, /* rethrow */ false);
+  statistics = Propagation_statistics();
+  statistics.vertices = static_cast<std::size_t>(arrays.nv);
+  statistics.faces = static_cast<std::size_t>(arrays.nf);
+  statistics.method = settings.reset_step < std::numeric_limits<double>::infinity() ? "avtp" : "vtp";
+  statistics.threads = threads;
+  statistics.sources = seeds.size();
+  for(const Propagation_statistics& st : per_thread)
+    add_row_statistics(st, statistics);
+  statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  loop.rethrow();
+}
+
+} // namespace internal
+} // namespace VTP_geodesics
+} // namespace CGAL
+
+#endif // CGAL_VTP_GEODESICS_INTERNAL_SOLVER_MANY_SOURCES_H

@@ -1,0 +1,192 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_SOLVER_MESH_IMPORT_H
+#define CGAL_VTP_GEODESICS_INTERNAL_SOLVER_MESH_IMPORT_H
+
+#include <CGAL/license/VTP_geodesics.h>
+
+#include <CGAL/VTP_geodesics/Invalid_input_error.h>
+#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
+#include <CGAL/VTP_geodesics/internal/solver/Mesh_index.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace VTP_geodesics {
+namespace internal {
+
+// Throws the error for face f, which has an edge of non-finite length: names the vertex with a
+// non-finite coordinate if there is one, else the face (its coordinates are too large to be measured).
+template <class TriangleMesh, class VertexPointMap>
+[[noreturn]] void throw_non_finite(const Mesh_index<TriangleMesh>& index, VertexPointMap vpm, std::size_t f)
+{
+  const TriangleMesh& tm = index.tm;
+  auto h = halfedge(index.faces[f], tm);
+  for(int k = 0; k < 3; ++k, h = next(h, tm))
+  {
+    const auto p = get(vpm, source(h, tm));
+    for(int j = 0; j < 3; ++j)
+      if(!std::isfinite(CGAL::to_double(p[j])))
+        throw Invalid_input_error("vertex " + std::to_string(get(index.vertex_id, source(h, tm)))
+                                  + " has a non-finite coordinate");
+  }
+  throw Invalid_input_error("face " + std::to_string(f) + " has an edge of non-finite length (coordinates too "
+                            "large)");
+}
+
+// Imports the mesh of `index` into its arrays, on `threads` threads (at least 1; the result does not
+// depend on their number): numbers the vertices, faces and half-edges, checks that every face is a
+// triangle and that the mesh fits 32-bit indices, measures the edges and the face areas with the
+// vertex point map `vpm` and the traits, and scales the lengths by a power of two (index.length_scale).
+template <class TriangleMesh, class VertexPointMap, class Traits>
+void import_mesh(Mesh_index<TriangleMesh>& index, VertexPointMap vpm, const Traits& traits, int threads)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_halfedge_property_t<Index> >::const_type
+    Halfedge_id_map;
+  const TriangleMesh& tm = index.tm;
+  // The per-mesh arrays number vertices and half-edges with 32-bit integers.
+  const std::size_t max_index = static_cast<std::size_t>((std::numeric_limits<Index>::max)());
+  if(static_cast<std::size_t>(num_vertices(tm)) > max_index || static_cast<std::size_t>(num_faces(tm)) > max_index / 3)
+    throw Invalid_input_error("the mesh is too large (more than " + std::to_string(max_index) + " vertices or "
+                              + std::to_string(max_index / 3) + " faces)");
+
+  typename Traits::Compute_squared_distance_3 sqd = traits.compute_squared_distance_3_object();
+  typename Traits::Compute_squared_area_3 sqa = traits.compute_squared_area_3_object();
+
+  // The numbering writes the dynamic property maps: one thread (a dynamic map may be a hash map). It
+  // checks that every face is a triangle.
+  Index nv = 0;
+  index.vertices.reserve(num_vertices(tm));
+  for(vertex_descriptor v : vertices(tm))
+  {
+    put(index.vertex_id, v, nv++);
+    index.vertices.push_back(v);
+  }
+  // Half-edges are numbered face by face (3f, 3f+1, 3f+2); the arrays are filled in place (no
+  // per-half-edge temporary beyond the numbering map), so that the peak memory of the
+  // construction stays close to that of the arrays.
+  Halfedge_id_map hid = get(CGAL::dynamic_halfedge_property_t<Index>(), tm);
+  std::vector<face_descriptor>& faces_in_order = index.faces;
+  faces_in_order.reserve(num_faces(tm));
+  for(face_descriptor f : faces(tm))
+  {
+    const std::size_t id = faces_in_order.size();
+    put(index.face_id, f, static_cast<Index>(id));
+    const halfedge_descriptor h0 = halfedge(f, tm);
+    halfedge_descriptor h = h0;
+    for(int k = 0; k < 3; ++k)
+    {
+      put(hid, h, static_cast<Index>(3 * id + static_cast<std::size_t>(k)));
+      h = next(h, tm);
+      if((h == h0) != (k == 2))  // a face of another degree than 3
+        throw Invalid_input_error("the mesh is not a triangle mesh (face " + std::to_string(id)
+                                  + " is not a triangle)");
+    }
+    faces_in_order.push_back(f);
+  }
+  const std::size_t nf = faces_in_order.size();
+  std::vector<Index> tri(3 * nf), opp(3 * nf);
+  std::vector<Face_geometry> face_geometry(nf);
+  // One pass over the faces (the mesh is read once), which only reads the mesh and the maps: the faces
+  // are shared among the threads. The squared area is kept in `area` until the scale is known. The
+  // longest edge and the first face with a non-finite edge are found per thread, then over the threads.
+  struct alignas(64) Per_thread
+  {
+    double longest = 0.;
+    std::size_t first_non_finite = (std::numeric_limits<std::size_t>::max)();
+  };
+  Parallel_for loop(threads);
+  std::vector<Per_thread> per_thread(static_cast<std::size_t>(loop.threads()));
+  loop.run(static_cast<long long>(nf), [&](long long fl, int t) {
+    const std::size_t f = static_cast<std::size_t>(fl);
+    Per_thread& mine = per_thread[static_cast<std::size_t>(t)];
+    halfedge_descriptor h = halfedge(faces_in_order[f], tm);
+    vertex_descriptor corner[3];
+    for(std::size_t k = 0; k < 3; ++k, h = next(h, tm))
+    {
+      corner[k] = source(h, tm);
+      tri[3 * f + k] = get(index.vertex_id, corner[k]);
+      const halfedge_descriptor o = opposite(h, tm);
+      opp[3 * f + k] = is_border(o, tm) ? NO_INDEX : get(hid, o);
+    }
+    Face_geometry& g = face_geometry[f];
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const double l = std::sqrt(CGAL::to_double(sqd(get(vpm, corner[k]), get(vpm, corner[(k + 1) % 3]))));
+      if(!std::isfinite(l))
+        mine.first_non_finite = (std::min)(mine.first_non_finite, f);
+      g.length[k] = l;
+      mine.longest = (std::max)(mine.longest, l);
+    }
+    g.area = CGAL::to_double(sqa(get(vpm, corner[0]), get(vpm, corner[1]), get(vpm, corner[2])));
+  });
+  double longest = 0.;
+  std::size_t first_non_finite = (std::numeric_limits<std::size_t>::max)();
+  for(const Per_thread& p : per_thread)
+  {
+    longest = (std::max)(longest, p.longest);
+    first_non_finite = (std::min)(first_non_finite, p.first_non_finite);
+  }
+  if(first_non_finite < nf)
+    throw_non_finite(index, vpm, first_non_finite);
+  // The engine works on lengths scaled by a power of two (exact in floating point) that brings the
+  // longest edge into [0.5, 1): its squares and fourth powers can then neither overflow nor
+  // underflow, whatever the scale of the coordinates. Distances are scaled back on output.
+  int exponent = 0;
+  if(longest > 0.)
+    std::frexp(longest, &exponent);
+  index.length_scale = std::ldexp(1., exponent);
+  // multiplying by a power of two that is a normal number rounds as std::ldexp does (both are
+  // correctly rounded); ldexp is kept for the extreme scales
+  const bool multiply = exponent > -500 && exponent < 500;
+  const double down = std::ldexp(1., -exponent), down2 = std::ldexp(1., -2 * exponent);
+  auto scaled = [&](double x, int e, double factor) { return multiply ? x * factor : std::ldexp(x, e); };
+  loop.run(static_cast<long long>(nf), [&](long long fl, int) {
+    Face_geometry& g = face_geometry[static_cast<std::size_t>(fl)];
+    const double longest_edge = (std::max)(g.length[0], (std::max)(g.length[1], g.length[2]));
+    for(double& l : g.length)
+      l = scaled(l, -exponent, down);
+    // face areas from the points (accurate for nearly flat triangles, see VTPGeodesicTraits_3);
+    // -1 where that overflows or underflows: the engine then uses the lengths
+    const double a2 = g.area;  // the squared area, from the first pass
+    g.area = -1.;
+    const double a = scaled(std::sqrt(a2), -2 * exponent, down2);
+    // a zero is trusted only where the squared area of a face of relative height 1e-12
+    // could not have underflowed (edges longer than 1e-60)
+    if(std::isfinite(a2) && std::isfinite(a) && (a > 0. || (a2 == 0. && longest_edge > 1e-60)))
+      g.area = a;
+  });
+  index.arrays.build(nv, std::move(tri), std::move(opp), std::move(face_geometry), loop.threads());
+}
+
+} // namespace internal
+} // namespace VTP_geodesics
+} // namespace CGAL
+
+#endif // CGAL_VTP_GEODESICS_INTERNAL_SOLVER_MESH_IMPORT_H
