@@ -45,11 +45,14 @@ const vtp_support::Option_table<Arguments> options = {
       "scipy.sparse.csr_matrix((data, indices, indptr), shape); entries\n"
       "beyond R and unreachable vertices are absent",
       vtp_support::apply_distance_limit<Arguments, &Arguments::max_distance, &Arguments::has_max_distance> },
-    { "--method", "vtp|avtp", "exact VTP (default) or approximate AVTP",
+    { "--method", "vtp|avtp|vsp",
+      "exact VTP (default), approximate AVTP, or virtual source propagation\n"
+      "(vsp: approximate, an upper bound, the fastest)",
       [](Arguments& a, const std::string&, const std::string& m) {
-        if(m == "vtp") a.approximate = false;
-        else if(m == "avtp") a.approximate = true;
-        else throw Tool_error("unknown method '" + m + "' (expected vtp or avtp)");
+        if(m != "vtp" && m != "avtp" && m != "vsp")
+          throw Tool_error("unknown method '" + m + "' (expected vtp, avtp or vsp)");
+        a.approximate = m == "avtp";
+        a.virtual_sources = m == "vsp";
       } },
     { "--lambda", "L", "reset period of avtp, in mean edge lengths (default 8)",
       [](Arguments& a, const std::string& n, const std::string& v) {

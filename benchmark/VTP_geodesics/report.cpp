@@ -41,7 +41,7 @@ const char* const csv_columns =
   "mesh,vertices,faces,source,method,threads,seconds,preprocessing_seconds,peak_rss_mb,windows_created,"
   "windows_propagated,peak_window_bytes,max_abs_err_vs_vtp,max_rel_err_vs_vtp,mean_rel_err_vs_vtp,speedup_vs_cgal,"
   "total_seconds,rss_at_start_mb,mean_pointwise_rel_err_vs_vtp,max_pointwise_rel_err_vs_vtp,speedup_vs_vtp,"
-  "peak_live_windows,ns_per_window,pseudo_source_share,cpu_seconds,cpu_ratio_vs_vtp,status";
+  "peak_live_windows,ns_per_window,pseudo_source_share,cpu_seconds,cpu_ratio_vs_vtp,status,max_below_vtp";
 
 
 void write_csv_row(std::ostream& os, const Mesh_info& mesh, std::size_t source, const Run_result& r)
@@ -64,7 +64,7 @@ void write_csv_row(std::ostream& os, const Mesh_info& mesh, std::size_t source, 
      << (w && r.method.kind != Method_kind::EXTERNAL ? std::to_string(h.peak_live_windows) : "") << ','
      << number(ns_per_window(r), 6) << ',' << number(mesh.pseudo_source_share, 6) << ','
      << (r.ok ? number(h.cpu_seconds, 9) : "") << ',' << number(r.cpu_ratio_vs_vtp, 6) << ','
-     << csv_field(r.status) << '\n';
+     << csv_field(r.status) << ',' << number(r.max_below_vtp, 6) << '\n';
 }
 
 void print_table_header()

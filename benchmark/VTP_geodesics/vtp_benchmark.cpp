@@ -212,6 +212,14 @@ int run(int argc, char** argv)
           r.mean_pointwise_rel_err = c.mean_pointwise_rel_diff;
           r.max_pointwise_rel_err = c.max_pointwise_rel_diff;
           r.mismatched_infinities = c.mismatched_infinities;
+          double below = -inf, scale = 0.;
+          for(double x : vtp.distances)
+            if(std::isfinite(x))
+              scale = (std::max)(scale, x);
+          for(std::size_t i = 0; i < r.distances.size() && i < vtp.distances.size(); ++i)
+            if(std::isfinite(r.distances[i]) && std::isfinite(vtp.distances[i]))
+              below = (std::max)(below, vtp.distances[i] - r.distances[i]);
+          r.max_below_vtp = scale > 0. ? below / scale : below;
           if(c.mismatched_infinities > 0 && r.status == "ok")
             r.status = "ok (" + std::to_string(c.mismatched_infinities) + " reachability mismatches)";
         }

@@ -58,6 +58,7 @@ struct Method
   Method_kind kind = Method_kind::VTP;
   int threads = 1;
   double lambda = inf;      // approximate variants
+  bool virtual_sources = false;  // vsp, pvsp:T (one virtual source per vertex)
   std::string command;      // EXTERNAL: shell command with {mesh}, {source}, {output}
 };
 
@@ -126,6 +127,7 @@ struct Run_result
   double max_abs_err = nan_value, max_rel_err = nan_value, mean_rel_err = nan_value, speedup_vs_cgal = nan_value;
   double mean_pointwise_rel_err = nan_value, max_pointwise_rel_err = nan_value, speedup_vs_vtp = nan_value;
   double cpu_ratio_vs_vtp = nan_value;  // processor time of VTP / processor time of this method
+  double max_below_vtp = nan_value;     // largest (vtp - d) / largest vtp distance (> 0: below the exact one)
   std::size_t mismatched_infinities = 0;
 };
 

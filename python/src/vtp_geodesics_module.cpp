@@ -347,6 +347,7 @@ public:
       const auto vdm = boost::make_iterator_property_map(d, get(boost::vertex_index, m_mesh));
       const auto np = VTP::parameters::number_of_threads(threads_or_default(threads))
                         .lambda(lambda)
+                        .virtual_sources(method.virtual_sources)
                         .maximum_distance(max_distance)
                         .targets(live_targets)
                         .stop_at_targets(!live_targets.empty())
@@ -477,6 +478,7 @@ public:
     const CGAL::Constant_property_map<Vertex_index, double> no_map;
     const auto np = VTP::parameters::number_of_threads(threads_or_default(0))
                       .lambda(method.approximate ? lam : infinity)
+                      .virtual_sources(method.virtual_sources)
                       .stop_at_targets(true)
                       .statistics(m_statistics);
     with_method_tag(method, [&](auto tag) {
@@ -832,6 +834,7 @@ private:
       std::lock_guard<std::mutex> lock(m_mutex);
       const auto np = VTP::parameters::number_of_threads(threads_or_default(threads))
                         .lambda(method.approximate ? lam : infinity)
+                        .virtual_sources(method.virtual_sources)
                         .maximum_distance(max_distance);
       auto sink = [&](std::size_t i, Vertex_index, const std::vector<double>& d) {
         write(i, d);

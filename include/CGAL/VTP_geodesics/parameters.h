@@ -49,6 +49,7 @@ enum maximum_distance_t { maximum_distance };
 enum targets_t { targets };
 enum stop_at_targets_t { stop_at_targets };
 enum record_paths_t { record_paths };
+enum virtual_sources_t { virtual_sources };
 
 } // namespace internal_np
 
@@ -82,6 +83,7 @@ struct Named_parameters
   CGAL_VTP_GEODESICS_LINK(targets, internal_np::targets_t)
   CGAL_VTP_GEODESICS_LINK(stop_at_targets, internal_np::stop_at_targets_t)
   CGAL_VTP_GEODESICS_LINK(record_paths, internal_np::record_paths_t)
+  CGAL_VTP_GEODESICS_LINK(virtual_sources, internal_np::virtual_sources_t)
   CGAL_VTP_GEODESICS_LINK(vertex_point_map, CGAL::internal_np::vertex_point_t)
   CGAL_VTP_GEODESICS_LINK(geom_traits, CGAL::internal_np::geom_traits_t)
 #undef CGAL_VTP_GEODESICS_LINK
@@ -118,6 +120,7 @@ CGAL_VTP_GEODESICS_FIRST_LINK(maximum_distance, internal_np::maximum_distance_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(targets, internal_np::targets_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(stop_at_targets, internal_np::stop_at_targets_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(record_paths, internal_np::record_paths_t)
+CGAL_VTP_GEODESICS_FIRST_LINK(virtual_sources, internal_np::virtual_sources_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(vertex_point_map, CGAL::internal_np::vertex_point_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(geom_traits, CGAL::internal_np::geom_traits_t)
 #undef CGAL_VTP_GEODESICS_FIRST_LINK

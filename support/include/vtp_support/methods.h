@@ -20,23 +20,26 @@ namespace vtp_support {
 
 struct Method_info
 {
-  const char* name;         // as typed on a command line: "vtp", "pvtp", "avtp", "pavtp"
+  const char* name;         // as typed on a command line: "vtp", "pvtp", "avtp", "pavtp", "vsp", "pvsp"
   bool parallel;            // CGAL::Parallel_tag scheduling (OpenMP threads)
   bool approximate;         // window resets every lambda * h (AVTP / PAVTP)
   const char* description;  // one line, for --help texts
+  bool virtual_sources;     // one virtual source per vertex (VSP / PVSP): approximate, an upper bound
 };
 
 inline const Method_info* methods_begin()
 {
   static const Method_info table[] = {
-    { "vtp",   false, false, "exact, sequential" },
-    { "pvtp",  true,  false, "exact, parallel" },
-    { "avtp",  false, true,  "approximate, sequential" },
-    { "pavtp", true,  true,  "approximate, parallel" },
+    { "vtp",   false, false, "exact, sequential", false },
+    { "pvtp",  true,  false, "exact, parallel", false },
+    { "avtp",  false, true,  "approximate, sequential", false },
+    { "pavtp", true,  true,  "approximate, parallel", false },
+    { "vsp",   false, false, "approximate (one virtual source per vertex, upper bound), sequential", true },
+    { "pvsp",  true,  false, "as vsp, parallel tag (runs the sequential front)", true },
   };
   return table;
 }
-inline const Method_info* methods_end() { return methods_begin() + 4; }
+inline const Method_info* methods_end() { return methods_begin() + 6; }
 
 // The method called `name`, or nullptr.
 inline const Method_info* find_method(const std::string& name)

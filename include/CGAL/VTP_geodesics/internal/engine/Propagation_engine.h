@@ -21,6 +21,7 @@
 #include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
 #include <CGAL/VTP_geodesics/internal/engine/Sequential_loop.h>
 #include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
+#include <CGAL/VTP_geodesics/internal/engine/Virtual_source_front.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
 
 #include <CGAL/tags.h>
@@ -74,6 +75,26 @@ public:
   {
     const bool parallel = is_parallel<ConcurrencyTag>();
     const auto t0 = std::chrono::steady_clock::now();
+    m_virtual_sources = settings.virtual_sources;
+    if(m_virtual_sources)
+    {
+      // one virtual source per vertex (Virtual_source_front.h); the parallel tag runs the same front
+      m_seeds = seeds;
+      statistics = Propagation_statistics();
+      m_vsp.run(m, m_seeds, std::move(targets), settings, statistics);
+      statistics.method = parallel ? "pvsp" : "vsp";
+      statistics.threads = 1;
+      statistics.vertices = static_cast<std::size_t>(m.nv);
+      statistics.faces = static_cast<std::size_t>(m.nf);
+      for(double d : m_vsp.dist)
+        if(d < std::numeric_limits<double>::infinity())
+        {
+          ++statistics.reached_vertices;
+          statistics.max_distance = (std::max)(statistics.max_distance, d);
+        }
+      statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      return;
+    }
     // at most 126 threads (one pool of window blocks each, see Window_storage)
     int threads = parallel ? (std::min)(number_of_threads(requested_threads), 126) : 1;
     m_seeds = seeds;
@@ -104,24 +125,26 @@ public:
   }
 
   // the distances of the last run (per vertex, in the unit of the output: Propagation_settings::unit)
-  std::vector<double>& distances() { return m_state.dist; }
-  const std::vector<double>& distances() const { return m_state.dist; }
+  std::vector<double>& distances() { return m_virtual_sources ? m_vsp.dist : m_state.dist; }
+  const std::vector<double>& distances() const { return m_virtual_sources ? m_vsp.dist : m_state.dist; }
   // the nearest-source labels of the last run (empty unless asked for; NO_INDEX where unreached)
-  const std::vector<Index>& labels() const { return m_state.label; }
+  const std::vector<Index>& labels() const { return m_virtual_sources ? m_vsp.label : m_state.label; }
   // the distance of target t of the last run (+infinity if not final: beyond the limit or unreached)
   double target_distance(std::size_t t) const
   {
+    if(m_virtual_sources)
+      return m_vsp.target_distance(t);
     const Target& target = m_state.stop.targets()[t];
     if(target.vertex != NO_INDEX)
       return m_state.dist[target.vertex];
     const double d = m_state.stop.target_value(t);
     return d <= m_state.stop.cutoff() ? d * m_state.settings.unit : std::numeric_limits<double>::infinity();
   }
-  std::size_t number_of_targets() const { return m_state.stop.targets().size(); }
+  std::size_t number_of_targets() const { return targets().size(); }
   // the sources, the targets and the trace-back record of the last run
   const std::vector<Seed>& seeds() const { return m_seeds; }
-  const std::vector<Target>& targets() const { return m_state.stop.targets(); }
-  const Path_record& path_record() const { return m_state.record; }
+  const std::vector<Target>& targets() const { return m_virtual_sources ? m_vsp.targets() : m_state.stop.targets(); }
+  const Path_record& path_record() const { return m_virtual_sources ? m_vsp.record : m_state.record; }
 
 private:
   // Distances that are not final when the propagation stopped early (or beyond the limit) become +infinity.
@@ -172,6 +195,8 @@ private:
   Propagation_state m_state;
   Sequential_loop m_sequential;
   Parallel_loop m_parallel;
+  Virtual_source_front m_vsp;
+  bool m_virtual_sources = false;  // the last run was virtual source propagation
 };
 
 } // namespace internal

@@ -44,6 +44,7 @@ struct Propagation_settings
   bool stop_at_targets = false;        // stop once the targets are final
   bool record_paths = false;           // keep what the path trace-back needs
   double unit = 1.;                    // the engine's unit of length, in the unit of the output distances
+  bool virtual_sources = false;        // one virtual source per vertex (VSP / PVSP) instead of windows
 };
 
 // The buffers of one thread: a list being propagated, its children, and counters.

@@ -77,6 +77,7 @@ Propagation_settings settings_from_parameters(const NamedParameters& np, double 
   settings.stop_at_targets = choose_parameter(get_parameter(np, internal_np::stop_at_targets), true);
   settings.record_paths = choose_parameter(get_parameter(np, internal_np::record_paths), false);
   settings.unit = length_scale;
+  settings.virtual_sources = choose_parameter(get_parameter(np, internal_np::virtual_sources), false);
   return settings;
 }
 

@@ -1,0 +1,372 @@
+// Virtual source propagation (VSP, named parameter virtual_sources(true)): on a convex planar domain
+// (Euclidean distances), a cylinder (prism) and a cone (analytic unfoldings): never below the exact
+// distance and within a mean error bound; never below the exact
+// distance (VTP) on real meshes and within a mean error bound, several sources with labels, source points,
+// distance limit, targets, paths (length = distance), compute_each, the parallel tag, unreachable
+// vertices.
+
+#include "vtp_test_meshes.h"
+#include "vtp_test_utils.h"
+
+#include <CGAL/VTP_geodesics.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+using namespace vtp_test;
+using CGAL::VTP_geodesics::Geodesic_distance_solver;
+using CGAL::VTP_geodesics::Propagation_statistics;
+namespace VP = CGAL::VTP_geodesics::parameters;
+
+namespace {
+
+typedef Geodesic_distance_solver<Surface_mesh> Solver;
+typedef std::pair<Surface_mesh::Face_index, std::array<double, 3> > Location;
+
+template <class Sources, class NamedParameters>
+std::vector<double> run(Solver& solver, const Surface_mesh& mesh, const Sources& s, const NamedParameters& np)
+{
+  std::vector<double> d(index_range(mesh), NOT_A_VERTEX);
+  solver.compute(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), s, np);
+  return d;
+}
+
+// vsp >= exact - 1e-12 max, and the mean relative error (over vertices at distance > 0) below `mean_bound`
+::testing::AssertionResult upper_bound_and_mean_error(const std::vector<double>& vsp, const std::vector<double>& exact,
+                                                      double mean_bound, const std::string& what)
+{
+  const double scale = max_finite(exact);
+  double sum = 0., worst = 0.;
+  std::size_t n = 0;
+  for(std::size_t i = 0; i < exact.size(); ++i)
+  {
+    if(std::isnan(exact[i]))
+      continue;
+    if(std::isinf(exact[i]))
+    {
+      if(!std::isinf(vsp[i]))
+        return ::testing::AssertionFailure() << what << ": vertex " << i << " unreachable but got " << vsp[i];
+      continue;
+    }
+    if(!(vsp[i] >= exact[i] - 1e-12 * scale))
+      return ::testing::AssertionFailure() << what << ": vertex " << i << " below the exact distance: " << vsp[i]
+                                           << " < " << exact[i];
+    if(exact[i] > 0.)
+    {
+      const double e = (vsp[i] - exact[i]) / exact[i];
+      sum += e;
+      worst = (std::max)(worst, e);
+      ++n;
+    }
+  }
+  const double mean = n > 0 ? sum / static_cast<double>(n) : 0.;
+  std::cout << "  [" << what << "] mean relative error " << mean << ", max " << worst << std::endl;
+  if(!(mean <= mean_bound))
+    return ::testing::AssertionFailure() << what << ": mean relative error " << mean << " > " << mean_bound;
+  return ::testing::AssertionSuccess();
+}
+
+double polyline_length(const std::vector<Point_3>& p)
+{
+  double l = 0.;
+  for(std::size_t i = 1; i < p.size(); ++i)
+    l += distance(p[i - 1], p[i]);
+  return l;
+}
+
+// A cone of apex (0, 0, height) over a circle of radius `radius`, `sectors` sectors, `rings` rings below
+// the apex (vertex 0 is the apex), open at the bottom.
+Polygon_soup cone(int sectors, int rings, double radius, double height)
+{
+  Polygon_soup soup;
+  soup.points.push_back(Point_3(0., 0., height));
+  for(int r = 1; r <= rings; ++r)
+    for(int k = 0; k < sectors; ++k)
+    {
+      const double a = 2. * PI * k / sectors, t = double(r) / rings;
+      soup.points.push_back(Point_3(t * radius * std::cos(a), t * radius * std::sin(a), height * (1. - t)));
+    }
+  auto id = [&](int r, int k) { return r == 0 ? std::size_t(0) : std::size_t(1 + (r - 1) * sectors + (k % sectors)); };
+  for(int k = 0; k < sectors; ++k)
+    soup.polygons.push_back({id(0, 0), id(1, k), id(1, k + 1)});
+  for(int r = 1; r < rings; ++r)
+    for(int k = 0; k < sectors; ++k)
+      add_cell(soup, id(r, k), id(r + 1, k), id(r + 1, k + 1), id(r, k + 1), (r + k) % 2 == 1);
+  return soup;
+}
+
+} // namespace
+
+// Not exact on a plane: a virtual source keeps only the lines through one chain of faces (the price of the
+// upper bound, see the manual); the error is bounded.
+TEST(Virtual_sources, plane_upper_bound_and_error)
+{
+  for(double jitter : {0., 0.3})
+  {
+    const Polygon_soup soup = planar_grid(24, 20, 1.2, 1., jitter, 3u);
+    const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+    for(std::size_t s : {std::size_t(0), std::size_t(200), std::size_t(317)})
+    {
+      std::vector<double> expected(soup.points.size());
+      for(std::size_t i = 0; i < soup.points.size(); ++i)
+        expected[i] = distance(soup.points[s], soup.points[i]);
+      const std::vector<double> d = vtp_distances(mesh, Vertex_index(static_cast<Surface_mesh::size_type>(s)),
+                                                  VP::virtual_sources(true));
+      EXPECT_EQ(d[s], 0.);
+      EXPECT_TRUE(upper_bound_and_mean_error(d, expected, 0.02, "plane, jitter " + std::to_string(jitter)));
+    }
+  }
+}
+
+TEST(Virtual_sources, cylinder_and_cone_within_the_bound)
+{
+  // a prism over a regular 48-gon: its lateral surface unrolls into a strip of width the perimeter
+  {
+    const int sides = 48, bands = 30;
+    const double radius = 1., height = 3.;
+    const Surface_mesh mesh = to_mesh<Surface_mesh>(open_prism(sides, bands, radius, height));
+    const double side = 2. * radius * std::sin(PI / sides), perimeter = sides * side;
+    const int s = 10 * sides + 5;  // ring 10, corner 5
+    std::vector<double> expected(num_vertices(mesh));
+    for(int r = 0; r <= bands; ++r)
+      for(int k = 0; k < sides; ++k)
+      {
+        double dx = std::abs(k - 5) * side;
+        dx = (std::min)(dx, perimeter - dx);
+        const double dy = (r - 10) * height / bands;
+        expected[std::size_t(r * sides + k)] = std::sqrt(dx * dx + dy * dy);
+      }
+    const std::vector<double> d = vtp_distances(mesh, Vertex_index(s), VP::virtual_sources(true));
+    EXPECT_TRUE(upper_bound_and_mean_error(d, expected, 0.02, "prism"));
+  }
+  // a cone (apex angle large enough that no geodesic wraps around): from a vertex of the rim region, the
+  // distance in the unrolled sector, min(|p - q|) over the two ways around the apex, bounded by the way
+  // through the apex
+  {
+    const int sectors = 64, rings = 24;
+    const double radius = 1., height = 0.6;
+    const Polygon_soup soup = cone(sectors, rings, radius, height);
+    const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+    const double slant = std::sqrt(radius * radius + height * height);
+    const double total = 2. * PI * radius / slant;  // the angle of the unrolled sector (> pi here)
+    auto polar = [&](std::size_t i, double& rho, double& phi) {
+      const Point_3& p = soup.points[i];
+      rho = std::sqrt(p.x() * p.x() + p.y() * p.y()) / radius * slant;
+      phi = std::atan2(p.y(), p.x());
+    };
+    const std::size_t s = 1 + 12 * sectors + 3;
+    double rs, ps;
+    polar(s, rs, ps);
+    std::vector<double> expected(soup.points.size());
+    for(std::size_t i = 0; i < soup.points.size(); ++i)
+    {
+      double r, p;
+      polar(i, r, p);
+      double dphi = std::abs(p - ps);
+      dphi = (std::min)(dphi, 2. * PI - dphi) * radius / slant;  // angle in the unrolled sector
+      const double straight = std::sqrt(rs * rs + r * r - 2. * rs * r * std::cos(dphi));
+      expected[i] = dphi < PI ? straight : rs + r;
+      (void)total;
+    }
+    const std::vector<double> d = vtp_distances(mesh, Vertex_index(static_cast<Surface_mesh::size_type>(s)),
+                                                VP::virtual_sources(true));
+    // the mesh is a polyhedral cone inscribed in the smooth one: its distances are slightly shorter, by
+    // at most the chord error; compare with a tolerance of that order
+    std::vector<double> lowered(expected);
+    for(double& e : lowered)
+      e *= std::cos(PI / sectors);
+    EXPECT_TRUE(upper_bound_and_mean_error(d, lowered, 0.02, "cone"));
+  }
+}
+
+TEST(Virtual_sources, real_meshes_upper_bound_and_mean_error)
+{
+  for(const char* name : {"elephant.off", "three_peaks.off", "elephant-with-holes.off"})
+  {
+    const Surface_mesh mesh = load_mesh(name);
+    Solver solver(mesh);
+    for(std::size_t s : {std::size_t(0), std::size_t(num_vertices(mesh) / 2)})
+    {
+      const Vertex_index v(static_cast<Surface_mesh::size_type>(s));
+      const std::vector<double> exact = run(solver, mesh, v, CGAL::parameters::default_values());
+      const std::vector<double> d = run(solver, mesh, v, VP::virtual_sources(true));
+      EXPECT_TRUE(upper_bound_and_mean_error(d, exact, 0.02, std::string(name) + ", source " + std::to_string(s)));
+    }
+  }
+}
+
+TEST(Virtual_sources, several_sources_labels_and_source_points)
+{
+  const Surface_mesh mesh = load_mesh("elephant.off");
+  Solver solver(mesh);
+  const std::vector<Vertex_index> sources = {Vertex_index(3), Vertex_index(700), Vertex_index(1500)};
+  std::vector<std::vector<double> > single;
+  for(Vertex_index s : sources)
+    single.push_back(run(solver, mesh, s, CGAL::parameters::default_values()));
+  std::vector<std::size_t> labels(index_range(mesh), 99);
+  const std::vector<double> d =
+    run(solver, mesh, sources,
+        VP::virtual_sources(true).nearest_source_map(boost::make_iterator_property_map(labels.begin(), get(boost::vertex_index, mesh))));
+  std::vector<double> nearest(d.size());
+  for(std::size_t i = 0; i < d.size(); ++i)
+  {
+    nearest[i] = (std::min)((std::min)(single[0][i], single[1][i]), single[2][i]);
+    ASSERT_LT(labels[i], sources.size());
+    // the distance is the length of a path from the source of its label
+    EXPECT_GE(d[i], single[labels[i]][i] - 1e-12 * max_finite(nearest)) << "vertex " << i;
+  }
+  for(std::size_t k = 0; k < sources.size(); ++k)
+  {
+    EXPECT_EQ(d[sources[k]], 0.);
+    EXPECT_EQ(labels[sources[k]], k);
+  }
+  EXPECT_TRUE(upper_bound_and_mean_error(d, nearest, 0.02, "three sources"));
+
+  // a point inside a face
+  const Location loc(Surface_mesh::Face_index(40), {{0.2, 0.3, 0.5}});
+  const std::vector<double> exact = run(solver, mesh, loc, CGAL::parameters::default_values());
+  const std::vector<double> dp = run(solver, mesh, loc, VP::virtual_sources(true));
+  EXPECT_TRUE(upper_bound_and_mean_error(dp, exact, 0.02, "source point"));
+  // a point of an edge
+  const Location on_edge(Surface_mesh::Face_index(41), {{0.4, 0.6, 0.}});
+  const std::vector<double> exact_e = run(solver, mesh, on_edge, CGAL::parameters::default_values());
+  const std::vector<double> de = run(solver, mesh, on_edge, VP::virtual_sources(true));
+  EXPECT_TRUE(upper_bound_and_mean_error(de, exact_e, 0.02, "source on an edge"));
+}
+
+TEST(Virtual_sources, limit_and_targets_equal_the_full_run)
+{
+  const Surface_mesh mesh = load_mesh("elephant.off");
+  Solver solver(mesh);
+  const Vertex_index s(11);
+  const std::vector<double> full = run(solver, mesh, s, VP::virtual_sources(true));
+  const double r = 0.4 * max_finite(full);
+  Propagation_statistics st;
+  const std::vector<double> limited = run(solver, mesh, s, VP::virtual_sources(true).maximum_distance(r).statistics(st));
+  EXPECT_TRUE(st.stopped_early);
+  // the vertices are taken in the same order up to the limit: a finite distance is the full run's; a vertex
+  // whose full-run distance within the limit was set only after the heap passed the limit (an offer through a
+  // virtual source may be smaller than the distance of the vertex that makes it) is +infinity: rare
+  std::size_t late = 0, inside = 0;
+  for(std::size_t i = 0; i < full.size(); ++i)
+  {
+    if(std::isfinite(limited[i]))
+    {
+      EXPECT_EQ(limited[i], full[i]) << "vertex " << i;
+      EXPECT_LE(limited[i], r);
+    }
+    else
+      EXPECT_EQ(limited[i], INF);
+    if(full[i] <= r)
+    {
+      ++inside;
+      late += std::isinf(limited[i]) ? 1 : 0;
+    }
+  }
+  EXPECT_GT(inside, 100u);
+  EXPECT_LE(late * 100, inside) << late << " of " << inside << " vertices within the limit are cut";
+  // targets: a near vertex and a point of a face; the run stops early, the target distances are those of
+  // the full run (the point: not below its exact distance)
+  std::vector<Vertex_index> near;
+  for(std::size_t i = 0; i < full.size() && near.size() < 2; ++i)
+    if(full[i] > 0.1 * max_finite(full) && full[i] < 0.2 * max_finite(full))
+      near.push_back(Vertex_index(static_cast<Surface_mesh::size_type>(i)));
+  ASSERT_EQ(near.size(), 2u);
+  const Location point(Surface_mesh::Face_index(5), {{0.3, 0.3, 0.4}});
+  const std::vector<double> d = run(solver, mesh, s, VP::virtual_sources(true).targets(near).statistics(st));
+  EXPECT_TRUE(st.stopped_early);
+  ASSERT_EQ(solver.number_of_targets(), 2u);
+  EXPECT_EQ(solver.target_distance(0), full[near[0]]);
+  EXPECT_EQ(solver.target_distance(1), full[near[1]]);
+  std::vector<Location> points(1, point);
+  run(solver, mesh, s, VP::virtual_sources(true).targets(points));
+  const double tp = solver.target_distance(0);
+  run(solver, mesh, s, VP::targets(points));
+  const double exact = solver.target_distance(0);
+  EXPECT_GE(tp, exact - 1e-12 * max_finite(full));
+  EXPECT_LE(tp, exact * 1.05);
+}
+
+TEST(Virtual_sources, paths_have_the_length_of_the_distance)
+{
+  const Surface_mesh mesh = load_mesh("elephant.off");
+  for(bool record : {true, false})
+  {
+    Solver solver(mesh);
+    const Vertex_index s(21);
+    const std::vector<double> d = run(solver, mesh, s, VP::virtual_sources(true).record_paths(record));
+    for(std::size_t i = 0; i < d.size(); i += 97)
+    {
+      const Vertex_index v(static_cast<Surface_mesh::size_type>(i));
+      std::vector<Point_3> p;
+      solver.shortest_path_points(v, std::back_inserter(p));
+      ASSERT_GE(p.size(), 1u);
+      EXPECT_EQ(p.front(), mesh.point(v));
+      EXPECT_EQ(p.back(), mesh.point(s));
+      EXPECT_NEAR(polyline_length(p), d[i], 1e-9 * max_finite(d)) << "vertex " << i << ", record " << record;
+    }
+  }
+}
+
+TEST(Virtual_sources, compute_each_parallel_tag_and_unreachable)
+{
+  const Surface_mesh mesh = load_mesh("elephant-with-holes.off");
+  Solver solver(mesh);
+  const std::vector<Vertex_index> sources = {Vertex_index(0), Vertex_index(100), Vertex_index(200)};
+  std::vector<std::vector<double> > rows(sources.size());
+  solver.compute_each(sources, [&](std::size_t i, const Vertex_index&, const std::vector<double>& d) { rows[i] = d; },
+                      VP::virtual_sources(true));
+  for(std::size_t k = 0; k < sources.size(); ++k)
+  {
+    const std::vector<double> d = run(solver, mesh, sources[k], VP::virtual_sources(true));
+    for(std::size_t i = 0; i < d.size(); ++i)
+      EXPECT_EQ(rows[k][i], d[i]);
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+    std::vector<double> dp(index_range(mesh));
+    solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(dp.begin(), get(boost::vertex_index, mesh)),
+                                       sources[k], VP::virtual_sources(true).number_of_threads(2));
+    EXPECT_EQ(dp, d);
+    EXPECT_EQ(solver.statistics().method, "pvsp");
+#endif
+  }
+  // two components and an isolated vertex: what the source does not reach is +infinity
+  Polygon_soup soup = regular_tetrahedron();
+  soup.append(planar_grid(5, 5, 1., 1.), Vector_3(5, 0, 0));
+  soup.points.push_back(Point_3(9, 9, 9));
+  const Surface_mesh two = to_mesh<Surface_mesh>(soup);
+  const std::vector<double> d = vtp_distances(two, Vertex_index(0), VP::virtual_sources(true));
+  for(std::size_t i = 0; i < d.size(); ++i)
+    EXPECT_EQ(std::isinf(d[i]), i >= 4) << "vertex " << i;
+}
+
+// Hard but valid input (zero-length edges, nearly collinear faces, boundaries, several components): no
+// crash, no NaN, never below the exact distance, +infinity exactly where VTP has it.
+TEST(Virtual_sources, hard_meshes_keep_the_upper_bound)
+{
+  for(const char* name : {"degenerate_zero_length_edges.off", "nearly_collinear_flat.off",
+                          "nearly_collinear_height_field.off", "mech-holes-shark.off", "knot1.off", "mushroom.off"})
+  {
+    const Surface_mesh mesh = load_mesh(name);
+    Solver solver(mesh);
+    for(std::size_t s : {std::size_t(0), std::size_t(num_vertices(mesh) / 3)})
+    {
+      const Vertex_index v(static_cast<Surface_mesh::size_type>(s));
+      const std::vector<double> exact = run(solver, mesh, v, CGAL::parameters::default_values());
+      const std::vector<double> d = run(solver, mesh, v, VP::virtual_sources(true));
+      for(double x : d)
+        ASSERT_FALSE(std::isnan(x)) << name;
+      // the mean error is not the point here (a bound of 100%: only the upper bound and reachability)
+      EXPECT_TRUE(upper_bound_and_mean_error(d, exact, 1., std::string(name) + ", source " + std::to_string(s)));
+    }
+  }
+}
