@@ -52,8 +52,11 @@ namespace internal {
 //    (a crossing is taken only if the image lies strictly on the side of the face it leaves: the line goes
 //    forward); the third vertex y of each face reached is offered d(root) + |s - y| if y lies in the wedge.
 //    An edge u-x whose x is the root itself is crossed with the wedge of the root's corner in the next face.
-// A vertex keeps the smallest offer; a vertex taken is never changed again (so a run with a distance limit
-// or targets gives, where it is final, the same numbers as a full run).
+// A vertex keeps the smallest offer; a vertex taken is never changed again. The heap is not monotone (an
+// offer through a virtual source may be smaller than the distance of the vertex making it, by at most one
+// edge), so a run with a distance limit goes on until the heap passes the limit plus the longest edge: it
+// then gives the full run's distances within the limit; a run stopped at its targets gives the full run's
+// distances of the vertices taken.
 //
 // Upper bound: every offer is the length of a path on the surface (a straight segment in an unfolding whose
 // faces it crosses, after a path to the root realised by induction), hence never below the geodesic distance.
@@ -275,6 +278,7 @@ private:
             mark(is_target, m.source[3 * t.face + k], remaining_vertex_targets);
       }
     }
+    const double cutoff = m_settings.limit + 2. * m.max_edge_length;
     while(!m_heap.empty())
     {
       std::pop_heap(m_heap.begin(), m_heap.end(), std::greater<Heap_entry>());
@@ -283,7 +287,10 @@ private:
       const std::size_t u = static_cast<std::size_t>(e.second);
       if(m_taken[u] || e.first > dist[u])
         continue;
-      if(e.first > m_settings.limit)
+      // An offer of a vertex u is at least d(u) minus one edge (d(root) + |s - y| >= d(root) + |s - u| - |uy|,
+      // y a neighbour of u): past limit + the longest edge (twice, for rounding), no offer can be within the
+      // limit any more, and every vertex within it is taken, as in a full run.
+      if(e.first > cutoff)
       {
         m_stopped = true;
         break;
