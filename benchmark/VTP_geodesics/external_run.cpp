@@ -56,30 +56,17 @@ Run_result run_external(const std::string& mesh_file, std::size_t source, std::s
   if(wants_output)
     std::remove(output_file.c_str());
 
-  int fds[2];
-  if(::pipe(fds) != 0)
-    throw std::runtime_error(std::string("pipe() failed: ") + std::strerror(errno));
-  std::cout.flush();
-  std::cerr.flush();
-  std::fflush(nullptr);
-  const pid_t pid = ::fork();
-  if(pid < 0)
-  {
-    ::close(fds[0]);
-    ::close(fds[1]);
-    throw std::runtime_error(std::string("fork() failed: ") + std::strerror(errno));
-  }
+  int fd = -1;
+  const pid_t pid = fork_with_pipe(fd);
   if(pid == 0)
   {
-    ::close(fds[0]);
-    ::dup2(fds[1], 1);
-    ::close(fds[1]);
+    ::dup2(fd, 1);
+    ::close(fd);
     ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
-  ::close(fds[1]);
   int status = 0;
-  const std::string text = read_all_and_wait(fds[0], pid, status, result.peak_rss_mb);
+  const std::string text = read_all_and_wait(fd, pid, status, result.peak_rss_mb);
   if(!WIFEXITED(status) || WEXITSTATUS(status) != 0)
   {
     result.status = WIFSIGNALED(status) ? "killed by signal " + std::to_string(WTERMSIG(status))

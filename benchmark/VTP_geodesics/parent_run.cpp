@@ -48,10 +48,8 @@ std::string read_all_and_wait(int fd, pid_t pid, int& status, double& peak_rss_m
   return text;
 }
 
-Run_result run_forked(Mesh& mesh, Vertex_index source, const Method& method, int repeat)
+pid_t fork_with_pipe(int& fd)
 {
-  Run_result result;
-  result.method = method;
   int fds[2];
   if(::pipe(fds) != 0)
     throw std::runtime_error(std::string("pipe() failed: ") + std::strerror(errno));
@@ -65,15 +63,21 @@ Run_result run_forked(Mesh& mesh, Vertex_index source, const Method& method, int
     ::close(fds[1]);
     throw std::runtime_error(std::string("fork() failed: ") + std::strerror(errno));
   }
-  if(pid == 0)
-  {
-    ::close(fds[0]);
-    run_in_child(fds[1], mesh, source, method, repeat);
-  }
-  ::close(fds[1]);
+  ::close(fds[pid == 0 ? 0 : 1]);
+  fd = fds[pid == 0 ? 1 : 0];
+  return pid;
+}
 
+Run_result run_forked(Mesh& mesh, Vertex_index source, const Method& method, int repeat)
+{
+  Run_result result;
+  result.method = method;
+  int fd = -1;
+  const pid_t pid = fork_with_pipe(fd);
+  if(pid == 0)
+    run_in_child(fd, mesh, source, method, repeat);
   int status = 0;
-  const std::string message = read_all_and_wait(fds[0], pid, status, result.peak_rss_mb);
+  const std::string message = read_all_and_wait(fd, pid, status, result.peak_rss_mb);
 
   if(WIFSIGNALED(status))
   {

@@ -180,26 +180,17 @@ Arguments parse_arguments(int argc, char** argv)
 
 int main(int argc, char** argv)
 {
-  Arguments args;
   try
   {
-    args = parse_arguments(argc, argv);
-  }
-  catch(const std::exception& e)
-  {
-    std::cerr << "vtp_query_benchmark: error: " << e.what() << std::endl;
-    return 2;
-  }
-  if(args.help)
-  {
-    std::cout << "usage: vtp_query_benchmark [--repeat R] [--threads T] [--limit F] MESH...\n";
-    return 0;
-  }
-  const int repeat = args.repeat, threads = args.threads;
-  const double fraction = args.fraction;
-  const std::vector<std::string>& files = args.files;
-  try
-  {
+    const Arguments args = parse_arguments(argc, argv);
+    if(args.help)
+    {
+      std::cout << "usage: vtp_query_benchmark [--repeat R] [--threads T] [--limit F] MESH...\n";
+      return 0;
+    }
+    const int repeat = args.repeat, threads = args.threads;
+    const double fraction = args.fraction;
+    const std::vector<std::string>& files = args.files;
     std::cout << "| Mesh | #V | Run | Time (s) | vs full | Vertices processed | Windows propagated | Peak RSS (MB) | vs full |\n"
               << "|---|--:|---|--:|--:|--:|--:|--:|--:|\n";
     for(const std::string& file : files)

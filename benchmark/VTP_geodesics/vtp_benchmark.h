@@ -138,6 +138,11 @@ double total_seconds(const Run_result& r);
 // closes `fd`, then waits for the child: its exit status and peak RSS (MB).
 std::string read_all_and_wait(int fd, pid_t pid, int& status, double& peak_rss_mb);
 
+// Forks with a pipe from the child to the parent (the output streams are flushed first). Returns the child's
+// pid to the parent, which keeps the read end in `fd`, and 0 to the child, which keeps the write end in `fd`.
+// Throws std::runtime_error.
+pid_t fork_with_pipe(int& fd);
+
 Run_result run_forked(Mesh& mesh, Vertex_index source, const Method& method, int repeat);
 
 std::string replace_all(std::string s, const std::string& what, const std::string& with);
