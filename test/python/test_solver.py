@@ -29,6 +29,7 @@ def read_tool_labels(path):
     ("elephant.off", [3, 1000, 2000], "pvtp", ["--threads", "2"]),
     ("mech-holes-shark.off", [17], "vtp", ["--max-distance", "0.5"]),
     ("three_peaks.off", [5, 77], "avtp", []),
+    ("elephant.off", [0, 500], "vsp", []),
 ])
 def test_equals_tool_bit_for_bit(tool, tmp_path, mesh, sources, method, extra):
     out, labels = tmp_path / "d.txt", tmp_path / "l.txt"
@@ -191,7 +192,13 @@ def test_methods_and_statistics(elephant):
     assert np.all(approx >= exact - 1e-12)
     st = solver.statistics
     assert st["method"] == "avtp" and st["vertices"] == len(V) and st["windows_propagated"] > 0
-    assert set(vtp_geodesics.methods) >= {"vtp", "pvtp", "avtp", "pavtp"}
+    assert set(vtp_geodesics.methods) >= {"vtp", "pvtp", "avtp", "pavtp", "vsp", "pvsp"}
+    # one virtual source per vertex: every distance is a path length (never below exact), the same on 2 threads
+    vsp = solver.distances(0, method="vsp")
+    assert np.all(vsp >= exact - 1e-12 * exact.max())
+    assert np.mean((vsp[1:] - exact[1:]) / exact[1:]) < 0.02
+    assert solver.statistics["method"] == "vsp"
+    assert np.array_equal(solver.distances(0, method="pvsp", threads=2), vsp)
 
 
 def test_array_likes_are_converted(elephant):
