@@ -523,18 +523,20 @@ def test_protect_output():
     part_out = work("partial.h5")
     fresh("partial.h5")
     m = mesh("elephant.off")
-    rows = min(2775, max(60, int(4 * rows_per_second(m))))  # about 2 s on two threads
-    args = [m, "--sources", "0:%d" % rows, "--output", part_out, "--threads", 2]
-    start = time.time()
+    # Deterministic whatever the speed of the machine: the run is frozen (SIGSTOP) as soon as it reports its
+    # first rows written, so it still holds its output while the second run tries it, then it is killed.
+    args = [m, "--sources", "all", "--output", part_out, "--threads", 1]
     p = subprocess.Popen(tool_command(args + ["--progress"]), stderr=subprocess.PIPE, universal_newlines=True)
     while True:
         line = p.stderr.readline()
         if not line or re.match(r"^%s: [1-9][0-9]*/" % PROGRAM, line):
             break
+    os.kill(p.pid, signal.SIGSTOP)
+    check(line and not re.match(r"^%s: (\d+)/\1 " % PROGRAM, line), "the partial run ended before it was frozen: "
+          + line)
     err = expect_error(args + ["--resume"], "a second run on the same output")
     check("another run is writing" in err, "the second run says why: " + err)
-    time.sleep(max(0, 1.3 - (time.time() - start)))  # some rows recorded in the journal
-    check(p.poll() is None, "the partial run ended too early")
+    check(p.poll() is None, "the frozen run ended")
     p.kill()
     p.communicate()
     journal = part_out + ".part.journal"
