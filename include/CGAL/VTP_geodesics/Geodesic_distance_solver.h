@@ -14,18 +14,21 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
+#include <CGAL/VTP_geodesics/Farthest_point_samples.h>
 #include <CGAL/VTP_geodesics/Geodesic_traits_3.h>
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
+#include <CGAL/VTP_geodesics/internal/solver/Known_field.h>
 #include <CGAL/VTP_geodesics/internal/solver/Many_sources.h>
 #include <CGAL/VTP_geodesics/internal/solver/Mesh_import.h>
 #include <CGAL/VTP_geodesics/internal/solver/Mesh_index.h>
 #include <CGAL/VTP_geodesics/internal/solver/Output_maps.h>
 #include <CGAL/VTP_geodesics/internal/solver/Path_queries.h>
 #include <CGAL/VTP_geodesics/internal/solver/Settings_from_parameters.h>
+#include <CGAL/VTP_geodesics/internal/sampling/Farthest_point_sampler.h>
 #include <CGAL/VTP_geodesics/internal/source_forms.h>
 
 #include <CGAL/disable_warnings.h>
@@ -264,6 +267,9 @@ public:
     seeds.reserve(items.size());
     for(const Source& item : items)
       seeds.push_back(m_mesh.seed_of(item, static_cast<Index>(seeds.size())));  // validated here, serially
+    if(!CGAL::parameters::is_default_parameter<CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>,
+                                               internal_np::initial_distances_t>::value)
+      throw Invalid_input_error("compute_each() takes no initial_distances");
     int threads = 0;
     internal::Propagation_settings settings = settings_of(np, threads);
     settings.want_labels = false;
@@ -272,6 +278,26 @@ public:
     internal::compute_rows(m_mesh.arrays, items, seeds, sink, settings, parallel, threads, m_workspaces, m_statistics);
   }
   /// @}
+
+  /// \name Farthest-point sampling
+  /// @{
+  /// takes up to `k` samples, each the vertex farthest from those before, as `farthest_point_sampling()` (the
+  /// free function, which says it all) on the mesh of the solver, with the same named parameters (but
+  /// `vertex_point_map` and `geom_traits`); the results of the last computation do not change.
+  /// \returns the samples, the covering radius after each, the distances and the nearest-sample labels.
+  /// \throws Invalid_input_error for a `first_sample` that is not a vertex or an invalid parameter.
+  template <class ConcurrencyTag = CGAL::Sequential_tag, class NP_T = bool,
+            class NP_Tag = CGAL::internal_np::all_default_t, class NP_Base = CGAL::internal_np::No_property>
+  Farthest_point_samples<vertex_descriptor>
+  farthest_point_sampling(std::size_t k, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np
+                                         = parameters::default_values()) const
+  {
+    int threads = 0;
+    const internal::Propagation_settings settings = settings_of(np, threads);
+    return internal::farthest_point_samples_of<ConcurrencyTag>(m_mesh, k, np, settings, threads);
+  }
+  /// @}
+
 
   /// \name Results of the last computation
   /// @{
@@ -383,14 +409,16 @@ private:
   }
 
   template <class ConcurrencyTag, class NamedParameters>
-  void run(const std::vector<internal::Seed>& seeds, const NamedParameters& np)
+  void run(std::vector<internal::Seed> seeds, const NamedParameters& np)
   {
     if(seeds.empty())
       throw Invalid_input_error("no source");
     int threads = 0;
-    const internal::Propagation_settings settings = settings_of(np, threads);
+    internal::Propagation_settings settings = settings_of(np, threads);
+    const internal::Known_field known = internal::known_field_of(np, m_mesh.vertices, m_mesh.length_scale, settings, seeds);
     std::vector<internal::Target> targets = m_mesh.targets_of(CGAL::parameters::get_parameter(np, internal_np::targets));
-    m_engine.template run<ConcurrencyTag>(m_mesh.arrays, seeds, std::move(targets), settings, threads, m_statistics);
+    m_engine.template run<ConcurrencyTag>(m_mesh.arrays, seeds, std::move(targets), settings, threads, m_statistics,
+                                          &known.distances, &known.labels);
     m_paths.remember(settings, internal::is_parallel<ConcurrencyTag>(), threads);
     m_statistics.sources = seeds.size();
   }

@@ -144,6 +144,34 @@ namespace VTP_geodesics {
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{initial_distances}
+///     \cgalParamDescription{distances already known (for example those of earlier sources): the computation
+///       adds `sources` to that field. Every vertex gets the minimum of its initial distance and of its
+///       distance from `sources` (exact for the exact methods, to rounding: 1e-12 of the largest distance),
+///       and its label is that of the nearer of the two. Each initial distance must be an upper bound
+///       realised by a path on the surface (the distance of the vertex from some earlier sources, as computed
+///       by this package, is); `+infinity` for none. A window of the new sources that cannot beat the
+///       initial distances at the corners of the triangle it enters is pruned, so the work is that of the
+///       region where `sources` win: a run whose sources win nothing does almost no work (see the
+///       statistics), besides reading and writing the maps (O(V)). The map may be `vdm` itself. Not with
+///       `maximum_distance`, `targets` or `record_paths`; no geodesic path can be asked for after such a run}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `vertex_descriptor` as key type and `double`
+///       as value type, every value `>= 0`}
+///     \cgalParamDefault{none: every vertex starts at `+infinity`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{initial_nearest_sources}
+///     \cgalParamDescription{the labels of the initial distances (read when `nearest_source_map` is given;
+///       without it, vertices that keep their initial distance get `no_source`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `vertex_descriptor` as key type and
+///       `std::size_t` as value type (`no_source` for none)}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{first_source_label}
+///     \cgalParamDescription{the label of the first of `sources` in `nearest_source_map`, the others
+///       following (with `initial_distances`: number the new sources after the earlier ones)}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{`0`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \pre `tm` is not modified during the call.

@@ -50,6 +50,13 @@ enum targets_t { targets };
 enum stop_at_targets_t { stop_at_targets };
 enum record_paths_t { record_paths };
 enum virtual_sources_t { virtual_sources };
+enum initial_distances_t { initial_distances };
+enum initial_nearest_sources_t { initial_nearest_sources };
+enum first_source_label_t { first_source_label };
+enum first_sample_t { first_sample };
+enum sampling_radius_t { sampling_radius };
+enum covering_radii_t { covering_radii };
+enum vertex_distance_map_t { vertex_distance_map };
 
 } // namespace internal_np
 
@@ -84,6 +91,13 @@ struct Named_parameters
   CGAL_VTP_GEODESICS_LINK(stop_at_targets, internal_np::stop_at_targets_t)
   CGAL_VTP_GEODESICS_LINK(record_paths, internal_np::record_paths_t)
   CGAL_VTP_GEODESICS_LINK(virtual_sources, internal_np::virtual_sources_t)
+  CGAL_VTP_GEODESICS_LINK(initial_distances, internal_np::initial_distances_t)
+  CGAL_VTP_GEODESICS_LINK(initial_nearest_sources, internal_np::initial_nearest_sources_t)
+  CGAL_VTP_GEODESICS_LINK(first_source_label, internal_np::first_source_label_t)
+  CGAL_VTP_GEODESICS_LINK(first_sample, internal_np::first_sample_t)
+  CGAL_VTP_GEODESICS_LINK(sampling_radius, internal_np::sampling_radius_t)
+  CGAL_VTP_GEODESICS_LINK(covering_radii, internal_np::covering_radii_t)
+  CGAL_VTP_GEODESICS_LINK(vertex_distance_map, internal_np::vertex_distance_map_t)
   CGAL_VTP_GEODESICS_LINK(vertex_point_map, CGAL::internal_np::vertex_point_t)
   CGAL_VTP_GEODESICS_LINK(geom_traits, CGAL::internal_np::geom_traits_t)
 #undef CGAL_VTP_GEODESICS_LINK
@@ -121,6 +135,13 @@ CGAL_VTP_GEODESICS_FIRST_LINK(targets, internal_np::targets_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(stop_at_targets, internal_np::stop_at_targets_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(record_paths, internal_np::record_paths_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(virtual_sources, internal_np::virtual_sources_t)
+CGAL_VTP_GEODESICS_FIRST_LINK(initial_distances, internal_np::initial_distances_t)
+CGAL_VTP_GEODESICS_FIRST_LINK(initial_nearest_sources, internal_np::initial_nearest_sources_t)
+CGAL_VTP_GEODESICS_FIRST_LINK(first_source_label, internal_np::first_source_label_t)
+CGAL_VTP_GEODESICS_FIRST_LINK(first_sample, internal_np::first_sample_t)
+CGAL_VTP_GEODESICS_FIRST_LINK(sampling_radius, internal_np::sampling_radius_t)
+CGAL_VTP_GEODESICS_FIRST_LINK(covering_radii, internal_np::covering_radii_t)
+CGAL_VTP_GEODESICS_FIRST_LINK(vertex_distance_map, internal_np::vertex_distance_map_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(vertex_point_map, CGAL::internal_np::vertex_point_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(geom_traits, CGAL::internal_np::geom_traits_t)
 #undef CGAL_VTP_GEODESICS_FIRST_LINK

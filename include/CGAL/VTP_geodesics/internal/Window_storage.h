@@ -60,6 +60,24 @@ public:
     m_peak_blocks = 0;
   }
 
+  // Starts another run when every list is empty (the previous run consumed them all): O(pools), the blocks
+  // are kept for reuse; the peaks start again.
+  void restart(std::size_t number_of_pools)
+  {
+    CGAL_precondition(number_of_pools >= 1 && number_of_pools <= MAX_POOLS);
+    flush_returns();
+    CGAL_assertion_code(long long live = 0; long long in_use = 0;)
+    CGAL_assertion_code(for(const Pool& p : m_pools) { live += p.live; in_use += p.in_use; })
+    CGAL_assertion(live == 0 && in_use == 0);
+    if(m_pools.size() != number_of_pools)
+    {
+      m_pools.clear();
+      m_pools.resize(number_of_pools);
+    }
+    m_peak_live = 0;
+    m_peak_blocks = 0;
+  }
+
   std::size_t number_of_pools() const { return m_pools.size(); }
 
   bool empty(Index h) const { return m_head[h] == NO_INDEX; }

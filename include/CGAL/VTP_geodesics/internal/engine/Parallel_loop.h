@@ -70,7 +70,8 @@ public:
     m_scratch.resize(static_cast<std::size_t>(threads));
     for(Propagation_scratch& s : m_scratch)
       s.propagated = s.created = 0;
-    m_unit_of_face.assign(static_cast<std::size_t>(m.nf), NO_INDEX);
+    if(m_unit_of_face.size() != static_cast<std::size_t>(m.nf))
+      m_unit_of_face.assign(static_cast<std::size_t>(m.nf), NO_INDEX);  // NO_INDEX between rounds
     m_ranges.resize(static_cast<std::size_t>(threads));
     m_threads = threads;
     m_in_selection = false;
@@ -366,6 +367,7 @@ private:
       {
         const Index c = m.source[Mesh_arrays::prev(m_from[m_unit_lists[k]])];
         st.light(c, m_offers[k]);
+        st.wake_beyond(m_from[m_unit_lists[k]]);
       }
       st.fifo.insert(st.fifo.end(), unit.queued, unit.queued + unit.number_queued);
     }

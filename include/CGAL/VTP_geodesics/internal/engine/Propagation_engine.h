@@ -42,8 +42,9 @@ namespace internal {
 // | Sequential_tag: vertex heap          | VTP                 | AVTP                 |
 // | Parallel_tag: buckets, K lists, T th.| PVTP                | PAVTP                |
 //
-// (A front of another kind, e.g. one virtual source per vertex, is a third row: its own loop on the
-// same state and steps. A start from known distances is another seeding, next to Seeding.h.)
+// (A front of another kind, one virtual source per vertex, is a third row: its own loop,
+// Virtual_source_front.h. A start from known distances is another seeding: the state starts from the
+// known field and wakes the known vertices that new windows reach, Propagation_state.h.)
 //
 // Where each concept lives (internal/ and internal/engine/):
 //   the window and its geometry (evaluation, ray crossing, bounds)  Window.h
@@ -69,9 +70,12 @@ namespace internal {
 class Propagation_engine
 {
 public:
+  // With settings.known_distances, the run starts from `initial` (per vertex, in the engine's unit) and
+  // `initial_labels` (if labels are wanted), see Propagation_state.
   template <class ConcurrencyTag>
   void run(const Mesh_arrays& m, const std::vector<Seed>& seeds, std::vector<Target>&& targets,
-           const Propagation_settings& settings, int requested_threads, Propagation_statistics& statistics)
+           const Propagation_settings& settings, int requested_threads, Propagation_statistics& statistics,
+           const std::vector<double>* initial = nullptr, const std::vector<Index>* initial_labels = nullptr)
   {
     const bool parallel = is_parallel<ConcurrencyTag>();
     const auto t0 = std::chrono::steady_clock::now();
@@ -81,7 +85,7 @@ public:
       // one virtual source per vertex (Virtual_source_front.h); the parallel tag runs the same front
       m_seeds = seeds;
       statistics = Propagation_statistics();
-      m_vsp.run(m, m_seeds, std::move(targets), settings, statistics);
+      m_vsp.run(m, m_seeds, std::move(targets), settings, statistics, initial, initial_labels);
       statistics.method = parallel ? "pvsp" : "vsp";
       statistics.threads = 1;
       statistics.vertices = static_cast<std::size_t>(m.nv);
@@ -99,19 +103,14 @@ public:
     int threads = parallel ? (std::min)(number_of_threads(requested_threads), 126) : 1;
     m_seeds = seeds;
     m_state.start(m, settings, static_cast<std::size_t>(threads), std::move(targets));
-    if(parallel)
+    if(settings.known_distances)
     {
-      const double h = m.mean_edge_length;
-      m_state.schedule.start_buckets(h > 0. ? m.anisotropy / h : 1.);
-      seed_sources(m_state, seeds);
-      threads = m_parallel.run(m_state, threads);
+      CGAL_precondition(initial != nullptr && initial->size() == m_state.dist.size());
+      m_state.dist = *initial;
+      if(settings.want_labels && initial_labels != nullptr)
+        m_state.label = *initial_labels;
     }
-    else
-    {
-      m_state.schedule.start_heap();
-      seed_sources(m_state, seeds);
-      m_sequential.run(m_state);
-    }
+    threads = propagate(parallel, threads);
     apply_cutoff();
     if(settings.unit != 1.)
       for(double& d : m_state.dist)
@@ -123,6 +122,44 @@ public:
     collect_statistics(parallel, statistics);
     statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
+
+  // Adds `seed` to the field of the previous run (a run from known distances, or the first such run on
+  // an empty field), in the engine's unit: the work and the resetting are those of the region the seed
+  // wins (Propagation_state::start_again()). No limit, targets, paths, nor virtual sources. The vertices
+  // whose distance changed are those of touched() with the LOWERED flag. Statistics: windows, vertices
+  // and time of this run only (not the reached vertices nor the largest distance, which would cost O(V)).
+  template <class ConcurrencyTag>
+  void run_again(const Mesh_arrays& m, const Seed& seed, const Propagation_settings& settings,
+                 int requested_threads, Propagation_statistics& statistics)
+  {
+    CGAL_precondition(settings.known_distances && !settings.virtual_sources && settings.unit == 1.);
+    const bool parallel = is_parallel<ConcurrencyTag>();
+    const auto t0 = std::chrono::steady_clock::now();
+    m_virtual_sources = false;
+    int threads = parallel ? (std::min)(number_of_threads(requested_threads), 126) : 1;
+    if(m_state.mesh != &m || m_state.flag.size() != static_cast<std::size_t>(m.nv) || !m_state.settings.known_distances)
+    {
+      m_state.start(m, settings, static_cast<std::size_t>(threads), std::vector<Target>());
+      if(!settings.want_labels)
+        m_state.label.clear();
+    }
+    else
+      m_state.start_again(settings, static_cast<std::size_t>(threads));
+    m_seeds.assign(1, seed);
+    threads = propagate(parallel, threads);
+    statistics = Propagation_statistics();
+    statistics.method = parallel ? "pvtp" : "vtp";
+    if(m_state.reset.is_active())
+      statistics.method = parallel ? "pavtp" : "avtp";
+    statistics.threads = threads;
+    statistics.vertices = static_cast<std::size_t>(m.nv);
+    statistics.faces = static_cast<std::size_t>(m.nf);
+    fill_window_statistics(parallel, statistics);
+    statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  // the vertices lowered or woken by the last run from known distances, and their flags
+  const std::vector<Index>& touched() const { return m_state.touched; }
+  bool was_lowered(Index v) const { return (m_state.flag[v] & Propagation_state::LOWERED) != 0; }
 
   // the distances of the last run (per vertex, in the unit of the output: Propagation_settings::unit)
   std::vector<double>& distances() { return m_virtual_sources ? m_vsp.dist : m_state.dist; }
@@ -147,6 +184,22 @@ public:
   const Path_record& path_record() const { return m_virtual_sources ? m_vsp.record : m_state.record; }
 
 private:
+  // Seeds m_seeds into the started state and runs the loop; returns the number of threads.
+  int propagate(bool parallel, int threads)
+  {
+    if(parallel)
+    {
+      const double h = m_state.mesh->mean_edge_length;
+      m_state.schedule.start_buckets(h > 0. ? m_state.mesh->anisotropy / h : 1.);
+      seed_sources(m_state, m_seeds);
+      return m_parallel.run(m_state, threads);
+    }
+    m_state.schedule.start_heap();
+    seed_sources(m_state, m_seeds);
+    m_sequential.run(m_state);
+    return 1;
+  }
+
   // Distances that are not final when the propagation stopped early (or beyond the limit) become +infinity.
   void apply_cutoff()
   {
@@ -167,6 +220,17 @@ private:
     const Mesh_arrays& m = *m_state.mesh;
     st.vertices = static_cast<std::size_t>(m.nv);
     st.faces = static_cast<std::size_t>(m.nf);
+    fill_window_statistics(parallel, st);
+    for(double d : m_state.dist)
+      if(d < std::numeric_limits<double>::infinity())
+      {
+        ++st.reached_vertices;
+        st.max_distance = (std::max)(st.max_distance, d);
+      }
+  }
+
+  void fill_window_statistics(bool parallel, Propagation_statistics& st) const
+  {
     st.windows_created = m_state.created;
     st.windows_propagated = m_state.propagated;
     st.peak_live_windows = m_state.store.peak_live_windows();
@@ -183,12 +247,6 @@ private:
       st.propagation_seconds = m_parallel.propagation_seconds;
       st.merge_seconds = m_parallel.merge_seconds;
     }
-    for(double d : m_state.dist)
-      if(d < std::numeric_limits<double>::infinity())
-      {
-        ++st.reached_vertices;
-        st.max_distance = (std::max)(st.max_distance, d);
-      }
   }
 
   std::vector<Seed> m_seeds;

@@ -45,6 +45,7 @@ struct Propagation_settings
   bool record_paths = false;           // keep what the path trace-back needs
   double unit = 1.;                    // the engine's unit of length, in the unit of the output distances
   bool virtual_sources = false;        // one virtual source per vertex (VSP / PVSP) instead of windows
+  bool known_distances = false;        // the run starts from distances already known (see Propagation_state)
 };
 
 // The buffers of one thread: a list being propagated, its children, and counters.
@@ -68,6 +69,18 @@ struct alignas(64) Propagation_scratch
 //
 // Exactness (without resets) does not depend on the order: windows are only cut where another real path
 // is shorter; the order only decides how many windows are created.
+//
+// A run from known distances (settings.known_distances): `dist` (and `label`) start from upper bounds
+// realised by real paths (the field of earlier sources); only the new sources are seeded, and a known
+// vertex is not scheduled unless the new sources lower it. The windows of the new sources are pruned
+// against the known distances like against any other, so the result is, at every vertex, the minimum of
+// the known distance and of the distance from the new sources, and the work is that of the region the new
+// sources win. A window list that arrives at a face none of whose corners was taken waits there like any
+// other; so that it is not left waiting, the known corners of that face are woken: scheduled at their
+// known distance, and taken in order like the others (a woken vertex sweeps its one-ring but emits no
+// window: a path of a new source through it is not shorter than its known distance). The vertices lowered
+// or woken by a run are listed in `touched` (what a next run from this field has to reset, and where
+// the field changed).
 class Propagation_state
 {
 public:
@@ -88,6 +101,10 @@ public:
   Stop_rule stop;
   Path_record record;
   std::vector<Index> fifo;             // queued lists (sequential scheduling: FIFO order)
+  // runs from known distances only: per vertex LOWERED / WOKEN by this run, and the vertices flagged
+  enum Vertex_flag : unsigned char { LOWERED = 1, WOKEN = 2 };
+  std::vector<unsigned char> flag;
+  std::vector<Index> touched;
 
   // counters
   std::size_t created = 0, propagated = 0, vertices_processed = 0, pseudo_sources = 0;
@@ -113,8 +130,82 @@ public:
     const std::size_t number_of_targets = targets.size();
     stop.start(m, s.limit, s.stop_at_targets, std::move(targets));
     record.start(s.record_paths, static_cast<std::size_t>(m.nv), number_of_targets);
+    flag.clear();
+    touched.clear();
+    if(s.known_distances)
+      flag.assign(static_cast<std::size_t>(m.nv), 0);
     m_events.clear();
     created = propagated = vertices_processed = pseudo_sources = 0;
+  }
+
+  // Prepares a run from known distances that goes on from the field left by the previous run on the same
+  // mesh (dist and label kept, in the engine's unit), resetting only what that run touched: O(touched).
+  // The previous run must have gone to its end (no limit, no targets: every list was consumed).
+  void start_again(const Propagation_settings& s, std::size_t pools)
+  {
+    CGAL_precondition(mesh != nullptr && s.known_distances && settings.known_distances);
+    CGAL_precondition(!(s.limit < std::numeric_limits<double>::infinity()) && !s.record_paths);
+    const Mesh_arrays& m = *mesh;
+    settings = s;
+    if(flag.size() != static_cast<std::size_t>(m.nv))
+      flag.assign(static_cast<std::size_t>(m.nv), 0);
+    for(Index v : touched)
+    {
+      flag[v] = 0;
+      processed[v] = -1.;
+      for(Index c = m.corner_begin[v]; c < m.corner_begin[v + 1]; ++c)
+        swept[Mesh_arrays::face(m.corners[c])] = 0;
+    }
+    touched.clear();
+    seed_label.clear();
+    store.restart(pools);
+    fifo.clear();
+    reset.start(s.reset_step, s.reset_guard, static_cast<std::size_t>(m.nv));
+    stop.start(m, s.limit, false, std::vector<Target>());
+    m_events.clear();
+    created = propagated = vertices_processed = pseudo_sources = 0;
+  }
+
+  // Run from known distances: v is lowered by this run.
+  void mark_lowered(Index v)
+  {
+    if(flag.empty())
+      return;
+    if(flag[v] == 0)
+      touched.push_back(v);
+    flag[v] |= LOWERED;
+  }
+
+  // Run from known distances: a list waits on face f; its known corners that nothing scheduled yet are
+  // scheduled at their known distance (see the class comment).
+  void wake_corners(Index f)
+  {
+    if(flag.empty() || swept[f])
+      return;
+    const Mesh_arrays& m = *mesh;
+    for(Index k = 0; k < 3; ++k)
+    {
+      const Index v = m.source[3 * f + k];
+      if(flag[v] == 0 && dist[v] < std::numeric_limits<double>::infinity())
+      {
+        flag[v] = WOKEN;
+        touched.push_back(v);
+        schedule.push(v, dist[v]);
+      }
+    }
+  }
+
+  // Run from known distances: wakes the corners of the faces beyond the two other edges of face(h) if the
+  // lists there wait (serial; called after the children of the list of h are stored).
+  void wake_beyond(Index h)
+  {
+    if(flag.empty())
+      return;
+    const Mesh_arrays& m = *mesh;
+    const Index sides[2] = { m.opposite[Mesh_arrays::prev(h)], m.opposite[Mesh_arrays::next(h)] };
+    for(Index o : sides)
+      if(o != NO_INDEX && !store.empty(o))
+        wake_corners(Mesh_arrays::face(o));
   }
 
   // The label of a window origin.
@@ -136,6 +227,7 @@ public:
       dist[v] = offer.distance;
       if(!label.empty())
         label[v] = label_of_origin(offer.origin);
+      mark_lowered(v);
       record.on_vertex_lowered(v, offer);
       schedule.push(v, offer.distance);
     }
@@ -168,7 +260,9 @@ public:
       reset.apply(v, dv, *mesh, schedule, dist, processed, store, [&](Index h) { stop.on_list_emptied(h); });
     processed[v] = dv;
     ++vertices_processed;
-    if(mesh->is_pseudo_source[v] || reset.is_forced(v))
+    // a known vertex only woken (not lowered) emits nothing, unless a reset forces it (AVTP)
+    const bool lowered = flag.empty() || (flag[v] & LOWERED) != 0;
+    if((mesh->is_pseudo_source[v] && lowered) || reset.is_forced(v))
       emit_pseudo_source(v);
     sweep(v);
     reach_targets_through(v);
@@ -286,6 +380,8 @@ public:
     }
     if(swept[Mesh_arrays::face(h)])
       enqueue(h);
+    else
+      wake_corners(Mesh_arrays::face(h));
   }
 
   // Adds the one-ring of v to the swept region; the waiting lists of newly swept faces are queued.

@@ -147,6 +147,7 @@ inline void seed_sources(Propagation_state& st, const std::vector<Seed>& seeds)
     {
       st.dist[s.element] = 0.;
       st.processed[s.element] = 0.;
+      st.mark_lowered(s.element);
       if(!st.label.empty())
         st.label[s.element] = s.label;
       vertices.push_back(s.element);

@@ -60,6 +60,7 @@ private:
       const Offer offer = st.propagate_one(h, s);
       st.light(m.source[Mesh_arrays::prev(h)], offer);
       st.store_all_children(h, s, 0, st.fifo);
+      st.wake_beyond(h);
       st.stop.merge(s.events);
       st.store.update_peaks();
     }

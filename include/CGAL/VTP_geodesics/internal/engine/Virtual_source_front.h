@@ -76,8 +76,11 @@ public:
   std::vector<Index> label;
   Path_record record;
 
+  // With settings.known_distances, `initial` (and `initial_labels`) give the starting field (see
+  // Propagation_state): a known vertex is not taken unless the new sources lower it.
   void run(const Mesh_arrays& m, const std::vector<Seed>& seeds, std::vector<Target>&& targets,
-           const Propagation_settings& settings, Propagation_statistics& st)
+           const Propagation_settings& settings, Propagation_statistics& st,
+           const std::vector<double>* initial = nullptr, const std::vector<Index>* initial_labels = nullptr)
   {
     m_mesh = &m;
     m_seeds = &seeds;
@@ -90,6 +93,13 @@ public:
       label.assign(nv, NO_INDEX);
     else
       label.clear();
+    if(settings.known_distances)
+    {
+      CGAL_precondition(initial != nullptr && initial->size() == nv);
+      dist = *initial;
+      if(settings.want_labels && initial_labels != nullptr)
+        label = *initial_labels;
+    }
     m_heap.clear();
     m_targets = std::move(targets);
     m_target_value.assign(m_targets.size(), std::numeric_limits<double>::infinity());
@@ -533,9 +543,10 @@ private:
   {
     const Mesh_arrays& m = *m_mesh;
     const double inf = std::numeric_limits<double>::infinity();
-    // vertices not taken are not final (a stop) or beyond the limit
+    // vertices not taken are not final (a stop) or beyond the limit; but those of a known field (never
+    // lowered: a run from known distances goes to its end) keep their distance
     for(std::size_t v = 0; v < dist.size(); ++v)
-      if(!m_taken[v] || dist[v] > m_settings.limit)
+      if((!m_taken[v] && !m_settings.known_distances) || dist[v] > m_settings.limit)
       {
         dist[v] = inf;
         m_taken[v] = 0;

@@ -57,6 +57,9 @@ public:
   {
     if(!m_has_run)
       throw Invalid_input_error("a path was asked for before any computation");
+    if(m_settings.known_distances)
+      throw Invalid_input_error("no path after a computation from initial distances (the paths to the earlier "
+                                "sources are not known)");
     const Propagation_engine* from = &engine;
     std::size_t index = 0;
     if(!(find_target(engine, target, index) && is_reached(engine, target, index)))

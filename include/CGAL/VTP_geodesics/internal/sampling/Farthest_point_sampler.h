@@ -1,0 +1,236 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_SAMPLING_FARTHEST_POINT_SAMPLER_H
+#define CGAL_VTP_GEODESICS_INTERNAL_SAMPLING_FARTHEST_POINT_SAMPLER_H
+
+#include <CGAL/license/VTP_geodesics.h>
+
+#include <CGAL/VTP_geodesics/Farthest_point_samples.h>
+#include <CGAL/VTP_geodesics/Invalid_input_error.h>
+#include <CGAL/VTP_geodesics/parameters.h>
+#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
+#include <CGAL/VTP_geodesics/internal/solver/Statistics_merge.h>
+
+#include <CGAL/assertions.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace VTP_geodesics {
+namespace internal {
+
+// Farthest-point sampling above the engine: each new sample is added to the field of the samples so far by a
+// run from known distances (Propagation_engine::run_again()), whose work and resetting are those of the
+// region the sample wins; the farthest vertex is kept by a max-heap of (distance, vertex) entries, pushed
+// again when a run lowers a vertex (stale entries are skipped), so that no step costs O(V).
+class Farthest_point_sampler
+{
+public:
+  // Indices: samples, radii and the field, in the engine's unit.
+  std::vector<Index> samples;
+  std::vector<double> radii;
+  Propagation_statistics statistics;
+
+  // Takes up to k samples on `m` (first: NO_INDEX for the vertex farthest from vertex 0), stopping once the
+  // covering radius is <= `radius` (engine unit); `settings` as for a computation (labels are always kept).
+  template <class ConcurrencyTag>
+  void run(const Mesh_arrays& m, std::size_t k, Index first, double radius, Propagation_settings settings,
+           int threads)
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    samples.clear();
+    radii.clear();
+    statistics = Propagation_statistics();
+    if(m.nv == 0 || k == 0)
+      return;
+    settings.want_labels = true;
+    settings.known_distances = true;
+    settings.unit = 1.;
+    if(first == NO_INDEX)
+      first = farthest_from_vertex_0<ConcurrencyTag>(m, settings, threads);
+    const std::vector<double>& dist = m_engine.distances();
+    Index next = first;
+    for(;;)
+    {
+      Seed seed;
+      seed.kind = Seed::AT_VERTEX;
+      seed.element = next;
+      seed.label = static_cast<Index>(samples.size());
+      Propagation_statistics st;
+      m_engine.template run_again<ConcurrencyTag>(m, seed, settings, threads, st);
+      add_row_statistics(st, statistics);
+      statistics.method = st.method;
+      statistics.threads = st.threads;
+      samples.push_back(next);
+      if(samples.size() == 1)
+      {
+        // every vertex enters the heap once; later runs push the vertices they lower
+        m_heap.clear();
+        m_heap.reserve(static_cast<std::size_t>(m.nv));
+        for(Index v = 0; v < m.nv; ++v)
+          m_heap.emplace_back(dist[static_cast<std::size_t>(v)], v);
+        std::make_heap(m_heap.begin(), m_heap.end(), farther);
+      }
+      else
+        for(Index v : m_engine.touched())
+          if(m_engine.was_lowered(v))
+            push(dist[static_cast<std::size_t>(v)], v);
+      const std::pair<double, Index> top = farthest();
+      radii.push_back(top.first);
+      if(samples.size() >= k || !(top.first > radius) || top.second == NO_INDEX)
+        break;
+      next = top.second;
+    }
+    statistics.sources = samples.size();
+    statistics.vertices = static_cast<std::size_t>(m.nv);
+    statistics.faces = static_cast<std::size_t>(m.nf);
+    statistics.max_distance = radii.back();
+    statistics.reached_vertices = 0;
+    for(double d : dist)
+      statistics.reached_vertices += d < std::numeric_limits<double>::infinity() ? 1 : 0;
+    statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+
+  const std::vector<double>& distances() const { return m_engine.distances(); }
+  const std::vector<Index>& labels() const { return m_engine.labels(); }
+
+private:
+  typedef std::pair<double, Index> Entry;
+
+  // the heap order: the larger distance first, then the lower index
+  static bool farther(const Entry& a, const Entry& b)
+  {
+    return a.first < b.first || (a.first == b.first && a.second > b.second);
+  }
+
+  void push(double d, Index v)
+  {
+    m_heap.emplace_back(d, v);
+    std::push_heap(m_heap.begin(), m_heap.end(), farther);
+  }
+
+  // the farthest vertex (its current distance; stale entries are dropped), (0, NO_INDEX) if none
+  Entry farthest()
+  {
+    const std::vector<double>& dist = m_engine.distances();
+    while(!m_heap.empty())
+    {
+      const Entry& e = m_heap.front();
+      if(e.first == dist[static_cast<std::size_t>(e.second)])
+        return e;
+      std::pop_heap(m_heap.begin(), m_heap.end(), farther);
+      m_heap.pop_back();
+    }
+    return Entry(0., NO_INDEX);
+  }
+
+  // The default first sample: the vertex farthest from vertex 0 (ties: the lowest index), in a workspace
+  // freed before the sampling starts.
+  template <class ConcurrencyTag>
+  static Index farthest_from_vertex_0(const Mesh_arrays& m, const Propagation_settings& settings, int threads)
+  {
+    Propagation_engine engine;
+    Propagation_settings s = settings;
+    s.known_distances = false;
+    s.want_labels = false;
+    Seed seed;
+    seed.kind = Seed::AT_VERTEX;
+    seed.element = 0;
+    Propagation_statistics st;
+    engine.template run<ConcurrencyTag>(m, std::vector<Seed>(1, seed), std::vector<Target>(), s, threads, st);
+    const std::vector<double>& d = engine.distances();
+    Index best = 0;
+    for(Index v = 1; v < m.nv; ++v)
+      if(d[static_cast<std::size_t>(v)] > d[static_cast<std::size_t>(best)])
+        best = v;
+    return best;
+  }
+
+  Propagation_engine m_engine;
+  std::vector<Entry> m_heap;
+};
+
+template <class MeshIndex>
+Index first_sample_index(const MeshIndex&, CGAL::internal_np::Param_not_found)
+{
+  return NO_INDEX;
+}
+
+template <class MeshIndex>
+Index first_sample_index(const MeshIndex& mesh, typename MeshIndex::vertex_descriptor v)
+{
+  return mesh.seed_of(v, 0, "first_sample", MeshIndex::no_position).element;
+}
+
+// The farthest-point sampling of the solver's mesh (Mesh_index `mesh`) with the named parameters `np`
+// (first_sample, sampling_radius, and those of a computation), `settings` read from them.
+template <class ConcurrencyTag, class MeshIndex, class NamedParameters>
+Farthest_point_samples<typename MeshIndex::vertex_descriptor>
+farthest_point_samples_of(const MeshIndex& mesh, std::size_t k, const NamedParameters& np,
+                          const Propagation_settings& settings, int threads)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  typedef typename MeshIndex::vertex_descriptor vertex_descriptor;
+  if(settings.virtual_sources)
+    throw Invalid_input_error("farthest_point_sampling() does not take virtual_sources");
+  if(settings.limit < std::numeric_limits<double>::infinity() || settings.record_paths
+     || !is_default_parameter<NamedParameters, internal_np::targets_t>::value
+     || !is_default_parameter<NamedParameters, internal_np::initial_distances_t>::value)
+    throw Invalid_input_error("farthest_point_sampling() takes no maximum_distance, targets, record_paths nor "
+                              "initial_distances");
+  const Index first = first_sample_index(mesh, get_parameter(np, internal_np::first_sample));
+  const double radius = choose_parameter(get_parameter(np, internal_np::sampling_radius), 0.);
+  if(!(radius >= 0.))
+    throw Invalid_input_error("the sampling radius must be >= 0, got " + std::to_string(radius));
+
+  Farthest_point_sampler sampler;
+  sampler.template run<ConcurrencyTag>(mesh.arrays, k, first, radius / mesh.length_scale, settings, threads);
+  Farthest_point_samples<vertex_descriptor> r;
+  const double unit = mesh.length_scale;
+  for(Index v : sampler.samples)
+    r.samples.push_back(mesh.vertices[static_cast<std::size_t>(v)]);
+  for(double d : sampler.radii)
+    r.radii.push_back(d * unit);
+  r.distances = sampler.distances();
+  for(double& d : r.distances)
+    d *= unit;
+  r.labels.reserve(r.distances.size());
+  for(Index l : sampler.labels())
+    r.labels.push_back(l == NO_INDEX ? no_source : static_cast<std::size_t>(l));
+  if(r.distances.size() != mesh.vertices.size())  // no sample
+  {
+    r.distances.assign(mesh.vertices.size(), std::numeric_limits<double>::infinity());
+    r.labels.assign(mesh.vertices.size(), no_source);
+  }
+  r.statistics = sampler.statistics;
+  r.statistics.max_distance *= unit;
+  return r;
+}
+
+} // namespace internal
+} // namespace VTP_geodesics
+} // namespace CGAL
+
+#endif // CGAL_VTP_GEODESICS_INTERNAL_SAMPLING_FARTHEST_POINT_SAMPLER_H

@@ -1,0 +1,130 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_SOLVER_KNOWN_FIELD_H
+#define CGAL_VTP_GEODESICS_INTERNAL_SOLVER_KNOWN_FIELD_H
+
+#include <CGAL/license/VTP_geodesics.h>
+
+#include <CGAL/VTP_geodesics/Invalid_input_error.h>
+#include <CGAL/VTP_geodesics/parameters.h>
+#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
+#include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace VTP_geodesics {
+namespace internal {
+
+// The field a computation starts from (named parameters initial_distances, initial_nearest_sources and
+// first_source_label), read from the maps of the user into the engine's unit and validated.
+struct Known_field
+{
+  bool active = false;
+  std::vector<double> distances;  // per vertex index, in the engine's unit
+  std::vector<Index> labels;      // per vertex index (if labels are wanted)
+};
+
+template <class Vertex>
+void read_known_labels(const std::vector<Vertex>&, CGAL::internal_np::Param_not_found, std::vector<Index>& labels)
+{
+  labels.clear();
+}
+
+template <class Vertex, class VertexSourceMap>
+void read_known_labels(const std::vector<Vertex>& vertices, VertexSourceMap vsm, std::vector<Index>& labels)
+{
+  labels.resize(vertices.size());
+  for(std::size_t i = 0; i < vertices.size(); ++i)
+  {
+    const std::size_t l = static_cast<std::size_t>(get(vsm, vertices[i]));
+    if(l == no_source)
+      labels[i] = NO_INDEX;
+    else if(l >= static_cast<std::size_t>((std::numeric_limits<Index>::max)()))
+      throw Invalid_input_error("the initial nearest source of vertex " + std::to_string(i) + " is too large ("
+                                + std::to_string(l) + ")");
+    else
+      labels[i] = static_cast<Index>(l);
+  }
+}
+
+template <class Vertex>
+void read_known_distances(const std::vector<Vertex>&, double, CGAL::internal_np::Param_not_found, Known_field&)
+{}
+
+template <class Vertex, class VertexDistanceMap>
+void read_known_distances(const std::vector<Vertex>& vertices, double length_scale, VertexDistanceMap vdm,
+                          Known_field& field)
+{
+  field.active = true;
+  field.distances.resize(vertices.size());
+  for(std::size_t i = 0; i < vertices.size(); ++i)
+  {
+    const double d = static_cast<double>(get(vdm, vertices[i]));
+    if(!(d >= 0.))
+      throw Invalid_input_error("the initial distance of vertex " + std::to_string(i) + " is "
+                                + (std::isnan(d) ? std::string("NaN") : std::to_string(d))
+                                + " (it must be >= 0, +infinity for none)");
+    field.distances[i] = d / length_scale;
+  }
+}
+
+// Reads the known field of `np` (if any) for a run with `settings` (which it marks), and numbers the labels
+// of `seeds` from first_source_label. Throws Invalid_input_error for a combination that a run from known
+// distances does not support (a distance limit, targets, paths) or for bad values.
+template <class Vertex, class NamedParameters>
+Known_field known_field_of(const NamedParameters& np, const std::vector<Vertex>& vertices, double length_scale,
+                           Propagation_settings& settings, std::vector<Seed>& seeds)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  Known_field field;
+  read_known_distances(vertices, length_scale, get_parameter(np, internal_np::initial_distances), field);
+  const bool has_labels = !is_default_parameter<NamedParameters, internal_np::initial_nearest_sources_t>::value;
+  const std::size_t first = choose_parameter(get_parameter(np, internal_np::first_source_label), std::size_t(0));
+  if(!field.active && (has_labels || first != 0))
+    throw Invalid_input_error("initial_nearest_sources and first_source_label need initial_distances");
+  if(first > static_cast<std::size_t>((std::numeric_limits<Index>::max)()) - seeds.size())
+    throw Invalid_input_error("first_source_label is too large (" + std::to_string(first) + ")");
+  for(Seed& s : seeds)
+    s.label += static_cast<Index>(first);
+  if(!field.active)
+    return field;
+  if(settings.limit < std::numeric_limits<double>::infinity() || settings.record_paths
+     || !is_default_parameter<NamedParameters, internal_np::targets_t>::value)
+    throw Invalid_input_error("a computation from initial distances takes no maximum_distance, targets nor "
+                              "record_paths");
+  settings.known_distances = true;
+  if(settings.want_labels)
+  {
+    read_known_labels(vertices, get_parameter(np, internal_np::initial_nearest_sources), field.labels);
+    if(field.labels.empty())
+      field.labels.assign(vertices.size(), NO_INDEX);
+  }
+  return field;
+}
+
+} // namespace internal
+} // namespace VTP_geodesics
+} // namespace CGAL
+
+#endif // CGAL_VTP_GEODESICS_INTERNAL_SOLVER_KNOWN_FIELD_H
