@@ -1,7 +1,7 @@
 // vtp_query_benchmark: the cost of the queries beyond a full distance field, side by side in one run:
 // a distance limit, one near target, and path recording, against the full run from the same source.
 //
-//   vtp_query_benchmark [--repeat R] [--threads T] [--limit F] MESH...
+//   vtp_query_benchmark [--repeat R] [--threads T] [--limit F] [--fps K1,K2,...] [--naive K] MESH...
 //
 // For each mesh (source: vertex 0), in this order and R times, interleaved, each run in a forked child (so
 // that its peak resident memory, ru_maxrss from wait4, is its own; the mesh is read by the parent):
@@ -10,6 +10,9 @@
 //   target    targets(v), v the vertex whose distance is nearest F times the largest one
 //   record    the full run with record_paths(true)
 //   pvtp-*    the same three first runs with CGAL::Parallel_tag on T threads (if built with OpenMP)
+//   fps k     with --fps K1,K2,...: farthest-point sampling of k samples (exact VTP, first sample vertex 0)
+//   naive k   with --naive K: the naive sampling of the same first K samples, a full run from all the
+//             samples so far at every step (the samples come from an untimed sampling in the same child)
 // It prints the fastest time of each, its ratio to the full run of the same scheduling, the vertices
 // processed and windows propagated, and the peak RSS and its ratio to the full run.
 
@@ -50,8 +53,8 @@ namespace VP = CGAL::VTP_geodesics::parameters;
 
 namespace {
 
-enum class Query { FULL, LIMIT, TARGET, RECORD };
-const char* const query_names[] = { "full", "limit", "target", "record" };
+enum class Query { FULL, LIMIT, TARGET, RECORD, FPS, NAIVE };
+const char* const query_names[] = { "full", "limit", "target", "record", "fps", "naive" };
 
 struct Result
 {
@@ -62,9 +65,40 @@ struct Result
   int ok = 0;
 };
 
-// Runs one query in this process.
-Result run_query(const Mesh& mesh, Query q, bool parallel, int threads, double limit, Vertex_index target)
+// Farthest-point sampling of k samples from vertex 0 (Query::FPS), or the naive method for the same
+// samples (Query::NAIVE): the seconds of the propagations.
+Result run_sampling(const Mesh& mesh, Query q, std::size_t k)
 {
+  Solver solver(mesh);
+  const auto samples = solver.farthest_point_sampling(k, VP::first_sample(Vertex_index(0)));
+  Result r;
+  r.seconds = samples.statistics.seconds;
+  r.max_distance = samples.radii.back();
+  r.processed = samples.statistics.vertices_processed;
+  r.propagated = samples.statistics.windows_propagated;
+  if(q == Query::NAIVE)
+  {
+    r.seconds = 0.;
+    r.processed = r.propagated = 0;
+    const CGAL::Constant_property_map<Vertex_index, double> no_map;
+    for(std::size_t i = 1; i <= samples.samples.size(); ++i)
+    {
+      solver.compute(no_map, std::vector<Vertex_index>(samples.samples.begin(), samples.samples.begin() + i));
+      r.seconds += solver.statistics().seconds;
+      r.processed += solver.statistics().vertices_processed;
+      r.propagated += solver.statistics().windows_propagated;
+    }
+  }
+  r.ok = 1;
+  return r;
+}
+
+// Runs one query in this process.
+Result run_query(const Mesh& mesh, Query q, bool parallel, int threads, double limit, Vertex_index target,
+                 std::size_t k)
+{
+  if(q == Query::FPS || q == Query::NAIVE)
+    return run_sampling(mesh, q, k);
   Solver solver(mesh);
   const CGAL::Constant_property_map<Vertex_index, double> no_map;
   const Vertex_index source(0);
@@ -96,7 +130,7 @@ Result run_query(const Mesh& mesh, Query q, bool parallel, int threads, double l
 
 // Runs one query in a child process; returns its result and its peak RSS (MB).
 Result run_forked(const Mesh& mesh, Query q, bool parallel, int threads, double limit, Vertex_index target,
-                  double& peak_rss_mb)
+                  std::size_t k, double& peak_rss_mb)
 {
   int fds[2];
   if(::pipe(fds) != 0)
@@ -109,7 +143,7 @@ Result run_forked(const Mesh& mesh, Query q, bool parallel, int threads, double 
   {
     ::close(fds[0]);
     Result r;
-    try { r = run_query(mesh, q, parallel, threads, limit, target); }
+    try { r = run_query(mesh, q, parallel, threads, limit, target, k); }
     catch(...) { r.ok = 0; }
     const char* p = reinterpret_cast<const char*>(&r);
     std::size_t left = sizeof(r);
@@ -150,6 +184,8 @@ struct Arguments
 {
   int repeat = 3, threads = 2;
   double fraction = 0.1;
+  std::vector<std::size_t> fps;
+  std::size_t naive = 0;
   std::vector<std::string> files;
   bool help = false;
 };
@@ -167,6 +203,12 @@ Arguments parse_arguments(int argc, char** argv)
         if(!(a.fraction > 0.))
           throw vtp_support::Tool_error("the limit fraction of " + n + " must be > 0");
       } },
+    { "--fps", "K1,K2,...", nullptr,
+      [](Arguments& a, S n, S v) {
+        for(std::size_t i : vtp_support::parse_index_list(n, v))
+          a.fps.push_back(i);
+      } },
+    { "--naive", "K", nullptr, [](Arguments& a, S n, S v) { a.naive = static_cast<std::size_t>(parse_integer(n, v, 1, 100000)); } },
     { "--help", nullptr, nullptr, [](Arguments& a, S, S) { a.help = true; } },
   };
   Arguments a;
@@ -185,7 +227,8 @@ int main(int argc, char** argv)
     const Arguments args = parse_arguments(argc, argv);
     if(args.help)
     {
-      std::cout << "usage: vtp_query_benchmark [--repeat R] [--threads T] [--limit F] MESH...\n";
+      std::cout << "usage: vtp_query_benchmark [--repeat R] [--threads T] [--limit F] [--fps K1,K2,...] [--naive K] "
+                   "MESH...\n";
       return 0;
     }
     const int repeat = args.repeat, threads = args.threads;
@@ -215,21 +258,25 @@ int main(int argc, char** argv)
             target = v;
           }
       }
-      struct Case { Query q; bool parallel; };
-      std::vector<Case> cases = { { Query::FULL, false }, { Query::LIMIT, false }, { Query::TARGET, false },
-                                  { Query::RECORD, false } };
+      struct Case { Query q; bool parallel; std::size_t k; };
+      std::vector<Case> cases = { { Query::FULL, false, 0 }, { Query::LIMIT, false, 0 }, { Query::TARGET, false, 0 },
+                                  { Query::RECORD, false, 0 } };
 #ifdef _OPENMP
-      cases.push_back({ Query::FULL, true });
-      cases.push_back({ Query::LIMIT, true });
-      cases.push_back({ Query::TARGET, true });
+      cases.push_back({ Query::FULL, true, 0 });
+      cases.push_back({ Query::LIMIT, true, 0 });
+      cases.push_back({ Query::TARGET, true, 0 });
 #endif
+      for(std::size_t k : args.fps)
+        cases.push_back({ Query::FPS, false, k });
+      if(args.naive > 0)
+        cases.push_back({ Query::NAIVE, false, args.naive });
       std::vector<Result> best(cases.size());
       std::vector<double> rss(cases.size(), 0.);
       for(int r = 0; r < repeat; ++r)
         for(std::size_t c = 0; c < cases.size(); ++c)
         {
           double peak = 0.;
-          const Result x = run_forked(mesh, cases[c].q, cases[c].parallel, threads, limit, target, peak);
+          const Result x = run_forked(mesh, cases[c].q, cases[c].parallel, threads, limit, target, cases[c].k, peak);
           if(r == 0 || x.seconds < best[c].seconds)
             best[c] = x;
           rss[c] = std::max(rss[c], peak);
@@ -239,10 +286,11 @@ int main(int argc, char** argv)
       {
         const std::size_t full = cases[c].parallel ? 4 : 0;
         char line[512];
-        std::snprintf(line, sizeof(line), "| %s | %zu | %s%s | %.3g | %.3f | %llu | %llu | %.0f | %.3f |\n", name.c_str(),
+        const std::string k = cases[c].k > 0 ? " k=" + std::to_string(cases[c].k) : std::string();
+        std::snprintf(line, sizeof(line), "| %s | %zu | %s%s%s | %.3g | %.3f | %llu | %llu | %.0f | %.3f |\n", name.c_str(),
                       static_cast<std::size_t>(num_vertices(mesh)),
                       cases[c].parallel ? ("pvtp:" + std::to_string(threads) + " ").c_str() : "",
-                      query_names[static_cast<int>(cases[c].q)], best[c].seconds, best[c].seconds / best[full].seconds,
+                      query_names[static_cast<int>(cases[c].q)], k.c_str(), best[c].seconds, best[c].seconds / best[full].seconds,
                       best[c].processed, best[c].propagated, rss[c], rss[c] / rss[full]);
         std::cout << line;
       }

@@ -157,6 +157,12 @@ public:
     fill_window_statistics(parallel, statistics);
     statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
+  // Moves the distances and labels of the last run out of the engine (which then holds no field).
+  void release_field(std::vector<double>& distances, std::vector<Index>& labels)
+  {
+    distances.swap(m_virtual_sources ? m_vsp.dist : m_state.dist);
+    labels.swap(m_virtual_sources ? m_vsp.label : m_state.label);
+  }
   // the vertices lowered or woken by the last run from known distances, and their flags
   const std::vector<Index>& touched() const { return m_state.touched; }
   bool was_lowered(Index v) const { return (m_state.flag[v] & Propagation_state::LOWERED) != 0; }

@@ -28,9 +28,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -41,8 +43,9 @@ namespace internal {
 
 // Farthest-point sampling above the engine: each new sample is added to the field of the samples so far by a
 // run from known distances (Propagation_engine::run_again()), whose work and resetting are those of the
-// region the sample wins; the farthest vertex is kept by a max-heap of (distance, vertex) entries, pushed
-// again when a run lowers a vertex (stale entries are skipped), so that no step costs O(V).
+// region the sample wins; the farthest vertex is the top of a max-heap of the vertices (larger distance
+// first, then lower index) whose vertices lowered by a run sift down, so that no step costs O(V) and the
+// heap takes 8 bytes per vertex.
 class Farthest_point_sampler
 {
 public:
@@ -68,7 +71,7 @@ public:
     settings.unit = 1.;
     if(first == NO_INDEX)
       first = farthest_from_vertex_0<ConcurrencyTag>(m, settings, threads);
-    const std::vector<double>& dist = m_engine.distances();
+    const std::vector<double>& dist = m_engine->distances();
     Index next = first;
     for(;;)
     {
@@ -77,29 +80,31 @@ public:
       seed.element = next;
       seed.label = static_cast<Index>(samples.size());
       Propagation_statistics st;
-      m_engine.template run_again<ConcurrencyTag>(m, seed, settings, threads, st);
+      m_engine->template run_again<ConcurrencyTag>(m, seed, settings, threads, st);
       add_row_statistics(st, statistics);
       statistics.method = st.method;
       statistics.threads = st.threads;
       samples.push_back(next);
       if(samples.size() == 1)
-      {
-        // every vertex enters the heap once; later runs push the vertices they lower
-        m_heap.clear();
-        m_heap.reserve(static_cast<std::size_t>(m.nv));
-        for(Index v = 0; v < m.nv; ++v)
-          m_heap.emplace_back(dist[static_cast<std::size_t>(v)], v);
-        std::make_heap(m_heap.begin(), m_heap.end(), farther);
-      }
+        build_heap(m.nv);
       else
-        for(Index v : m_engine.touched())
-          if(m_engine.was_lowered(v))
-            push(dist[static_cast<std::size_t>(v)], v);
-      const std::pair<double, Index> top = farthest();
-      radii.push_back(top.first);
-      if(samples.size() >= k || !(top.first > radius) || top.second == NO_INDEX)
+      {
+        // the lowered vertices sift down from the deepest place up (as a heap is built): each then sifts
+        // through a subtree that is already a heap
+        m_lowered.clear();
+        for(Index v : m_engine->touched())
+          if(m_engine->was_lowered(v))
+            m_lowered.push_back(m_position[static_cast<std::size_t>(v)]);
+        std::sort(m_lowered.begin(), m_lowered.end(), std::greater<Index>());
+        for(Index i : m_lowered)
+          sift_down(i);
+      }
+      const Index top = m_heap.front();
+      const double farthest = dist[static_cast<std::size_t>(top)];
+      radii.push_back(farthest);
+      if(samples.size() >= k || !(farthest > radius))
         break;
-      next = top.second;
+      next = top;
     }
     statistics.sources = samples.size();
     statistics.vertices = static_cast<std::size_t>(m.nv);
@@ -111,37 +116,60 @@ public:
     statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
 
-  const std::vector<double>& distances() const { return m_engine.distances(); }
-  const std::vector<Index>& labels() const { return m_engine.labels(); }
+  // Moves the final field out (the distances and, per vertex, the index of the nearest sample or NO_INDEX),
+  // and frees the rest.
+  void release_field(std::vector<double>& distances, std::vector<Index>& labels)
+  {
+    m_engine->release_field(distances, labels);
+    m_engine.reset();
+    std::vector<Index>().swap(m_heap);
+    std::vector<Index>().swap(m_position);
+  }
 
 private:
-  typedef std::pair<double, Index> Entry;
-
-  // the heap order: the larger distance first, then the lower index
-  static bool farther(const Entry& a, const Entry& b)
+  // the heap order: a before b if a is farther, or as far with a lower index
+  bool before(Index a, Index b) const
   {
-    return a.first < b.first || (a.first == b.first && a.second > b.second);
+    const double da = m_engine->distances()[static_cast<std::size_t>(a)];
+    const double db = m_engine->distances()[static_cast<std::size_t>(b)];
+    return da > db || (da == db && a < b);
   }
 
-  void push(double d, Index v)
+  void place(std::size_t i, Index v)
   {
-    m_heap.emplace_back(d, v);
-    std::push_heap(m_heap.begin(), m_heap.end(), farther);
+    m_heap[i] = v;
+    m_position[static_cast<std::size_t>(v)] = static_cast<Index>(i);
   }
 
-  // the farthest vertex (its current distance; stale entries are dropped), (0, NO_INDEX) if none
-  Entry farthest()
+  // the vertex at place i went farther down the order (its distance was lowered)
+  void sift_down(Index place_of_vertex)
   {
-    const std::vector<double>& dist = m_engine.distances();
-    while(!m_heap.empty())
+    std::size_t i = static_cast<std::size_t>(place_of_vertex);
+    const Index v = m_heap[i];
+    const std::size_t n = m_heap.size();
+    for(;;)
     {
-      const Entry& e = m_heap.front();
-      if(e.first == dist[static_cast<std::size_t>(e.second)])
-        return e;
-      std::pop_heap(m_heap.begin(), m_heap.end(), farther);
-      m_heap.pop_back();
+      std::size_t child = 2 * i + 1;
+      if(child >= n)
+        break;
+      if(child + 1 < n && before(m_heap[child + 1], m_heap[child]))
+        ++child;
+      if(!before(m_heap[child], v))
+        break;
+      place(i, m_heap[child]);
+      i = child;
     }
-    return Entry(0., NO_INDEX);
+    place(i, v);
+  }
+
+  void build_heap(Index nv)
+  {
+    m_heap.resize(static_cast<std::size_t>(nv));
+    m_position.resize(static_cast<std::size_t>(nv));
+    for(Index v = 0; v < nv; ++v)
+      place(static_cast<std::size_t>(v), v);
+    for(std::size_t i = m_heap.size() / 2; i-- > 0;)
+      sift_down(static_cast<Index>(i));
   }
 
   // The default first sample: the vertex farthest from vertex 0 (ties: the lowest index), in a workspace
@@ -166,8 +194,10 @@ private:
     return best;
   }
 
-  Propagation_engine m_engine;
-  std::vector<Entry> m_heap;
+  std::unique_ptr<Propagation_engine> m_engine{ new Propagation_engine() };
+  std::vector<Index> m_heap;      // vertices
+  std::vector<Index> m_position;  // per vertex, its place in m_heap
+  std::vector<Index> m_lowered;   // places of the vertices lowered by a run
 };
 
 template <class MeshIndex>
@@ -213,19 +243,20 @@ farthest_point_samples_of(const MeshIndex& mesh, std::size_t k, const NamedParam
     r.samples.push_back(mesh.vertices[static_cast<std::size_t>(v)]);
   for(double d : sampler.radii)
     r.radii.push_back(d * unit);
-  r.distances = sampler.distances();
+  r.statistics = sampler.statistics;
+  r.statistics.max_distance *= unit;
+  std::vector<Index> labels;
+  sampler.release_field(r.distances, labels);  // the workspace is freed before the labels are widened
   for(double& d : r.distances)
     d *= unit;
-  r.labels.reserve(r.distances.size());
-  for(Index l : sampler.labels())
+  r.labels.reserve(labels.size());
+  for(Index l : labels)
     r.labels.push_back(l == NO_INDEX ? no_source : static_cast<std::size_t>(l));
   if(r.distances.size() != mesh.vertices.size())  // no sample
   {
     r.distances.assign(mesh.vertices.size(), std::numeric_limits<double>::infinity());
     r.labels.assign(mesh.vertices.size(), no_source);
   }
-  r.statistics = sampler.statistics;
-  r.statistics.max_distance *= unit;
   return r;
 }
 
