@@ -30,5 +30,5 @@ export TSAN_OPTIONS="ignore_noninstrumented_modules=1 halt_on_error=1 exitcode=6
 export OMP_WAIT_POLICY=passive
 tests="$(cd "$build" && pwd)/bin/vtp_geodesics_tests"
 cd test/VTP_geodesics
-"$tests" --gtest_filter='Parallel*:*Parallel*:Compute_each*:Multiple_sources*:Distance_limit*:Targets*:Preprocessing*'
+"$tests" --gtest_filter='Parallel*:*Parallel*:Compute_each*:Multiple_sources*:Distance_limit*:Targets*:Preprocessing*:Initial_distances*:Farthest_point_sampling*'
 echo "tsan_check.sh: no data race reported"
