@@ -13,8 +13,9 @@
 //   fps k     with --fps K1,K2,...: farthest-point sampling of k samples (exact VTP, first sample vertex 0)
 //   naive k   with --naive K: the naive sampling of the same first K samples, a full run from all the
 //             samples so far at every step (the samples come from an untimed sampling in the same child)
-// It prints the fastest time of each, its ratio to the full run of the same scheduling, the vertices
-// processed and windows propagated, and the peak RSS and its ratio to the full run.
+// It prints the fastest time of each (wall-clock seconds of the computation, and processor seconds of the
+// process during it: on a shared machine, compare the latter), its ratio to the full run of the same
+// scheduling, the vertices processed and windows propagated, and the peak RSS and its ratio to the full run.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -33,6 +34,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -59,31 +61,43 @@ const char* const query_names[] = { "full", "limit", "target", "record", "fps", 
 struct Result
 {
   double seconds = 0.;
+  double cpu_seconds = 0.;  // processor time of this process (all its threads) during the computation
   double max_distance = 0.;
   unsigned long long processed = 0, propagated = 0;
   double target_distance = 0.;
   int ok = 0;
 };
 
+double cpu_now()
+{
+  timespec t;
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 // Farthest-point sampling of k samples from vertex 0 (Query::FPS), or the naive method for the same
 // samples (Query::NAIVE): the seconds of the propagations.
 Result run_sampling(const Mesh& mesh, Query q, std::size_t k)
 {
   Solver solver(mesh);
+  const double c0 = cpu_now();
   const auto samples = solver.farthest_point_sampling(k, VP::first_sample(Vertex_index(0)));
   Result r;
+  r.cpu_seconds = cpu_now() - c0;
   r.seconds = samples.statistics.seconds;
   r.max_distance = samples.radii.back();
   r.processed = samples.statistics.vertices_processed;
   r.propagated = samples.statistics.windows_propagated;
   if(q == Query::NAIVE)
   {
-    r.seconds = 0.;
+    r.seconds = r.cpu_seconds = 0.;
     r.processed = r.propagated = 0;
     const CGAL::Constant_property_map<Vertex_index, double> no_map;
     for(std::size_t i = 1; i <= samples.samples.size(); ++i)
     {
+      const double c1 = cpu_now();
       solver.compute(no_map, std::vector<Vertex_index>(samples.samples.begin(), samples.samples.begin() + i));
+      r.cpu_seconds += cpu_now() - c1;
       r.seconds += solver.statistics().seconds;
       r.processed += solver.statistics().vertices_processed;
       r.propagated += solver.statistics().windows_propagated;
@@ -108,6 +122,7 @@ Result run_query(const Mesh& mesh, Query q, bool parallel, int threads, double l
   if(q == Query::TARGET)
     targets.push_back(target);
   const auto np2 = np.targets(targets);
+  const double c0 = cpu_now();
   if(parallel)
   {
 #ifdef _OPENMP
@@ -119,6 +134,7 @@ Result run_query(const Mesh& mesh, Query q, bool parallel, int threads, double l
   else
     solver.compute(no_map, source, np2);
   Result r;
+  r.cpu_seconds = cpu_now() - c0;
   r.seconds = solver.statistics().seconds;
   r.max_distance = solver.statistics().max_distance;
   r.processed = solver.statistics().vertices_processed;
@@ -234,8 +250,9 @@ int main(int argc, char** argv)
     const int repeat = args.repeat, threads = args.threads;
     const double fraction = args.fraction;
     const std::vector<std::string>& files = args.files;
-    std::cout << "| Mesh | #V | Run | Time (s) | vs full | Vertices processed | Windows propagated | Peak RSS (MB) | vs full |\n"
-              << "|---|--:|---|--:|--:|--:|--:|--:|--:|\n";
+    std::cout << "| Mesh | #V | Run | Time (s) | vs full | Processor s | vs full | Vertices processed | Windows propagated "
+                 "| Peak RSS (MB) | vs full |\n"
+              << "|---|--:|---|--:|--:|--:|--:|--:|--:|--:|--:|\n";
     for(const std::string& file : files)
     {
       Mesh mesh;
@@ -287,10 +304,11 @@ int main(int argc, char** argv)
         const std::size_t full = cases[c].parallel ? 4 : 0;
         char line[512];
         const std::string k = cases[c].k > 0 ? " k=" + std::to_string(cases[c].k) : std::string();
-        std::snprintf(line, sizeof(line), "| %s | %zu | %s%s%s | %.3g | %.3f | %llu | %llu | %.0f | %.3f |\n", name.c_str(),
+        std::snprintf(line, sizeof(line), "| %s | %zu | %s%s%s | %.3g | %.3f | %.3g | %.3f | %llu | %llu | %.0f | %.3f |\n", name.c_str(),
                       static_cast<std::size_t>(num_vertices(mesh)),
                       cases[c].parallel ? ("pvtp:" + std::to_string(threads) + " ").c_str() : "",
                       query_names[static_cast<int>(cases[c].q)], k.c_str(), best[c].seconds, best[c].seconds / best[full].seconds,
+                      best[c].cpu_seconds, best[c].cpu_seconds / best[full].cpu_seconds,
                       best[c].processed, best[c].propagated, rss[c], rss[c] / rss[full]);
         std::cout << line;
       }
