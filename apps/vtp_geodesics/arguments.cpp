@@ -119,11 +119,55 @@ const vtp_support::Option_table<Arguments>& option_table()
       "A path to a source itself is the single point. A vertex or point\n"
       "that no source reaches (or beyond --max-distance) is an error",
       [](Arguments& a, const std::string& n, const std::string& v) { a.path_output = file_name(n, v); } },
+    { "--farthest-points", "K",
+      "farthest-point sampling: takes K sample vertices, each the vertex\n"
+      "farthest from the samples before it (exact geodesic distances;\n"
+      "ties: the lowest index), which then are the sources of --output,\n"
+      "--labels (the geodesic Voronoi cells), --picture and --stats-json.\n"
+      "Not with --source, --source-point, targets, paths, --max-distance\n"
+      "nor --method vsp / pvsp",
+      [](Arguments& a, const std::string& n, const std::string& v) {
+        a.farthest_points = parse_index(n, v);
+        if(a.farthest_points == 0)
+          throw Tool_error(n + " must be at least 1");
+      } },
+    { "--first", "V",
+      "the first sample of --farthest-points (file order; default: the\n"
+      "vertex farthest from vertex 0)",
+      [](Arguments& a, const std::string& n, const std::string& v) {
+        a.first = parse_index(n, v);
+        a.has_first = true;
+      } },
+    { "--radius", "R",
+      "stop --farthest-points before K samples once every vertex is within\n"
+      "R of a sample (R >= 0)",
+      [](Arguments& a, const std::string& n, const std::string& v) {
+        a.radius = parse_double(n, v);
+        if(!(a.radius >= 0.))
+          throw Tool_error(n + " must be >= 0");
+        a.has_radius = true;
+      } },
+    { "--samples-output", "FILE",
+      "write the samples of --farthest-points, one line each, in the order\n"
+      "they were taken: the vertex index (file order) and the covering\n"
+      "radius once it is taken (the largest distance of a vertex to its\n"
+      "nearest sample so far; inf while a component has no sample),\n"
+      "after a '#' header line; - for standard output",
+      [](Arguments& a, const std::string& n, const std::string& v) { a.samples_output = file_name(n, v); } },
     { "--picture", "FILE",
       "draw the distances as a PNG picture: the mesh coloured by distance\n"
       "(viridis), shaded, with isolines, a colour bar, the sources marked\n"
       "and the paths drawn",
       [](Arguments& a, const std::string& n, const std::string& v) { a.picture = file_name(n, v); } },
+    { "--picture-colour", "C",
+      "what --picture colours: distances (the default) or labels (each\n"
+      "nearest-source cell in its own colour, the borders between cells\n"
+      "drawn; with --farthest-points: the geodesic Voronoi cells)",
+      [](Arguments& a, const std::string& n, const std::string& v) {
+        if(v != "distances" && v != "labels")
+          throw Tool_error("unknown value '" + v + "' for " + n + " (expected distances or labels)");
+        a.colour_labels = v == "labels";
+      } },
     { "--isolines", "N", "about N isolines on the picture, at round distances (default: 10;\n0: none)",
       [](Arguments& a, const std::string& n, const std::string& v) {
         const std::size_t k = parse_index(n, v);
@@ -184,11 +228,31 @@ const vtp_support::Option_table<Arguments>& option_table()
 
 namespace {
 
+void check_sampling_arguments(const Arguments& a, const vtp_support::Method_info& m)
+{
+  if(a.farthest_points == 0)
+  {
+    if(a.has_first || a.has_radius || !a.samples_output.empty())
+      throw Tool_error("--first, --radius and --samples-output need --farthest-points");
+    return;
+  }
+  if(a.number_of_sources() > 0)
+    throw Tool_error("--farthest-points chooses the sources: it takes no --source nor --source-point");
+  if(a.has_targets() || a.has_paths() || a.has_max_distance)
+    throw Tool_error("--farthest-points takes no --target, --target-point, --path-to, --path-to-point nor "
+                     "--max-distance");
+  if(m.virtual_sources)
+    throw Tool_error("--farthest-points needs --method vtp, pvtp, avtp or pavtp (not " + std::string(m.name) + ")");
+  if(a.check_cgal)
+    throw Tool_error("--farthest-points takes no --check-cgal");
+}
+
 void check_arguments(const Arguments& a)
 {
   const vtp_support::Method_info* m = vtp_support::find_method(a.method);
   if(m == nullptr)
     throw Tool_error("unknown method '" + a.method + "' (expected " + vtp_support::method_names() + ")");
+  check_sampling_arguments(a, *m);
   if((a.has_lambda || a.has_lambda_g) && !m->approximate)
     throw Tool_error("--lambda and --lambda-g need --method avtp or pavtp");
   if(!a.target_output.empty() && !a.has_targets())
@@ -197,8 +261,10 @@ void check_arguments(const Arguments& a)
     throw Tool_error("--path-output needs --path-to or --path-to-point");
   if(a.has_paths() && a.path_output.empty() && a.picture.empty())
     throw Tool_error("--path-to and --path-to-point need --path-output (or --picture, which draws the paths)");
-  const std::string* files[] = { &a.output, &a.stats_json, &a.picture, &a.labels, &a.target_output, &a.path_output };
-  const char* names[] = { "--output", "--stats-json", "--picture", "--labels", "--target-output", "--path-output" };
+  const std::string* files[] = { &a.output, &a.stats_json, &a.picture, &a.labels, &a.target_output, &a.path_output,
+                                 &a.samples_output };
+  const char* names[] = { "--output", "--stats-json", "--picture", "--labels", "--target-output", "--path-output",
+                          "--samples-output" };
   const int n = static_cast<int>(sizeof(names) / sizeof(names[0]));
   for(int i = 0; i < n; ++i)
     for(int j = i + 1; j < n; ++j)
@@ -220,10 +286,10 @@ Arguments parse_arguments(int argc, char** argv)
     a.mesh = arg;
     has_mesh = true;
   });
-  if(a.sources.empty() && a.source_points.empty())
-    a.sources.push_back(0);
   if(!a.help)
     check_arguments(a);
+  if(a.sources.empty() && a.source_points.empty() && a.farthest_points == 0)
+    a.sources.push_back(0);
   return a;
 }
 
@@ -234,7 +300,8 @@ void print_usage(std::ostream& os, const std::string& default_mesh)
         "Computes exact geodesic distances from sources (vertices or points of the surface) to all\n"
         "vertices of a triangle mesh by vertex-oriented triangle propagation (VTP): the distance of a\n"
         "vertex is its distance to the nearest source. Optionally: the nearest source of each vertex,\n"
-        "a distance limit, distances at targets, and geodesic paths.\n"
+        "a distance limit, distances at targets, geodesic paths, and farthest-point sampling with\n"
+        "its geodesic Voronoi cells.\n"
         "\n";
   const std::size_t column = 25;
   vtp_support::print_help_item(os, "MESH", "mesh file: " + vtp_support::readable_extensions_text() + "\n(default: "

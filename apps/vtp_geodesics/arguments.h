@@ -60,6 +60,15 @@ struct Arguments
   bool has_lambda = false;
   double lambda_g = 1.0;
   bool has_lambda_g = false;
+  // Farthest-point sampling: --farthest-points K (0: none), --first V (file order), --radius R, and the
+  // file of the samples; the samples are then the sources of every other output.
+  std::size_t farthest_points = 0;
+  std::size_t first = 0;
+  bool has_first = false;
+  double radius = 0.;
+  bool has_radius = false;
+  std::string samples_output;             // empty: none; "-": standard output
+  bool colour_labels = false;             // --picture-colour labels
   bool help = false;
 
   std::size_t number_of_sources() const { return sources.size() + source_points.size(); }

@@ -134,6 +134,8 @@ int run(int argc, char** argv)
     check_vertex(v, "target");
   for(std::size_t v : args.path_to)
     check_vertex(v, "path");
+  if(args.has_first)
+    check_vertex(args.first, "--first");
 
   // Points, located on the mesh of the computation (the repaired mesh, if the file needed a repair).
   std::unique_ptr<Point_locator> locator;
@@ -168,7 +170,7 @@ int run(int argc, char** argv)
     request.source_locations.push_back(source_points[j].location);
     request.source_location_labels.push_back(args.sources.size() + j);
   }
-  const bool several_sources = args.number_of_sources() > 1;
+  const bool several_sources = args.number_of_sources() > 1 || args.farthest_points > 1;
   request.want_labels = several_sources || !args.labels.empty();
   request.max_distance = args.max_distance;
   for(std::size_t v : args.targets)
@@ -211,7 +213,34 @@ int run(int argc, char** argv)
     request.paths.push_back(path);
   }
   request.check_cgal = args.check_cgal;
+  const bool sampling = args.farthest_points > 0;
+  if(sampling)
+  {
+    request.farthest_points = args.farthest_points;
+    request.radius = args.radius;
+    request.want_labels = true;
+    if(args.has_first)
+    {
+      const std::vector<vtp_support::Vertex_index> copies = input.mesh_vertices_of(args.first);
+      if(copies.empty())
+        throw Tool_error("--first vertex " + std::to_string(args.first) + " is in no face of the mesh");
+      request.has_first = true;
+      request.first = copies.front();
+    }
+  }
+  request.want_labels = request.want_labels || args.colour_labels;
   Run_result result = run_propagation(input.mesh, request);
+  // the samples as vertices of the file
+  std::vector<std::size_t> samples;
+  if(sampling)
+  {
+    std::vector<std::size_t> file_vertex_of(result.mesh_vertices, 0);
+    for(std::size_t i = 0; i < input.file_vertices; ++i)
+      for(vtp_support::Vertex_index v : input.mesh_vertices_of(i))
+        file_vertex_of[std::size_t(v)] = i;
+    for(vtp_support::Vertex_index v : result.samples)
+      samples.push_back(file_vertex_of[std::size_t(v)]);
+  }
   for(std::size_t k = 0; k < paths.size(); ++k)
     if(traced[k] >= 0)
       paths[k] = std::move(result.paths[static_cast<std::size_t>(traced[k])]);
@@ -245,8 +274,10 @@ int run(int argc, char** argv)
   report.repairs = input.repairs.summary();
   report.vertices = input.file_vertices;
   report.faces = input.file_faces;
-  report.sources = args.number_of_sources();
+  report.sources = sampling ? samples.size() : args.number_of_sources();
   report.single_vertex_source = args.number_of_sources() == 1 && args.sources.size() == 1;
+  if(sampling)
+    report.sources_text = std::to_string(samples.size()) + " farthest points";
   report.source = args.sources.empty() ? 0 : args.sources.front();
   for(std::size_t i = 0; i < args.sources.size(); ++i)
     report.sources_text += (i == 0 ? "" : ", ") + std::to_string(args.sources[i]);
@@ -306,6 +337,12 @@ int run(int argc, char** argv)
     vtp_support::write_values_text(f.stream(), target_distances);
     f.close();
   }
+  if(!args.samples_output.empty())
+  {
+    vtp_support::Output_file& f = open_output(args.samples_output);
+    write_samples(f.stream(), samples, result.radii);
+    f.close();
+  }
   if(!args.path_output.empty())
   {
     vtp_support::Output_file& f = open_output(args.path_output);
@@ -326,7 +363,14 @@ int run(int argc, char** argv)
     }
     for(const Located_point& q : source_points)
       p.markers.push_back(q.point);
+    for(std::size_t v : samples)
+    {
+      const vtp_support::Point_3& q = input.file_point(v);
+      p.markers.push_back({ { q.x(), q.y(), q.z() } });
+    }
     p.polylines = paths;
+    if(args.colour_labels)
+      p.labels = &result.labels;
     write_picture(f.stream(), input.mesh, input.direct ? distances : mesh_distances, report.max_distance, p);
     f.close();
   }

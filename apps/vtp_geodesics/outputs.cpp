@@ -15,6 +15,7 @@
 #include <vtp_support/number_format.h>
 #include <vtp_support/picture.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -120,6 +121,8 @@ void write_picture(std::ostream& os, const vtp_support::Mesh& mesh, const std::v
     options.view = request.view;
   }
   vtp_support::Distance_picture picture(options);
+  if(request.labels != nullptr)
+    picture.set_labels(*request.labels);
   const vtp_support::Mesh::size_type nv = mesh.number_of_vertices();
   picture.set_mesh(
     static_cast<std::size_t>(nv),
@@ -141,6 +144,14 @@ void write_picture(std::ostream& os, const vtp_support::Mesh& mesh, const std::v
   for(const std::array<double, 3>& p : request.markers)
     picture.add_marker(p);
   picture.write_png(os);
+}
+
+void write_samples(std::ostream& os, const std::vector<std::size_t>& samples, const std::vector<double>& radii)
+{
+  std::string text = "# farthest-point samples: vertex (file order), covering radius once it is taken\n";
+  for(std::size_t i = 0; i < samples.size(); ++i)
+    text += std::to_string(samples[i]) + ' ' + vtp_support::double_to_string(radii[i]) + '\n';
+  os.write(text.data(), static_cast<std::streamsize>(text.size()));
 }
 
 namespace {
@@ -212,6 +223,14 @@ std::string stats_json(const Report& r)
      << ", \"max_distance\": " << json_number(r.max_distance)
      << ", \"mean_edge_length\": " << json_number(s.mean_edge_length)
      << ", \"anisotropy\": " << json_number(s.anisotropy);
+  if(!s.samples.empty())
+  {
+    const auto areas = std::minmax_element(s.cell_areas.begin(), s.cell_areas.end());
+    os << ", \"samples\": " << s.samples.size()
+       << ", \"covering_radius\": " << json_number(s.radii.back())
+       << ", \"min_cell_area\": " << json_number(*areas.first)
+       << ", \"max_cell_area\": " << json_number(*areas.second);
+  }
   if(r.checked)
     os << ", \"cgal_seconds\": " << json_number(s.cgal_seconds)
        << ", \"max_abs_diff\": " << json_number(r.comparison.max_abs_diff)
@@ -235,6 +254,15 @@ void print_summary(std::ostream& os, const Report& r)
      << " vertices reached" << (s.stopped_early ? "; stopped early" : "") << ")\n"
      << "windows: " << s.windows_created << " created, " << s.windows_propagated << " propagated, peak "
      << s.peak_live_windows << " alive (" << s.peak_window_bytes << " bytes)\n";
+  if(!s.samples.empty())
+  {
+    const auto areas = std::minmax_element(s.cell_areas.begin(), s.cell_areas.end());
+    double total = 0.;
+    for(double a : s.cell_areas)
+      total += a;
+    os << "farthest points: " << s.samples.size() << " samples, covering radius " << s.radii.back() << "\n"
+       << "Voronoi cells: area " << *areas.first << " to " << *areas.second << " (total " << total << ")\n";
+  }
   if(!r.repairs.empty())
     os << "triangle mesh: " << s.mesh_vertices << " vertices, " << s.mesh_faces << " faces\n";
 }

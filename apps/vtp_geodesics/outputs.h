@@ -77,11 +77,16 @@ struct Picture_request
   std::array<double, 3> view = { { 0., 0., -1. } };
   std::vector<std::array<double, 3> > markers;                // the sources
   std::vector<std::vector<std::array<double, 3> > > polylines; // the paths
+  const std::vector<int>* labels = nullptr;                   // per mesh vertex: colour the labels instead
 };
 
 // Draws the distance field on the mesh of the computation (`mesh_distances`: per mesh vertex) as a PNG picture.
 void write_picture(std::ostream& os, const vtp_support::Mesh& mesh, const std::vector<double>& mesh_distances,
                    double max_distance, const Picture_request& request);
+
+// Writes the samples of a farthest-point sampling (file vertex indices, in order) and the covering radius after
+// each: a '#' header line, then "V R" per line (R: shortest text that reads back exactly, "inf" if infinite).
+void write_samples(std::ostream& os, const std::vector<std::size_t>& samples, const std::vector<double>& radii);
 
 std::string stats_json(const Report& r);
 void print_summary(std::ostream& os, const Report& r);

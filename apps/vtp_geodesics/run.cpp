@@ -13,6 +13,7 @@
 #include "arguments.h"
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
+#include <CGAL/VTP_geodesics/geodesic_voronoi_cells.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
 
@@ -83,6 +84,49 @@ std::vector<std::array<double, 3> > to_arrays(const std::vector<vtp_support::Poi
   return r;
 }
 
+// Farthest-point sampling with `method` (VTP, PVTP, AVTP or PAVTP), then the areas of the Voronoi cells.
+void run_sampling(const vtp_support::Method_info& method, Solver& solver, const vtp_support::Mesh& mesh,
+                  const Run_request& request, double lambda, Run_result& r)
+{
+  const auto options = VTP::parameters::number_of_threads(request.threads).lambda(lambda).lambda_g(request.lambda_g)
+                                       .sampling_radius(request.radius);
+  VTP::Farthest_point_samples<vtp_support::Vertex_index> fps;
+  if(method.parallel)
+  {
+#ifdef _OPENMP
+    fps = request.has_first ? solver.farthest_point_sampling<CGAL::Parallel_tag>(request.farthest_points,
+                                                                                 options.first_sample(request.first))
+                            : solver.farthest_point_sampling<CGAL::Parallel_tag>(request.farthest_points, options);
+#else
+    throw Tool_error(std::string("method ") + method.name + " needs OpenMP, and this program was built without it");
+#endif
+  }
+  else
+    fps = request.has_first ? solver.farthest_point_sampling(request.farthest_points, options.first_sample(request.first))
+                            : solver.farthest_point_sampling(request.farthest_points, options);
+  const VTP::Voronoi_cell_areas cells =
+    VTP::geodesic_voronoi_cell_areas(mesh, fps.samples.size(), fps.labels, fps.distances);
+  r.samples = fps.samples;
+  r.radii = fps.radii;
+  r.cell_areas = cells.areas;
+  r.cell_uncertainty = cells.uncertainty;
+  r.sources = fps.samples.size();
+  r.distances = std::move(fps.distances);
+  r.labels.resize(r.mesh_vertices);
+  for(std::size_t i = 0; i < r.mesh_vertices; ++i)
+    r.labels[i] = fps.labels[i] == VTP::no_source ? -1 : static_cast<int>(fps.labels[i]);
+  const VTP::Propagation_statistics& st = fps.statistics;
+  r.threads = st.threads;
+  r.propagation_seconds = st.seconds;
+  r.windows_created = st.windows_created;
+  r.windows_propagated = st.windows_propagated;
+  r.peak_live_windows = st.peak_live_windows;
+  r.peak_window_bytes = st.peak_window_bytes;
+  r.vertices_processed = st.vertices_processed;
+  r.pseudo_sources = st.pseudo_sources;
+  r.resets = st.resets;
+}
+
 } // namespace
 
 double recommended_lambda() { return CGAL::VTP_geodesics::recommended_lambda; }
@@ -105,6 +149,11 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
 #endif
   r.mean_edge_length = solver.mean_edge_length();
   r.anisotropy = solver.anisotropy();
+  if(request.farthest_points > 0)
+  {
+    run_sampling(method, solver, mesh, request, lambda, r);
+    return r;
+  }
 
   // The source set: the label of the library (the order of add_source()) maps to the label of the command line.
   std::vector<std::size_t> label_of_source;

@@ -57,6 +57,12 @@ struct Run_request
   };
   std::vector<Path> paths;
   bool check_cgal = false;                // also run CGAL::Surface_mesh_shortest_path
+  // Farthest-point sampling (instead of the sources above): up to farthest_points samples, from `first` (or
+  // the vertex farthest from vertex 0), until the covering radius is <= radius.
+  std::size_t farthest_points = 0;
+  bool has_first = false;
+  vtp_support::Vertex_index first;
+  double radius = 0.;
 };
 
 struct Run_result
@@ -79,6 +85,11 @@ struct Run_result
   std::size_t vertices_processed = 0, pseudo_sources = 0, resets = 0;
   std::size_t sources = 0;                // the sources of the propagation (the copies of a vertex count)
   bool stopped_early = false;             // at the distance limit or the targets
+  // farthest-point sampling: the samples (mesh vertices) in order, the covering radius after each, and the
+  // area of the geodesic Voronoi cell of each with the area of its faces shared with other cells
+  std::vector<vtp_support::Vertex_index> samples;
+  std::vector<double> radii;
+  std::vector<double> cell_areas, cell_uncertainty;
 };
 
 // Runs `request` on `mesh`; throws Tool_error (e.g. a path to a vertex that no source reaches) or the

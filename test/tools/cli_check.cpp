@@ -25,6 +25,12 @@
 //       POLYLINES: CGAL's polylines text, one path per line; line I_k of DISTANCES ("all": line k): the distance
 //       of path k. Each path's length equals its distance to 1e-12 relative, and a path at distance 0 is one
 //       point; with OBJ, that file (v and l lines) holds the same paths, point for point.
+//   samples SAMPLES DIST LABELS K FIRST [RADIUS]
+//       SAMPLES (--samples-output of --farthest-points K, with --output DIST and --labels LABELS): a '#' header,
+//       then "V R" lines; K of them (with RADIUS: up to K, the last radius <= RADIUS and the one before above it),
+//       the first one FIRST ("-": any), distinct vertices, radii non-increasing, the last one the largest of DIST;
+//       each sample at distance 0 and labelled with its own number; every label in range, -1 exactly where DIST
+//       is inf; every sample labels some vertex.
 
 #include <cerrno>
 #include <cmath>
@@ -358,13 +364,79 @@ void check_paths(const std::vector<std::string>& args)
   }
 }
 
+void check_samples(const std::vector<std::string>& args)
+{
+  if(args.size() != 5 && args.size() != 6)
+    throw Check_failure("samples: expected SAMPLES DIST LABELS K FIRST [RADIUS]");
+  std::vector<std::string> lines = read_lines(args[0]);
+  if(lines.empty() || lines[0].empty() || lines[0][0] != '#')
+    throw Check_failure(args[0] + ": no '#' header line");
+  lines.erase(lines.begin());
+  const std::vector<double> d = read_numbers(args[1]);
+  const std::vector<long> labels = read_integers(args[2]);
+  same_size(d.size(), labels.size(), args[1] + " and " + args[2]);
+  const std::size_t k = static_cast<std::size_t>(std::stoul(args[3]));
+  std::vector<std::size_t> samples;
+  std::vector<double> radii;
+  for(std::size_t i = 0; i < lines.size(); ++i)
+  {
+    std::istringstream in(lines[i]);
+    std::string v, r, rest;
+    if(!(in >> v >> r) || (in >> rest))
+      throw Check_failure(args[0] + " line " + std::to_string(i + 1) + ": '" + lines[i] + "' is not 'V R'");
+    samples.push_back(static_cast<std::size_t>(std::stoul(v)));
+    radii.push_back(to_number(r, args[0] + " line " + std::to_string(i + 1)));
+    if(samples.back() >= d.size())
+      throw Check_failure("sample " + v + " is not a vertex");
+  }
+  if(args.size() == 6)
+  {
+    const double radius = to_number(args[5], "RADIUS");
+    if(samples.empty() || samples.size() > k || !(radii.back() <= radius)
+       || (samples.size() > 1 && !(radii[radii.size() - 2] > radius)))
+      throw Check_failure(std::to_string(samples.size()) + " samples do not stop at the first radius <= " + args[5]);
+  }
+  else if(samples.size() != k)
+    throw Check_failure(std::to_string(samples.size()) + " samples, expected " + args[3]);
+  if(args[4] != "-" && samples[0] != static_cast<std::size_t>(std::stoul(args[4])))
+    throw Check_failure("the first sample is " + std::to_string(samples[0]) + ", expected " + args[4]);
+  double largest = 0.;
+  for(double x : d)
+    largest = std::max(largest, x);
+  if(!(radii.back() == largest || std::abs(radii.back() - largest) <= 1e-12 * largest))
+    throw Check_failure("the last radius " + text(radii.back()) + " is not the largest distance " + text(largest));
+  std::vector<std::size_t> cell_size(samples.size(), 0);
+  for(std::size_t i = 0; i < samples.size(); ++i)
+  {
+    if(i > 0 && !(radii[i] <= radii[i - 1]))
+      throw Check_failure("radius " + std::to_string(i) + " (" + text(radii[i]) + ") is above the one before");
+    for(std::size_t j = 0; j < i; ++j)
+      if(samples[j] == samples[i])
+        throw Check_failure("vertex " + std::to_string(samples[i]) + " is sampled twice");
+    if(d[samples[i]] != 0. || labels[samples[i]] != static_cast<long>(i))
+      throw Check_failure("sample " + std::to_string(i) + " (vertex " + std::to_string(samples[i]) + ") is at distance "
+                          + text(d[samples[i]]) + " with label " + std::to_string(labels[samples[i]]));
+  }
+  for(std::size_t v = 0; v < d.size(); ++v)
+  {
+    if((labels[v] == -1) != std::isinf(d[v]) || labels[v] < -1 || labels[v] >= static_cast<long>(samples.size()))
+      throw Check_failure("vertex " + std::to_string(v) + ": label " + std::to_string(labels[v]) + " at distance "
+                          + text(d[v]));
+    if(labels[v] >= 0)
+      ++cell_size[static_cast<std::size_t>(labels[v])];
+  }
+  for(std::size_t i = 0; i < samples.size(); ++i)
+    if(cell_size[i] == 0)
+      throw Check_failure("sample " + std::to_string(i) + " labels no vertex");
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
   if(argc < 2)
   {
-    std::cerr << "usage: vtp_geodesics_cli_check nearest|limit|values|paths ARGUMENTS... (see cli_check.cpp)\n";
+    std::cerr << "usage: vtp_geodesics_cli_check nearest|limit|values|paths|samples ARGUMENTS... (see cli_check.cpp)\n";
     return 2;
   }
   const std::string mode = argv[1];
@@ -379,6 +451,8 @@ int main(int argc, char** argv)
       check_values(args);
     else if(mode == "paths")
       check_paths(args);
+    else if(mode == "samples")
+      check_samples(args);
     else
       throw Check_failure("unknown check '" + mode + "'");
   }

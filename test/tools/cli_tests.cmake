@@ -312,6 +312,50 @@ vtp_cli_test(paths_repaired 0 "${paths}.nmv.txt" "" LINES 2 SOURCE_LINE none VAL
              NOTE "duplicated 1 non-manifold vertex"
              "${cli_data}/nonmanifold_vertex.off" --source 1 --path-to 0,1 --path-output "${paths}.nmv.txt")
 
+# Farthest-point sampling: the samples file (K lines after a header; the first one --first; distinct; radii
+# non-increasing, the last the largest distance; every sample at 0 with its own label); --radius stops early; one
+# sample from --first is the plain run from that vertex; the Voronoi cells on the picture; bad combinations.
+set(fps "${cli_dir}/fps")
+vtp_cli_test(fps 0 "${fps}.txt" "${fps}.json" SOURCE_LINE none JSON_MATCH "\"samples\": 12, && \"sources\": 12,"
+             --farthest-points 12 --first 1000 --samples-output "${fps}.samples" --output "${fps}.txt"
+             --labels "${fps}.labels" --stats-json "${fps}.json")
+vtp_cli_check(fps_samples AFTER fps ARGS samples "${fps}.samples" "${fps}.txt" "${fps}.labels" 12 1000)
+vtp_cli_test(fps_radius 0 "${fps}.r.txt" "" SOURCE_LINE none
+             --farthest-points 100 --radius 0.3 --samples-output "${fps}.r.samples" --output "${fps}.r.txt"
+             --labels "${fps}.r.labels")
+vtp_cli_check(fps_radius_samples AFTER fps_radius ARGS samples "${fps}.r.samples" "${fps}.r.txt" "${fps}.r.labels" 100 - 0.3)
+vtp_cli_test(fps_one 0 "${fps}.1.txt" "" SOURCE_LINE 1000 --farthest-points 1 --first 1000 --output "${fps}.1.txt")
+vtp_cli_check(fps_one_is_a_run AFTER fps_one several_single_1 ARGS values "${fps}.1.txt" all "${several}.1.txt" all 1e-12)
+vtp_cli_test(fps_picture 0 "${fps}.png" "" CHECK png --farthest-points 8 --picture "${fps}.png" --picture-colour labels)
+if(TARGET CGAL::VTP_geodesics_OpenMP_support)
+  vtp_cli_test(fps_pvtp 0 "${fps}.p.txt" "" SOURCE_LINE none --method pvtp --threads 2 --farthest-points 12
+               --first 1000 --samples-output "${fps}.p.samples" --output "${fps}.p.txt" --labels "${fps}.p.labels")
+  vtp_cli_check(fps_pvtp_equals_vtp AFTER fps fps_pvtp ARGS values "${fps}.p.txt" all "${fps}.txt" all 1e-12)
+endif()
+set(fps_bad_sets
+  "fps_zero|--farthest-points|0"
+  "fps_not_integer|--farthest-points|x"
+  "fps_with_source|--farthest-points|3|--source|5"
+  "fps_with_source_point|--farthest-points|3|--source-point|0.1,0.2,0.3"
+  "fps_with_limit|--farthest-points|3|--max-distance|1"
+  "fps_with_target|--farthest-points|3|--target|5|--target-output|${bad_output}.fps.t"
+  "fps_vsp|--farthest-points|3|--method|vsp"
+  "fps_first_out_of_range|--farthest-points|3|--first|99999999"
+  "fps_radius_negative|--farthest-points|3|--radius|-1"
+  "fps_radius_nan|--farthest-points|3|--radius|nan"
+  "first_without_fps|--first|3"
+  "radius_without_fps|--radius|0.5"
+  "samples_output_without_fps|--samples-output|${bad_output}.fps.s"
+  "picture_colour_unknown|--picture-colour|heights|--picture|${bad_output}.fps.png")
+set(k 100)
+foreach(set IN LISTS fps_bad_sets)
+  string(REPLACE "|" ";" items "${set}")
+  list(POP_FRONT items name)
+  vtp_cli_test(${name} 2 "${bad_output}.${k}" "${bad_json}.${k}"
+               ${items} --output "${bad_output}.${k}" --stats-json "${bad_json}.${k}")
+  math(EXPR k "${k} + 1")
+endforeach()
+
 # Bad lists, points and limits; paths that do not exist: one error line, exit code 2, no file written.
 set(bad_sets
   "source_empty_item|--source|0,,1"

@@ -25,6 +25,8 @@
 //   picture.set_mesh(nv, point_of, nf, face_of, values, max_value); // point_of(i) -> std::array<double, 3>,
 //                                                                   // face_of(f) -> std::array<uint32_t, 3>
 //   picture.add_marker(p);  picture.add_polyline(points);
+//   (or, before set_mesh(), picture.set_labels(labels): each label, e.g. a nearest-source cell, in its own
+//   colour with the borders between labels drawn, instead of the colour map, the isolines and the colour bar)
 //   picture.write_png(stream);
 
 #include <vtp_support/colour_map.h>
@@ -127,6 +129,11 @@ class Distance_picture
 {
 public:
   explicit Distance_picture(const Picture_options& options = Picture_options()) : m_options(options) {}
+
+  // Colours the mesh by `labels` (per vertex; negative: none, drawn grey) instead of the values: call before
+  // set_mesh(). Inside a face whose corners have different labels, each point takes the label of the corner of
+  // largest barycentric coordinate, and the border between two labels is drawn dark.
+  void set_labels(std::vector<int> labels) { m_labels = std::move(labels); }
 
   // Draws the mesh: `point_of(i)` (i < nv) gives the point of vertex i as std::array<double, 3>, `face_of(f)`
   // (f < nf) the three vertex indices of face f, `values[i]` the value of vertex i (not finite: no value, drawn
@@ -368,7 +375,9 @@ private:
     const Rgb grey = unreachable_colour();
     double r = grey.r, g = grey.g, b = grey.b;
     double line = 0.;
-    if(std::isfinite(v0) && std::isfinite(v1) && std::isfinite(v2))
+    if(!m_labels.empty())
+      label_colour(t, { { w0, w1, w2 } }, r, g, b, line);
+    else if(std::isfinite(v0) && std::isfinite(v1) && std::isfinite(v2))
     {
       const double v = w0 * v0 + w1 * v1 + w2 * v2;
       const double fraction = m_max_value > 0. ? std::clamp(v / m_max_value, 0., 1.) : 0.;
@@ -413,6 +422,42 @@ private:
     out[0] = static_cast<unsigned char>((std::min)(255., r * f + 0.5));
     out[1] = static_cast<unsigned char>((std::min)(255., g * f + 0.5));
     out[2] = static_cast<unsigned char>((std::min)(255., b * f + 0.5));
+  }
+
+  // A colour per label: hues spread by the golden ratio, alternating lightness, so that neighbouring cells
+  // (consecutive samples of a farthest-point sampling are far apart, but any labels may meet) differ.
+  static void colour_of_label(int label, double& r, double& g, double& b)
+  {
+    const double hue = std::fmod(0.13 + 0.6180339887498949 * label, 1.) * 6.;
+    const double saturation = label % 2 == 0 ? 0.55 : 0.4, value = label % 3 == 0 ? 0.95 : (label % 3 == 1 ? 0.82 : 0.7);
+    const int sector = static_cast<int>(hue) % 6;
+    const double f = hue - std::floor(hue);
+    const double p = value * (1. - saturation), q = value * (1. - saturation * f), u = value * (1. - saturation * (1. - f));
+    const double rgb[6][3] = { { value, u, p }, { q, value, p }, { p, value, u }, { p, q, value }, { u, p, value }, { value, p, q } };
+    r = 255. * rgb[sector][0];
+    g = 255. * rgb[sector][1];
+    b = 255. * rgb[sector][2];
+  }
+
+  // The colour of a sample of face t (corner labels, barycentric weights w) in the label colouring, and how
+  // much it lies on a border (line, 0 to 1).
+  void label_colour(const std::array<std::uint32_t, 3>& t, const std::array<float, 3>& w, double& r, double& g,
+                    double& b, double& line) const
+  {
+    int best = 0;
+    for(int k = 1; k < 3; ++k)
+      if(w[k] > w[best])
+        best = k;
+    const int label = m_labels[t[best]];
+    if(label >= 0)
+      colour_of_label(label, r, g, b);
+    // the border: where the weight of a corner of another label comes close to the largest one
+    float other = -1.f;
+    for(int k = 0; k < 3; ++k)
+      if(m_labels[t[k]] != label)
+        other = (std::max)(other, w[k]);
+    if(other >= 0.f)
+      line = std::clamp(1. - (w[best] - other) / 0.06, 0., 1.);
   }
 
   void downsample()
@@ -499,7 +544,8 @@ private:
 
     draw_polylines(cr);
     draw_markers(cr);
-    draw_colour_bar(cr);
+    if(m_labels.empty())
+      draw_colour_bar(cr);
 
     cairo_destroy(cr);
     cairo_surface_flush(surface);
@@ -713,6 +759,7 @@ private:
   std::vector<unsigned char> m_colour, m_pixels;
   std::vector<Vec3> m_markers;
   std::vector<std::vector<Vec3> > m_polylines;
+  std::vector<int> m_labels;           // per vertex, if the picture colours labels (set_labels())
 };
 
 } // namespace vtp_support
