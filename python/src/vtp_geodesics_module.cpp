@@ -18,6 +18,7 @@
 //   Core_solver(V, F, threads)          the Surface_mesh and the per-mesh preprocessing
 //   distances(...)                      one propagation from vertices and face locations, labels, targets
 //   path(...), distance(...)            a geodesic path / one distance, with early stop at the target
+//   farthest_point_sampling(...)        samples, radii, the field and its labels, the Voronoi cell areas
 //   locate(P)                           nearest surface points (AABB tree, built on first use)
 //   matrix_dense(...), matrix_sparse(...)  rows on all cores (compute_each), Ctrl-C checked every 0.2 s
 //   statistics()                        the last computation's Propagation_statistics as a dict
@@ -32,6 +33,7 @@
 #include <vtp_support/read_mesh.h>
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
+#include <CGAL/VTP_geodesics/geodesic_voronoi_cells.h>
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 
@@ -373,6 +375,62 @@ public:
         td[i] = m_mesh.is_isolated(target_vertices[i]) ? infinity : m_solver->target_distance(k++);
     }
     return py::make_tuple(out, want_labels ? py::object(labels_out) : py::object(py::none()), target_out);
+  }
+
+  // Farthest-point sampling: up to k samples from `first` (-1: the vertex farthest from vertex 0) until the
+  // covering radius is <= radius. Returns (samples (s,), radii (s,), distances (n,), labels (n,) with -1 for
+  // none, cell areas (s,), cell uncertainty (s,)).
+  py::tuple farthest_point_sampling(std::int64_t k, std::int64_t first, double radius, const std::string& method_name,
+                                    double lam, int threads)
+  {
+    const vtp_support::Method_info& method = method_named(method_name);
+    if(method.virtual_sources)
+      value_error("farthest_point_sampling takes method vtp, pvtp, avtp or pavtp, not " + method_name);
+    check_threads(threads);
+    if(k < 0)
+      value_error("k must be >= 0, got " + std::to_string(k));
+    if(!(radius >= 0.))
+      value_error("radius must be >= 0, got " + std::to_string(radius));
+    if(method.approximate && !(lam > 0.))
+      value_error("lam must be > 0, got " + std::to_string(lam));
+    const bool has_first = first >= 0;
+    Vertex_index first_vertex;
+    if(has_first)
+      first_vertex = vertices_of(one_index(first), "first")[0];
+    VTP::Farthest_point_samples<Vertex_index> r;
+    VTP::Voronoi_cell_areas cells;
+    {
+      py::gil_scoped_release release;
+      std::lock_guard<std::mutex> lock(m_mutex);
+      const auto np = VTP::parameters::number_of_threads(threads_or_default(threads))
+                        .lambda(method.approximate ? lam : infinity)
+                        .sampling_radius(radius);
+      with_method_tag(method, [&](auto tag) {
+        typedef decltype(tag) Tag;
+        r = has_first ? m_solver->template farthest_point_sampling<Tag>(static_cast<std::size_t>(k),
+                                                                          np.first_sample(first_vertex))
+                      : m_solver->template farthest_point_sampling<Tag>(static_cast<std::size_t>(k), np);
+      });
+      m_statistics = r.statistics;
+      cells = VTP::geodesic_voronoi_cell_areas(m_mesh, r.samples.size(), r.labels, r.distances);
+    }
+    const std::size_t n = number_of_vertices(), s = r.samples.size();
+    py::array_t<std::int64_t> samples(static_cast<py::ssize_t>(s)), labels(static_cast<py::ssize_t>(n));
+    py::array_t<double> radii(static_cast<py::ssize_t>(s)), distances(static_cast<py::ssize_t>(n)),
+      areas(static_cast<py::ssize_t>(s)), uncertainty(static_cast<py::ssize_t>(s));
+    for(std::size_t i = 0; i < s; ++i)
+    {
+      samples.mutable_data()[i] = static_cast<std::int64_t>(std::size_t(r.samples[i]));
+      radii.mutable_data()[i] = r.radii[i];
+      areas.mutable_data()[i] = cells.areas[i];
+      uncertainty.mutable_data()[i] = cells.uncertainty[i];
+    }
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      distances.mutable_data()[i] = r.distances[i];
+      labels.mutable_data()[i] = r.labels[i] == VTP::no_source ? -1 : static_cast<std::int64_t>(r.labels[i]);
+    }
+    return py::make_tuple(samples, radii, distances, labels, areas, uncertainty);
   }
 
   // The geodesic path to a target (a vertex if target_vertex >= 0, else the face location), from the sources.
@@ -1045,6 +1103,7 @@ PYBIND11_MODULE(_core, m)
     .def("distances", &Core_solver::distances)
     .def("path", &Core_solver::path)
     .def("distance", &Core_solver::distance)
+    .def("farthest_point_sampling", &Core_solver::farthest_point_sampling)
     .def("locate", &Core_solver::locate)
     .def("matrix_dense", &Core_solver::matrix_dense)
     .def("matrix_sparse", &Core_solver::matrix_sparse);

@@ -7,6 +7,7 @@
     d, labels = solver.distances([0, 99], return_labels=True)
     path = solver.path(500, sources=0)                   # (k, 3) points, from the source to vertex 500
     M = solver.matrix(max_distance=0.1)                  # scipy.sparse.csr_matrix, rows on all cores
+    fps = solver.farthest_point_sampling(100)            # samples, radii, distances, labels (Voronoi cells)
 
 Distances are exact (up to double rounding) for the methods "vtp" and "pvtp", lengths of real surface paths
 for "avtp" and "pavtp". Unreachable vertices, and vertices beyond a distance limit, get ``inf``. Every
@@ -15,6 +16,7 @@ problem. The drop-in modules ``vtp_geodesics.gdist`` and ``vtp_geodesics.pygeode
 the packages of the same names.
 """
 
+import collections as _collections
 import math as _math
 import os as _os
 import warnings as _warnings
@@ -23,7 +25,30 @@ import numpy as _np
 
 from . import _core
 
-__all__ = ["Solver", "read_mesh", "methods", "recommended_lambda"]
+__all__ = ["Solver", "FarthestPointSamples", "read_mesh", "methods", "recommended_lambda"]
+
+#: The result of ``Solver.farthest_point_sampling()``.
+FarthestPointSamples = _collections.namedtuple(
+    "FarthestPointSamples", ["samples", "radii", "distances", "labels", "cell_areas", "cell_area_uncertainty"])
+FarthestPointSamples.__doc__ = """The result of ``Solver.farthest_point_sampling()``.
+
+samples : ndarray int64 (s,)
+    The sample vertices, in the order they were taken.
+radii : ndarray float64 (s,)
+    ``radii[i]``: the covering radius once ``samples[:i + 1]`` are taken (the largest distance of a vertex to
+    its nearest sample; ``inf`` while a connected component has no sample). Non-increasing.
+distances : ndarray float64 (n,)
+    The distance of every vertex to its nearest sample.
+labels : ndarray int64 (n,)
+    The index (into ``samples``) of the nearest sample of every vertex: its geodesic Voronoi cell; -1 for a
+    vertex no sample reaches.
+cell_areas : ndarray float64 (s,)
+    The area of the part of the surface nearest to each sample. A face whose corners are in different cells
+    is split where the two distances, extended straight along its edges, are equal.
+cell_area_uncertainty : ndarray float64 (s,)
+    The area of the faces each cell shares with other cells, where its border is estimated: a bound of the
+    error of ``cell_areas``.
+"""
 
 #: The methods of the library (names for ``method=``), from its method table.
 methods = tuple(m["name"] for m in _core.method_table() if m["available"])
@@ -367,6 +392,56 @@ class Solver:
         if bb.size == 0:
             bb = _np.zeros((1, 3))
         return self._core.distance(av, af, ab, bv, bf, bb, _check_method(method), _check_float(lam, "lam"))
+
+    def farthest_point_sampling(self, k, *, first=None, radius=0.0, method="vtp", lam=8.0, threads=0):
+        """Farthest-point sampling with geodesic distances, and the geodesic Voronoi cells of the samples.
+
+        Takes up to ``k`` sample vertices: ``first`` (default: the vertex farthest from vertex 0), then each
+        time the vertex farthest from the samples taken so far (ties: the lowest index), until ``k`` samples or
+        until every vertex is within ``radius`` of a sample. Each sample costs only the region it wins (the
+        propagation starts from the distances already known), so ``k`` samples cost about ``log k`` full
+        computations, not ``k``. The samples, radii, distances and labels are those of a full computation from
+        all the samples so far at every step.
+
+        Parameters
+        ----------
+        k : int
+            The number of samples wanted (fewer once every vertex is a sample).
+        first : int, optional
+            The first sample.
+        radius : float, default 0.0
+            Stop once the covering radius is at most ``radius``.
+        method : str, default "vtp"
+            "vtp" or "pvtp" (exact), "avtp" or "pavtp" (approximate, with ``lam``).
+        lam : float, default 8.0
+            Reset step of the approximate methods.
+        threads : int, default 0
+            Threads of "pvtp" / "pavtp" (0: the solver's ``threads``).
+
+        Returns
+        -------
+        FarthestPointSamples
+            ``(samples, radii, distances, labels, cell_areas, cell_area_uncertainty)``, see its docstring.
+
+        Raises
+        ------
+        ValueError
+            A negative ``k`` or ``radius``, ``first`` out of range, an unknown method (or "vsp" / "pvsp").
+        """
+        if isinstance(k, (bool, _np.bool_)) or not isinstance(k, (int, _np.integer)):
+            raise TypeError("k must be an integer, got %r" % (k,))
+        if first is None:
+            first_index = -1
+        else:
+            if isinstance(first, (bool, _np.bool_)) or not isinstance(first, (int, _np.integer)):
+                raise TypeError("first must be an integer vertex index, got %r" % (first,))
+            if first < 0:
+                raise ValueError("first must be a vertex index >= 0, got %d" % first)
+            first_index = int(first)
+        result = self._core.farthest_point_sampling(int(k), first_index, _check_float(radius, "radius"),
+                                                    _check_method(method), _check_float(lam, "lam"),
+                                                    _check_threads(threads))
+        return FarthestPointSamples(*result)
 
     def locate(self, xyz):
         """The nearest points of the surface to positions ``xyz`` (k, 3): ``(faces int64 (k,), barycentric

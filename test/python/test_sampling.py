@@ -1,0 +1,92 @@
+# Farthest-point sampling from Python: against the invariants (distances = a full computation from the
+# samples, labels = the nearest sample where it is unique, radii non-increasing and the last one the largest
+# distance, areas adding up to the area of the mesh), against the tool (same samples and radii, bit for bit),
+# and bad input.
+
+import math
+import subprocess
+
+import numpy as np
+import pytest
+
+import vtp_geodesics
+from conftest import data_file, plane_grid
+
+
+def mesh_area(V, F):
+    a, b, c = V[F[:, 0]], V[F[:, 1]], V[F[:, 2]]
+    return 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1).sum()
+
+
+@pytest.mark.parametrize("method", ["vtp", "pvtp"])
+def test_invariants(method):
+    V, F = vtp_geodesics.read_mesh(data_file("elephant.off"))
+    solver = vtp_geodesics.Solver(V, F)
+    r = solver.farthest_point_sampling(15, method=method, threads=2)
+    assert isinstance(r, vtp_geodesics.FarthestPointSamples)
+    assert r.samples.dtype == np.int64 and r.samples.shape == (15,)
+    assert len(set(r.samples.tolist())) == 15
+    assert r.radii.shape == (15,) and np.all(np.diff(r.radii) <= 0)
+    # the first sample is the vertex farthest from vertex 0
+    d0 = solver.distances(0)
+    assert r.samples[0] == int(np.argmax(d0))
+    # the field is that of a full computation from the samples
+    d = solver.distances(r.samples, method=method)
+    assert np.max(np.abs(d - r.distances)) <= 1e-12 * d.max()
+    assert r.radii[-1] == pytest.approx(d.max(), rel=1e-12)
+    assert np.all(r.distances[r.samples] == 0) and np.array_equal(r.labels[r.samples], np.arange(15))
+    # the labels are the nearest sample where it is unique by more than rounding
+    single = np.stack([solver.distances(int(s)) for s in r.samples])
+    order = np.sort(single, axis=0)
+    unique = order[1] - order[0] > 1e-9 * d.max()
+    assert np.array_equal(r.labels[unique], np.argmin(single, axis=0)[unique])
+    # the cells add up to the mesh
+    assert r.cell_areas.shape == (15,) and np.all(r.cell_areas > 0)
+    assert r.cell_areas.sum() == pytest.approx(mesh_area(V, F), rel=1e-9)
+    assert np.all(r.cell_area_uncertainty > 0)
+
+
+def test_radius_first_and_plane():
+    V, F = plane_grid(30, 30)
+    solver = vtp_geodesics.Solver(V, F)
+    full = solver.farthest_point_sampling(10, first=5)
+    assert full.samples[0] == 5
+    r = 0.5 * (full.radii[3] + full.radii[4])
+    stopped = solver.farthest_point_sampling(1000, first=5, radius=r)
+    assert np.array_equal(stopped.samples, full.samples[:5]) and stopped.radii[-1] <= r
+    # on a plane the distances are Euclidean: the covering radius is the largest distance to the nearest sample
+    P = V[full.samples]
+    euclid = np.min(np.linalg.norm(V[:, None, :] - P[None, :, :], axis=2), axis=1)
+    assert np.max(np.abs(euclid - full.distances)) <= 1e-12
+    assert full.radii[-1] == pytest.approx(euclid.max(), rel=1e-12)
+    assert solver.farthest_point_sampling(0).samples.size == 0
+
+
+def test_equals_tool(tool, tmp_path):
+    samples_file = tmp_path / "s.txt"
+    subprocess.run([tool, data_file("elephant.off"), "--farthest-points", "20", "--first", "7",
+                    "--samples-output", str(samples_file)], check=True, capture_output=True)
+    lines = [l.split() for l in open(samples_file) if not l.startswith("#")]
+    V, F = vtp_geodesics.read_mesh(data_file("elephant.off"))
+    r = vtp_geodesics.Solver(V, F).farthest_point_sampling(20, first=7)
+    assert r.samples.tolist() == [int(l[0]) for l in lines]
+    assert r.radii.tolist() == [float(l[1]) for l in lines]
+
+
+def test_bad_input():
+    V, F = plane_grid(5, 5)
+    solver = vtp_geodesics.Solver(V, F)
+    with pytest.raises(ValueError):
+        solver.farthest_point_sampling(-1)
+    with pytest.raises(ValueError):
+        solver.farthest_point_sampling(3, first=1000)
+    with pytest.raises(ValueError):
+        solver.farthest_point_sampling(3, first=-2)
+    with pytest.raises(ValueError):
+        solver.farthest_point_sampling(3, radius=-1.0)
+    with pytest.raises(ValueError):
+        solver.farthest_point_sampling(3, radius=math.nan)
+    with pytest.raises(ValueError):
+        solver.farthest_point_sampling(3, method="vsp")
+    with pytest.raises(TypeError):
+        solver.farthest_point_sampling(2.5)
