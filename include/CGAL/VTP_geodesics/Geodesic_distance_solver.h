@@ -43,6 +43,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstddef>
@@ -204,7 +205,7 @@ public:
                const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np = parameters::default_values())
   {
     run<ConcurrencyTag>(m_sources, np);
-    write_outputs(vdm, np);
+    internal::write_output_maps(m_mesh.vertices, m_engine, vdm, np, m_statistics);
   }
 
   /// computes the geodesic distance from `sources` to every vertex of the mesh and writes it into `vdm`, as
@@ -225,7 +226,7 @@ public:
           const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np = parameters::default_values())
   {
     run<ConcurrencyTag>(m_mesh.seeds_of(sources), np);
-    write_outputs(vdm, np);
+    internal::write_output_maps(m_mesh.vertices, m_engine, vdm, np, m_statistics);
   }
 #endif
   /// @}
@@ -260,22 +261,8 @@ public:
   void compute_each(const SourceRange& sources, RowSink sink,
                     const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np = parameters::default_values())
   {
-    const bool parallel = internal::is_parallel<ConcurrencyTag>();
-    typedef typename std::iterator_traits<decltype(std::begin(sources))>::value_type Source;
-    const std::vector<Source> items(std::begin(sources), std::end(sources));
-    std::vector<internal::Seed> seeds;
-    seeds.reserve(items.size());
-    for(const Source& item : items)
-      seeds.push_back(m_mesh.seed_of(item, static_cast<Index>(seeds.size())));  // validated here, serially
-    if(!CGAL::parameters::is_default_parameter<CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>,
-                                               internal_np::initial_distances_t>::value)
-      throw Invalid_input_error("compute_each() takes no initial_distances");
-    int threads = 0;
-    internal::Propagation_settings settings = settings_of(np, threads);
-    settings.want_labels = false;
-    settings.record_paths = false;
-    settings.stop_at_targets = false;
-    internal::compute_rows(m_mesh.arrays, items, seeds, sink, settings, parallel, threads, m_workspaces, m_statistics);
+    internal::compute_each_row(m_mesh, sources, sink, np, internal::is_parallel<ConcurrencyTag>(), m_workspaces,
+                               m_statistics);
   }
   /// @}
 
@@ -292,9 +279,7 @@ public:
   farthest_point_sampling(std::size_t k, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np
                                          = parameters::default_values()) const
   {
-    int threads = 0;
-    const internal::Propagation_settings settings = settings_of(np, threads);
-    return internal::farthest_point_samples_of<ConcurrencyTag>(m_mesh, k, np, settings, threads);
+    return internal::farthest_point_samples_of<ConcurrencyTag>(m_mesh, k, np);
   }
   /// @}
 
@@ -381,9 +366,8 @@ public:
   /// number of saddle or boundary vertices (pseudo-source candidates).
   std::size_t number_of_pseudo_source_vertices() const
   {
-    std::size_t n = 0;
-    for(unsigned char c : m_mesh.arrays.is_pseudo_source) n += c;
-    return n;
+    return static_cast<std::size_t>(std::count(m_mesh.arrays.is_pseudo_source.begin(),
+                                               m_mesh.arrays.is_pseudo_source.end(), 1));
   }
   /// seconds spent in the constructor.
   double preprocessing_seconds() const { return m_preprocessing_seconds; }
@@ -402,31 +386,19 @@ private:
     m_preprocessing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
 
-  template <class NamedParameters>
-  internal::Propagation_settings settings_of(const NamedParameters& np, int& threads) const
-  {
-    return internal::settings_from_parameters(np, m_mesh.arrays.mean_edge_length, m_mesh.length_scale, threads);
-  }
-
   template <class ConcurrencyTag, class NamedParameters>
   void run(std::vector<internal::Seed> seeds, const NamedParameters& np)
   {
     if(seeds.empty())
       throw Invalid_input_error("no source");
     int threads = 0;
-    internal::Propagation_settings settings = settings_of(np, threads);
+    internal::Propagation_settings settings = internal::settings_from_parameters(np, m_mesh, threads);
     const internal::Known_field known = internal::known_field_of(np, m_mesh.vertices, m_mesh.length_scale, settings, seeds);
     std::vector<internal::Target> targets = m_mesh.targets_of(CGAL::parameters::get_parameter(np, internal_np::targets));
     m_engine.template run<ConcurrencyTag>(m_mesh.arrays, seeds, std::move(targets), settings, threads, m_statistics,
                                           &known.distances, &known.labels);
     m_paths.remember(settings, internal::is_parallel<ConcurrencyTag>(), threads);
     m_statistics.sources = seeds.size();
-  }
-
-  template <class VertexDistanceMap, class NamedParameters>
-  void write_outputs(VertexDistanceMap vdm, const NamedParameters& np)
-  {
-    internal::write_output_maps(m_mesh.vertices, m_engine, vdm, np, m_statistics);
   }
 
   Vertex_point_map m_vpm;

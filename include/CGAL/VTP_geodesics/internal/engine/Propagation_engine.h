@@ -43,8 +43,10 @@ namespace internal {
 // | Parallel_tag: buckets, K lists, T th.| PVTP                | PAVTP                |
 //
 // (A front of another kind, one virtual source per vertex, is a third row: its own loop,
-// Virtual_source_front.h. A start from known distances is another seeding: the state starts from the
-// known field and wakes the known vertices that new windows reach, Propagation_state.h.)
+// Virtual_source_front.h, on its own per-vertex field, Virtual_source_field.h. A start from known distances
+// is another seeding: the state starts from the known field and wakes the known vertices that new windows
+// reach, Propagation_state.h; farthest-point sampling, above the engine, adds one sample at a time that way,
+// sampling/Farthest_point_sampler.h.)
 //
 // Where each concept lives (internal/ and internal/engine/):
 //   the window and its geometry (evaluation, ray crossing, bounds)  Window.h
@@ -62,6 +64,8 @@ namespace internal {
 //   stop rule (distance limit, targets), a hook                     engine/Stop_rule.h
 //   path recording (offers per vertex and target), a hook           engine/Path_record.h
 //   path trace-back                                                 engine/Path_trace.h
+//   virtual sources: per-vertex field, seeding, wedge geometry      engine/Virtual_source_field.h
+//   virtual sources: the propagation (heap, walks around a vertex)  engine/Virtual_source_front.h
 //   threads: thread count, parallel_for (preprocessing, rows)       parallel/Parallel_for.h
 //   threads of the parallel loop                  parallel/Round_team.h, parallel/Stealing_ranges.h
 //

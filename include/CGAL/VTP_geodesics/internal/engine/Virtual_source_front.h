@@ -16,11 +16,8 @@
 
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
-#include <CGAL/VTP_geodesics/internal/engine/Path_record.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
-#include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
-#include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
-#include <CGAL/VTP_geodesics/internal/engine/Targets.h>
+#include <CGAL/VTP_geodesics/internal/engine/Virtual_source_field.h>
 
 #include <CGAL/assertions.h>
 
@@ -60,22 +57,11 @@ namespace internal {
 //
 // Upper bound: every offer is the length of a path on the surface (a straight segment in an unfolding whose
 // faces it crosses, after a path to the root realised by induction), hence never below the geodesic distance.
-class Virtual_source_front
+//
+// The per-vertex data, the seeding and the end of a run are in Virtual_source_field.h.
+class Virtual_source_front : public Virtual_source_field
 {
 public:
-  struct Vertex_source
-  {
-    double sx, sy;  // image of the root in the frame of h
-    double lx, ly;  // counter-clockwise bound of the wedge (a direction from s)
-    double rx, ry;  // clockwise bound of the wedge
-    Index h;        // half-edge whose source is the vertex: the frame
-    Index root;     // a vertex, or nv + i for source point i
-  };
-
-  std::vector<double> dist;
-  std::vector<Index> label;
-  Path_record record;
-
   // With settings.known_distances, `initial` (and `initial_labels`) give the starting field (see
   // Propagation_state): a known vertex is not taken unless the new sources lower it.
   void run(const Mesh_arrays& m, const std::vector<Seed>& seeds, std::vector<Target>&& targets,
@@ -133,140 +119,7 @@ public:
                            + m_peak_heap * sizeof(Heap_entry);
   }
 
-  // The distance of target t, in the unit of the output (+infinity if not reached or beyond the limit).
-  double target_distance(std::size_t t) const
-  {
-    const Target& target = m_targets[t];
-    if(target.vertex != NO_INDEX)
-      return dist[static_cast<std::size_t>(target.vertex)];
-    const double d = m_target_value[t];
-    return d <= m_settings.limit ? d * m_settings.unit : std::numeric_limits<double>::infinity();
-  }
-  const std::vector<Target>& targets() const { return m_targets; }
-
 private:
-  typedef std::pair<double, Index> Heap_entry;
-
-  static double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
-
-  // whether the point (px, py) lies in the closed wedge of a vertex source
-  static bool in_wedge(const Vertex_source& s, double px, double py)
-  {
-    const double dx = px - s.sx, dy = py - s.sy;
-    return cross(s.rx, s.ry, dx, dy) >= 0. && cross(dx, dy, s.lx, s.ly) >= 0.;
-  }
-
-  double root_distance(Index root) const
-  {
-    return root < m_mesh->nv ? dist[static_cast<std::size_t>(root)] : 0.;
-  }
-
-  void push(Index v, double d)
-  {
-    m_heap.emplace_back(d, v);
-    std::push_heap(m_heap.begin(), m_heap.end(), std::greater<Heap_entry>());
-    m_peak_heap = (std::max)(m_peak_heap, m_heap.size());
-  }
-
-  // Lowers the distance of v (not taken) to d with source s, if smaller.
-  void offer(Index v, double d, const Vertex_source& s, Index lab)
-  {
-    const std::size_t i = static_cast<std::size_t>(v);
-    if(m_taken[i] || !(d < dist[i]))
-      return;
-    dist[i] = d;
-    m_src[i] = s;
-    if(!label.empty())
-      label[i] = lab;
-    push(v, d);
-  }
-
-  // ------------------------------------------------------------------------------------------
-  // seeding
-  // ------------------------------------------------------------------------------------------
-  void seed(const std::vector<Seed>& seeds)
-  {
-    const Mesh_arrays& m = *m_mesh;
-    for(std::size_t i = 0; i < seeds.size(); ++i)
-    {
-      const Seed& sd = seeds[i];
-      const Index origin = m.nv + static_cast<Index>(i);
-      if(sd.kind == Seed::AT_VERTEX)
-      {
-        const std::size_t v = static_cast<std::size_t>(sd.element);
-        if(!(0. < dist[v]))
-          continue;
-        dist[v] = 0.;
-        Vertex_source s;
-        s.sx = s.sy = s.lx = s.ly = s.rx = s.ry = 0.;
-        s.h = m.corner_begin[sd.element] < m.corner_begin[sd.element + 1] ? m.corners[m.corner_begin[sd.element]] : NO_INDEX;
-        s.root = sd.element;
-        m_src[v] = s;
-        if(!label.empty())
-          label[v] = sd.label;
-        push(sd.element, 0.);
-      }
-      else if(sd.kind == Seed::IN_FACE)
-        seed_point_in_face(3 * sd.element, sd.x, sd.y, origin, sd.label);
-      else
-      {
-        seed_point_in_face(sd.element, sd.x, 0., origin, sd.label);
-        const Index o = m.opposite[sd.element];
-        if(o != NO_INDEX)
-          seed_point_in_face(o, m.geometry[o].length - sd.x, 0., origin, sd.label);
-      }
-    }
-  }
-
-  // the point (px, py) in the frame of h reaches the three vertices of the face of h straight
-  void seed_point_in_face(Index h, double px, double py, Index origin, Index lab)
-  {
-    const Mesh_arrays& m = *m_mesh;
-    for(int k = 0; k < 3; ++k)
-    {
-      const double d = std::sqrt(px * px + py * py);
-      if(d > 0.)
-      {
-        Vertex_source s;
-        s.sx = px; s.sy = py;
-        // the half-plane of directions towards the vertex (any wedge will do: the whole face is seen)
-        const double dx = -px, dy = -py;
-        s.lx = -dy; s.ly = dx;
-        s.rx = dy; s.ry = -dx;
-        s.h = h;
-        s.root = origin;
-        offer(m.source[h], d, s, lab);
-      }
-      // the point in the frame of next(h)
-      const Halfedge_geometry g = m.geometry[h];
-      const double ln = g.l_next;
-      if(!(ln > 0.))
-        break;
-      const double ux = (g.cx - g.length) / ln, uy = g.cy / ln;
-      const double x = px - g.length, y = py;
-      px = x * ux + y * uy;
-      py = -x * uy + y * ux;
-      h = Mesh_arrays::next(h);
-    }
-    // the targets in the same face
-    if(!m_targets.empty())
-    {
-      const Index f = Mesh_arrays::face(h);
-      for(std::size_t t = 0; t < m_targets.size(); ++t)
-        if(m_targets[t].vertex == NO_INDEX && m_targets[t].face == f)
-        {
-          const int k = static_cast<int>(h % 3);
-          const double dx = m_targets[t].x[k] - px, dy = m_targets[t].y[k] - py;
-          const double d = std::sqrt(dx * dx + dy * dy);
-          if(d < m_target_value[t])
-          {
-            m_target_value[t] = d;
-            m_target_offer[t] = straight_offer(d, origin);
-          }
-        }
-    }
-  }
-
   // ------------------------------------------------------------------------------------------
   // propagation
   // ------------------------------------------------------------------------------------------
@@ -377,32 +230,6 @@ private:
     offer(v, d, s, lab);
   }
 
-  // Cuts the wedge of s to the directions through the segment from the origin to P; t0 is the end at the
-  // origin. Returns false if empty.
-  static bool clip(const Vertex_source& s, double Px, double Py, double& t0, double& t1)
-  {
-    t0 = 0.;
-    t1 = 1.;
-    // cross(R, tP - s) >= 0 and cross(tP - s, L) >= 0
-    const double a1 = cross(s.rx, s.ry, Px, Py), b1 = cross(s.rx, s.ry, s.sx, s.sy);
-    const double a2 = cross(Px, Py, s.lx, s.ly), b2 = cross(s.sx, s.sy, s.lx, s.ly);
-    if(!bound(a1, b1, t0, t1) || !bound(a2, b2, t0, t1))
-      return false;
-    return t0 <= t1;
-  }
-
-  // a t - b >= 0
-  static bool bound(double a, double b, double& t0, double& t1)
-  {
-    if(a > 0.)
-      t0 = (std::max)(t0, b / a);
-    else if(a < 0.)
-      t1 = (std::min)(t1, b / a);
-    else if(b > 0.)
-      return false;
-    return true;
-  }
-
   // The walk through the faces after the face of s.h, counter-clockwise around u.
   void walk_counterclockwise(Index u, Vertex_source s, double sigma, Index lab)
   {
@@ -489,13 +316,6 @@ private:
     }
   }
 
-  static void rotate(double co, double si, double& x, double& y)
-  {
-    const double nx = x * co - y * si, ny = x * si + y * co;
-    x = nx;
-    y = ny;
-  }
-
   // s is in the frame of s.h (geometry g); the vertex y = source(hy) is the third vertex (cx, cy) when hy is
   // prev(s.h), or the target (length, 0) when hy is next(s.h). Offers y its distance through s.
   void reach_third_vertex(const Vertex_source& s, const Halfedge_geometry& g, Index hy, double sigma, Index lab)
@@ -535,120 +355,6 @@ private:
     t.root = s.root;
     offer(y, d, t, lab);
   }
-
-  // ------------------------------------------------------------------------------------------
-  // end of the run: targets in faces, cutoff
-  // ------------------------------------------------------------------------------------------
-  void finish()
-  {
-    const Mesh_arrays& m = *m_mesh;
-    const double inf = std::numeric_limits<double>::infinity();
-    // vertices not taken are not final (a stop) or beyond the limit; but those of a known field (never
-    // lowered: a run from known distances goes to its end) keep their distance
-    for(std::size_t v = 0; v < dist.size(); ++v)
-      if((!m_taken[v] && !m_settings.known_distances) || dist[v] > m_settings.limit)
-      {
-        dist[v] = inf;
-        m_taken[v] = 0;
-        if(!label.empty())
-          label[v] = NO_INDEX;
-      }
-    for(std::size_t t = 0; t < m_targets.size(); ++t)
-    {
-      const Target& target = m_targets[t];
-      if(target.vertex != NO_INDEX)
-      {
-        const Index v = target.vertex;
-        if(dist[static_cast<std::size_t>(v)] < inf)
-          m_target_offer[t] = offer_of(v);
-        continue;
-      }
-      for(int k = 0; k < 3; ++k)
-      {
-        const Index h = 3 * target.face + k;
-        const Index a = m.source[h];
-        if(!m_taken[static_cast<std::size_t>(a)])
-          continue;
-        const double da = dist[static_cast<std::size_t>(a)];
-        const double d = da + target.corner_distance[k];
-        if(d < m_target_value[t])
-        {
-          m_target_value[t] = d;
-          m_target_offer[t] = straight_offer(d, a);
-        }
-        const Vertex_source& s = m_src[static_cast<std::size_t>(a)];
-        if(s.h != h || s.root == a)
-          continue;
-        if(!in_wedge(s, target.x[k], target.y[k]))
-          continue;
-        const double dx = target.x[k] - s.sx, dy = target.y[k] - s.sy;
-        const double ds = root_distance(s.root) + std::sqrt(dx * dx + dy * dy);
-        if(ds < m_target_value[t])
-        {
-          m_target_value[t] = ds;
-          m_target_offer[t] = image_offer(ds, s);
-        }
-      }
-    }
-  }
-
-  // whether the root of s (a vertex or a source point) lies on the face of s.h
-  bool root_in_face(const Vertex_source& s) const
-  {
-    const Mesh_arrays& m = *m_mesh;
-    const Index f = Mesh_arrays::face(s.h);
-    if(s.root < m.nv)
-      return m.source[3 * f] == s.root || m.source[3 * f + 1] == s.root || m.source[3 * f + 2] == s.root;
-    const Seed& sd = (*m_seeds)[static_cast<std::size_t>(s.root - m.nv)];
-    if(sd.kind == Seed::IN_FACE)
-      return sd.element == f;
-    if(sd.kind == Seed::ON_EDGE)
-      return Mesh_arrays::face(sd.element) == f
-             || (m.opposite[sd.element] != NO_INDEX && Mesh_arrays::face(m.opposite[sd.element]) == f);
-    return false;
-  }
-
-  // the offer of the straight line from the image of s, given in the frame of the edge opposite the vertex
-  Offer image_offer(double d, const Vertex_source& s) const
-  {
-    if(root_in_face(s))
-      return straight_offer(d, s.root);
-    const Halfedge_geometry g = m_mesh->geometry[s.h];
-    const Index e = Mesh_arrays::next(s.h);
-    Offer o;
-    o.distance = d;
-    o.origin = s.root;
-    o.halfedge = e;
-    if(!(g.l_next > 0.))
-      return straight_offer(d, s.root);
-    const double ux = (g.cx - g.length) / g.l_next, uy = g.cy / g.l_next;
-    const double x = s.sx - g.length, y = s.sy;
-    o.sx = x * ux + y * uy;
-    o.sy = -x * uy + y * ux;
-    return o;
-  }
-
-  // the trace-back record of vertex v
-  Offer offer_of(Index v) const
-  {
-    const Vertex_source& s = m_src[static_cast<std::size_t>(v)];
-    if(s.root == v)
-      return Offer();  // a source vertex
-    return image_offer(dist[static_cast<std::size_t>(v)], s);
-  }
-
-  const Mesh_arrays* m_mesh = nullptr;
-  const std::vector<Seed>* m_seeds = nullptr;
-  Propagation_settings m_settings;
-  std::vector<Vertex_source> m_src;
-  std::vector<unsigned char> m_taken;
-  std::vector<Heap_entry> m_heap;
-  std::vector<Target> m_targets;
-  std::vector<double> m_target_value;
-  std::vector<Offer> m_target_offer;
-  std::size_t m_taken_count = 0;
-  std::size_t m_peak_heap = 0;
-  bool m_stopped = false;
 };
 
 } // namespace internal

@@ -20,6 +20,7 @@
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
+#include <CGAL/VTP_geodesics/internal/solver/Settings_from_parameters.h>
 #include <CGAL/VTP_geodesics/internal/solver/Statistics_merge.h>
 
 #include <CGAL/assertions.h>
@@ -213,12 +214,13 @@ Index first_sample_index(const MeshIndex& mesh, typename MeshIndex::vertex_descr
 }
 
 // The farthest-point sampling of the solver's mesh (Mesh_index `mesh`) with the named parameters `np`
-// (first_sample, sampling_radius, and those of a computation), `settings` read from them.
+// (first_sample, sampling_radius, and those of a computation).
 template <class ConcurrencyTag, class MeshIndex, class NamedParameters>
 Farthest_point_samples<typename MeshIndex::vertex_descriptor>
-farthest_point_samples_of(const MeshIndex& mesh, std::size_t k, const NamedParameters& np,
-                          const Propagation_settings& settings, int threads)
+farthest_point_samples_of(const MeshIndex& mesh, std::size_t k, const NamedParameters& np)
 {
+  int threads = 0;
+  const Propagation_settings settings = settings_from_parameters(np, mesh, threads);
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;

@@ -13,9 +13,12 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
+#include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
+#include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
+#include <CGAL/VTP_geodesics/internal/solver/Settings_from_parameters.h>
 #include <CGAL/VTP_geodesics/internal/solver/Statistics_merge.h>
 
 #include <CGAL/tags.h>
@@ -23,6 +26,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -84,6 +88,30 @@ void compute_rows(const Mesh_arrays& arrays, const std::vector<Item>& items, con
     add_row_statistics(st, statistics);
   statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   loop.rethrow();
+}
+
+// Geodesic_distance_solver::compute_each() on the solver's mesh (Mesh_index `mesh`): the sources validated
+// (serially, before any row), the settings of `np` (no labels, paths nor targets; no initial distances), then
+// the rows.
+template <class MeshIndex, class SourceRange, class RowSink, class NamedParameters>
+void compute_each_row(const MeshIndex& mesh, const SourceRange& sources, RowSink& sink, const NamedParameters& np,
+                      bool parallel, std::vector<std::unique_ptr<Propagation_engine> >& workspaces,
+                      Propagation_statistics& statistics)
+{
+  typedef typename std::iterator_traits<decltype(std::begin(sources))>::value_type Source;
+  const std::vector<Source> items(std::begin(sources), std::end(sources));
+  std::vector<Seed> seeds;
+  seeds.reserve(items.size());
+  for(const Source& item : items)
+    seeds.push_back(mesh.seed_of(item, static_cast<Index>(seeds.size())));
+  if(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::initial_distances_t>::value)
+    throw Invalid_input_error("compute_each() takes no initial_distances");
+  int threads = 0;
+  Propagation_settings settings = settings_from_parameters(np, mesh, threads);
+  settings.want_labels = false;
+  settings.record_paths = false;
+  settings.stop_at_targets = false;
+  compute_rows(mesh.arrays, items, seeds, sink, settings, parallel, threads, workspaces, statistics);
 }
 
 } // namespace internal

@@ -81,6 +81,13 @@ Propagation_settings settings_from_parameters(const NamedParameters& np, double 
   return settings;
 }
 
+// The same for the mesh of a solver (its Mesh_index: the engine's arrays and unit).
+template <class NamedParameters, class MeshIndex>
+Propagation_settings settings_from_parameters(const NamedParameters& np, const MeshIndex& mesh, int& threads)
+{
+  return settings_from_parameters(np, mesh.arrays.mean_edge_length, mesh.length_scale, threads);
+}
+
 } // namespace internal
 } // namespace VTP_geodesics
 } // namespace CGAL
