@@ -84,6 +84,21 @@ std::vector<std::array<double, 3> > to_arrays(const std::vector<vtp_support::Poi
   return r;
 }
 
+// The statistics of the library's run into the result.
+void copy_statistics(const VTP::Propagation_statistics& st, Run_result& r)
+{
+  r.threads = st.threads;
+  r.propagation_seconds = st.seconds;
+  r.windows_created = st.windows_created;
+  r.windows_propagated = st.windows_propagated;
+  r.peak_live_windows = st.peak_live_windows;
+  r.peak_window_bytes = st.peak_window_bytes;
+  r.vertices_processed = st.vertices_processed;
+  r.pseudo_sources = st.pseudo_sources;
+  r.resets = st.resets;
+  r.stopped_early = st.stopped_early;
+}
+
 // Farthest-point sampling with `method` (VTP, PVTP, AVTP or PAVTP), then the areas of the Voronoi cells.
 void run_sampling(const vtp_support::Method_info& method, Solver& solver, const vtp_support::Mesh& mesh,
                   const Run_request& request, double lambda, Run_result& r)
@@ -115,16 +130,7 @@ void run_sampling(const vtp_support::Method_info& method, Solver& solver, const 
   r.labels.resize(r.mesh_vertices);
   for(std::size_t i = 0; i < r.mesh_vertices; ++i)
     r.labels[i] = fps.labels[i] == VTP::no_source ? -1 : static_cast<int>(fps.labels[i]);
-  const VTP::Propagation_statistics& st = fps.statistics;
-  r.threads = st.threads;
-  r.propagation_seconds = st.seconds;
-  r.windows_created = st.windows_created;
-  r.windows_propagated = st.windows_propagated;
-  r.peak_live_windows = st.peak_live_windows;
-  r.peak_window_bytes = st.peak_window_bytes;
-  r.vertices_processed = st.vertices_processed;
-  r.pseudo_sources = st.pseudo_sources;
-  r.resets = st.resets;
+  copy_statistics(fps.statistics, r);
 }
 
 } // namespace
@@ -214,17 +220,7 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
                                                                               get(boost::vertex_index, mesh))));
     else
       run_method(method, solver, options);
-    const VTP::Propagation_statistics& st = solver.statistics();
-    r.threads = st.threads;
-    r.propagation_seconds = st.seconds;
-    r.windows_created = st.windows_created;
-    r.windows_propagated = st.windows_propagated;
-    r.peak_live_windows = st.peak_live_windows;
-    r.peak_window_bytes = st.peak_window_bytes;
-    r.vertices_processed = st.vertices_processed;
-    r.pseudo_sources = st.pseudo_sources;
-    r.resets = st.resets;
-    r.stopped_early = st.stopped_early;
+    copy_statistics(solver.statistics(), r);
     r.distances = solver.distances();
     for(std::size_t i = 0; i < request.target_locations.size(); ++i)
       r.target_location_distances.push_back(solver.target_distance(first_target_location + i));

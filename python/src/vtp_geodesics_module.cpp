@@ -31,16 +31,13 @@
 
 #include <vtp_support/methods.h>
 #include <vtp_support/read_mesh.h>
+#include <vtp_support/surface_locator.h>
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
 #include <CGAL/VTP_geodesics/geodesic_voronoi_cells.h>
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/property_map.h>
 #include <CGAL/tags.h>
 
@@ -70,7 +67,6 @@
 
 namespace py = pybind11;
 namespace VTP = CGAL::VTP_geodesics;
-namespace PMP = CGAL::Polygon_mesh_processing;
 
 namespace {
 
@@ -567,31 +563,17 @@ public:
     {
       py::gil_scoped_release release;
       std::lock_guard<std::mutex> lock(m_mutex);
-      if(!m_tree)
-      {
-        m_tree.reset(new Tree());
-        PMP::build_AABB_tree(m_mesh, *m_tree);
-      }
+      if(!m_locator)
+        m_locator.reset(new vtp_support::Surface_locator(m_mesh));
       for(std::size_t i = 0; i < k && error.empty(); ++i)
       {
-        const Point_3 q(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
-        const PMP::Face_location<Mesh, double> l = PMP::locate_with_AABB_tree(q, *m_tree, m_mesh);
-        std::array<double, 3> b = l.second;
-        double sum = 0.;
-        bool finite = true;
-        for(double& x : b)
-        {
-          finite = finite && std::isfinite(x);
-          sum += (std::max)(0., x);
-        }
-        if(l.first == Mesh::null_face() || !finite || !(sum > 0.5 && sum < 1.5))
+        Face_location l;
+        if(!m_locator->locate(Point_3(p[3 * i], p[3 * i + 1], p[3 * i + 2]), l))
         {
           error = "cannot locate point " + std::to_string(i) + " on the surface (its nearest face is degenerate)";
           break;
         }
-        for(double& x : b)
-          x = (std::max)(0., x) / sum;
-        const std::array<double, 3> u = to_user_barycentric(Face_location(l.first, b));
+        const std::array<double, 3> u = to_user_barycentric(l);
         fo[i] = static_cast<std::int64_t>(static_cast<std::size_t>(l.first));
         for(int j = 0; j < 3; ++j)
           bo[3 * i + std::size_t(j)] = u[std::size_t(j)];
@@ -702,9 +684,6 @@ public:
   }
 
 private:
-  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<vtp_support::Kernel, Primitive> > Tree;
-
   // Checks V and F and builds the mesh; returns the problem, or an empty string.
   std::string build_mesh(const double* v, std::size_t n, const std::int64_t* f, std::size_t m)
   {
@@ -924,7 +903,7 @@ private:
   // F as given, for barycentric coordinates; empty when each face's halfedge starts at its first corner in F
   std::vector<vtp_support::fast_off_detail::Triangle> m_triangles;
   std::unique_ptr<Solver> m_solver;
-  std::unique_ptr<Tree> m_tree;                                   // of locate(), built on first use
+  std::unique_ptr<vtp_support::Surface_locator> m_locator;        // of locate(), built on first use
   VTP::Propagation_statistics m_statistics;                       // of the last computation
   int m_threads = 0;
   double m_build_seconds = 0.;                                    // checking V, F and building the mesh

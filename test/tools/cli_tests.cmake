@@ -190,6 +190,19 @@ vtp_cli_test(output_dangling_symlink 0 "${cli_dir}/dangling.txt" "" SETUP dangli
 vtp_cli_test(output_existing_file 0 "${cli_dir}/existing.txt" "" SETUP existing CHECK mode640
              --output "${cli_dir}/existing.txt")
 
+# vtp_cli_bad_sets(<first> <sets>): one failing test per set "name|arg|arg|...", each with --output and --stats-json
+# files numbered from <first> that must not be created.
+function(vtp_cli_bad_sets first sets)
+  set(k ${first})
+  foreach(set IN LISTS sets)
+    string(REPLACE "|" ";" items "${set}")
+    list(POP_FRONT items name)
+    vtp_cli_test(${name} 2 "${bad_output}.${k}" "${bad_json}.${k}"
+                 ${items} --output "${bad_output}.${k}" --stats-json "${bad_json}.${k}")
+    math(EXPR k "${k} + 1")
+  endforeach()
+endfunction()
+
 # vtp_cli_check(<name> AFTER <tests...> ARGS <arguments of vtp_geodesics_cli_check...>): checks the content of
 # files written by the tests AFTER (run first, as the setup of a ctest fixture).
 function(vtp_cli_check name)
@@ -347,14 +360,7 @@ set(fps_bad_sets
   "radius_without_fps|--radius|0.5"
   "samples_output_without_fps|--samples-output|${bad_output}.fps.s"
   "picture_colour_unknown|--picture-colour|heights|--picture|${bad_output}.fps.png")
-set(k 100)
-foreach(set IN LISTS fps_bad_sets)
-  string(REPLACE "|" ";" items "${set}")
-  list(POP_FRONT items name)
-  vtp_cli_test(${name} 2 "${bad_output}.${k}" "${bad_json}.${k}"
-               ${items} --output "${bad_output}.${k}" --stats-json "${bad_json}.${k}")
-  math(EXPR k "${k} + 1")
-endforeach()
+vtp_cli_bad_sets(100 "${fps_bad_sets}")
 
 # Bad lists, points and limits; paths that do not exist: one error line, exit code 2, no file written.
 set(bad_sets
@@ -378,14 +384,7 @@ set(bad_sets
   "target_output_without_targets|--target-output|${bad_output}.t"
   "path_output_without_paths|--path-output|${bad_output}.p"
   "paths_without_output|--path-to|5")
-set(k 30)
-foreach(set IN LISTS bad_sets)
-  string(REPLACE "|" ";" items "${set}")
-  list(POP_FRONT items name)
-  vtp_cli_test(${name} 2 "${bad_output}.${k}" "${bad_json}.${k}"
-               ${items} --output "${bad_output}.${k}" --stats-json "${bad_json}.${k}")
-  math(EXPR k "${k} + 1")
-endforeach()
+vtp_cli_bad_sets(30 "${bad_sets}")
 vtp_cli_test(labels_same_file_as_output 2 "${bad_output}.24" "" ERROR "must name different files"
              --labels "${bad_output}.24" --output "${bad_output}.24")
 #   nonmanifold_vertex.off from vertex 1: the other tetrahedron (vertices 4, 5, 6) is unreachable, vertex 7 is in no

@@ -108,20 +108,8 @@ OutputIterator farthest_point_sampling(const TriangleMesh& tm,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
 
-  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  typedef typename boost::property_traits<VPM>::value_type Point;
-  typedef typename Kernel_traits<Point>::Kernel Kernel;
-  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters,
-                                                             Geodesic_traits_3<Kernel> >::type GT;
-  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                             get_const_property_map(CGAL::vertex_point, tm));
-  GT gt = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
-  const int threads = internal::is_parallel<ConcurrencyTag>()
-                        ? choose_parameter(get_parameter(np, internal_np::number_of_threads),
-                                           internal::default_number_of_threads)
-                        : 1;
-  Geodesic_distance_solver<TriangleMesh, GT, VPM> solver(
-    tm, parameters::vertex_point_map(vpm).geom_traits(gt).number_of_threads(threads));
+  typename internal::Solver_for<TriangleMesh, NamedParameters>::type solver =
+    internal::solver_for<ConcurrencyTag>(tm, np);
   const auto r = solver.template farthest_point_sampling<ConcurrencyTag>(k, np);
   for(const auto& v : r.samples)
     *samples++ = v;

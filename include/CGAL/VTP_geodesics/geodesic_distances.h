@@ -26,6 +26,40 @@
 namespace CGAL {
 namespace VTP_geodesics {
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The solver that the free functions build for `tm` with the named parameters `np`: the vertex point map and
+// the traits of `np`; with CGAL::Parallel_tag, the preprocessing on the threads of the computation.
+template <class TriangleMesh, class NamedParameters>
+struct Solver_for
+{
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  typedef typename boost::property_traits<VPM>::value_type Point;
+  typedef typename Kernel_traits<Point>::Kernel Kernel;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters,
+                                                             Geodesic_traits_3<Kernel> >::type GT;
+  typedef Geodesic_distance_solver<TriangleMesh, GT, VPM> type;
+};
+
+template <class ConcurrencyTag, class TriangleMesh, class NamedParameters>
+typename Solver_for<TriangleMesh, NamedParameters>::type solver_for(const TriangleMesh& tm, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef Solver_for<TriangleMesh, NamedParameters> S;
+  const typename S::VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                               get_const_property_map(CGAL::vertex_point, tm));
+  const typename S::GT gt = choose_parameter<typename S::GT>(get_parameter(np, CGAL::internal_np::geom_traits));
+  const int threads = is_parallel<ConcurrencyTag>()
+                        ? choose_parameter(get_parameter(np, internal_np::number_of_threads), default_number_of_threads)
+                        : 1;
+  return typename S::type(tm, parameters::vertex_point_map(vpm).geom_traits(gt).number_of_threads(threads));
+}
+
+} // namespace internal
+/// \endcond
+
 /// \ingroup PkgVTPGeodesicsRef
 /// computes the geodesic distance from `sources` to every vertex of `tm` and writes it into `vdm`: the
 /// distance of a vertex is its distance to the nearest source; unreachable vertices get `+infinity`.
@@ -191,26 +225,8 @@ void compute_geodesic_distances(const TriangleMesh& tm,
                                 const SourceOrRange& sources,
                                 const NamedParameters& np = parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-
-  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  typedef typename boost::property_traits<VPM>::value_type Point;
-  typedef typename Kernel_traits<Point>::Kernel Kernel;
-  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters,
-                                                             Geodesic_traits_3<Kernel> >::type GT;
-
-  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                             get_const_property_map(CGAL::vertex_point, tm));
-  GT gt = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
-
-  // with Parallel_tag, the preprocessing uses the threads of the propagation
-  const int threads = internal::is_parallel<ConcurrencyTag>()
-                        ? choose_parameter(get_parameter(np, internal_np::number_of_threads),
-                                           internal::default_number_of_threads)
-                        : 1;
-  Geodesic_distance_solver<TriangleMesh, GT, VPM> solver(
-    tm, parameters::vertex_point_map(vpm).geom_traits(gt).number_of_threads(threads));
+  typename internal::Solver_for<TriangleMesh, NamedParameters>::type solver =
+    internal::solver_for<ConcurrencyTag>(tm, np);
   solver.template compute<ConcurrencyTag>(vdm, sources, np);
 }
 
