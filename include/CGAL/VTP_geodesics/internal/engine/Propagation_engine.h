@@ -167,7 +167,8 @@ public:
     distances.swap(m_virtual_sources ? m_vsp.dist : m_state.dist);
     labels.swap(m_virtual_sources ? m_vsp.label : m_state.label);
   }
-  // the vertices lowered or woken by the last run from known distances, and their flags
+  // the vertices lowered or woken by the last run from known distances, and their flags (not listed after the
+  // first run_again() on an empty field: every reached vertex was lowered then)
   const std::vector<Index>& touched() const { return m_state.touched; }
   bool was_lowered(Index v) const { return (m_state.flag[v] & Propagation_state::LOWERED) != 0; }
 

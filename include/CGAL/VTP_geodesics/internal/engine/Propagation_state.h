@@ -104,7 +104,8 @@ public:
   // runs from known distances only: per vertex LOWERED / WOKEN by this run, and the vertices flagged
   enum Vertex_flag : unsigned char { LOWERED = 1, WOKEN = 2 };
   std::vector<unsigned char> flag;
-  std::vector<Index> touched;
+  std::vector<Index> touched;          // not listed (touched_all) in a run after start(): all are reset then
+  bool touched_all = false;
 
   // counters
   std::size_t created = 0, propagated = 0, vertices_processed = 0, pseudo_sources = 0;
@@ -132,6 +133,7 @@ public:
     record.start(s.record_paths, static_cast<std::size_t>(m.nv), number_of_targets);
     flag.clear();
     touched.clear();
+    touched_all = s.known_distances;  // a first run: the next one resets everything, nothing is listed
     if(s.known_distances)
       flag.assign(static_cast<std::size_t>(m.nv), 0);
     m_events.clear();
@@ -147,8 +149,13 @@ public:
     CGAL_precondition(!(s.limit < std::numeric_limits<double>::infinity()) && !s.record_paths);
     const Mesh_arrays& m = *mesh;
     settings = s;
-    if(flag.size() != static_cast<std::size_t>(m.nv))
+    if(touched_all || flag.size() != static_cast<std::size_t>(m.nv))
+    {
       flag.assign(static_cast<std::size_t>(m.nv), 0);
+      processed.assign(static_cast<std::size_t>(m.nv), -1.);
+      swept.assign(static_cast<std::size_t>(m.nf), 0);
+      touched_all = false;
+    }
     for(Index v : touched)
     {
       flag[v] = 0;
@@ -171,7 +178,7 @@ public:
   {
     if(flag.empty())
       return;
-    if(flag[v] == 0)
+    if(flag[v] == 0 && !touched_all)
       touched.push_back(v);
     flag[v] |= LOWERED;
   }
@@ -189,7 +196,8 @@ public:
       if(flag[v] == 0 && dist[v] < std::numeric_limits<double>::infinity())
       {
         flag[v] = WOKEN;
-        touched.push_back(v);
+        if(!touched_all)
+          touched.push_back(v);
         schedule.push(v, dist[v]);
       }
     }
