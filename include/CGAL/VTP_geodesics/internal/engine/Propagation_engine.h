@@ -45,7 +45,7 @@ namespace internal {
 // (A front of another kind, one virtual source per vertex, is a third row: its own loop,
 // Virtual_source_front.h, on its own per-vertex field, Virtual_source_field.h. A start from known distances
 // is another seeding: the state starts from the known field and wakes the known vertices that new windows
-// reach, Propagation_state.h; farthest-point sampling, above the engine, adds one sample at a time that way,
+// reach, Known_vertices.h; farthest-point sampling, above the engine, adds one sample at a time that way,
 // sampling/Farthest_point_sampler.h.)
 //
 // Where each concept lives (internal/ and internal/engine/):
@@ -57,10 +57,12 @@ namespace internal {
 //   the window lists per half-edge (blocks, pools)                  Window_storage.h
 //   sources -> seeds, and the start of a propagation                engine/Seeding.h
 //   targets (vertices, points of faces)                             engine/Targets.h
-//   shared state and steps (light, emit, sweep, propagate one list) engine/Propagation_state.h
+//   data of a propagation (distances, lists, schedule), its start   engine/Propagation_data.h
+//   shared steps (light, emit, sweep, propagate one list)           engine/Propagation_state.h
 //   schedules (heap, buckets)                                       engine/Vertex_schedule.h
 //   loops                                  engine/Sequential_loop.h, engine/Parallel_loop.h
 //   reset policy (AVTP / PAVTP)                                     engine/Window_reset.h
+//   runs from known distances (flags, waking known vertices)        engine/Known_vertices.h
 //   stop rule (distance limit, targets), a hook                     engine/Stop_rule.h
 //   path recording (offers per vertex and target), a hook           engine/Path_record.h
 //   path trace-back                                                 engine/Path_trace.h
@@ -141,7 +143,7 @@ public:
     const auto t0 = std::chrono::steady_clock::now();
     m_virtual_sources = false;
     int threads = parallel ? (std::min)(number_of_threads(requested_threads), 126) : 1;
-    if(m_state.mesh != &m || m_state.flag.size() != static_cast<std::size_t>(m.nv) || !m_state.settings.known_distances)
+    if(m_state.mesh != &m || !m_state.known.active() || !m_state.settings.known_distances)
     {
       m_state.start(m, settings, static_cast<std::size_t>(threads), std::vector<Target>());
       if(!settings.want_labels)
@@ -169,8 +171,8 @@ public:
   }
   // the vertices lowered or woken by the last run from known distances, and their flags (not listed after the
   // first run_again() on an empty field: every reached vertex was lowered then)
-  const std::vector<Index>& touched() const { return m_state.touched; }
-  bool was_lowered(Index v) const { return (m_state.flag[v] & Propagation_state::LOWERED) != 0; }
+  const std::vector<Index>& touched() const { return m_state.known.touched(); }
+  bool was_lowered(Index v) const { return m_state.known.lowered(v); }
 
   // the distances of the last run (per vertex, in the unit of the output: Propagation_settings::unit)
   std::vector<double>& distances() { return m_virtual_sources ? m_vsp.dist : m_state.dist; }

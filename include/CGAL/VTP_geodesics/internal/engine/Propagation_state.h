@@ -16,11 +16,7 @@
 
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/Triangle_propagation.h>
-#include <CGAL/VTP_geodesics/internal/Window_storage.h>
-#include <CGAL/VTP_geodesics/internal/engine/Path_record.h>
-#include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
-#include <CGAL/VTP_geodesics/internal/engine/Vertex_schedule.h>
-#include <CGAL/VTP_geodesics/internal/engine/Window_reset.h>
+#include <CGAL/VTP_geodesics/internal/engine/Propagation_data.h>
 
 #include <CGAL/assertions.h>
 
@@ -32,30 +28,6 @@
 namespace CGAL {
 namespace VTP_geodesics {
 namespace internal {
-
-// What the caller asks of one propagation, in the engine's unit of length.
-struct Propagation_settings
-{
-  double minimum_window_ratio = 1e-9;  // windows shorter than this times their edge are dropped
-  double reset_step = std::numeric_limits<double>::infinity();  // lambda h (AVTP / PAVTP)
-  double reset_guard = 0.;             // lambda_g h
-  bool want_labels = false;            // nearest-source labels
-  double limit = std::numeric_limits<double>::infinity();  // distance limit
-  bool stop_at_targets = false;        // stop once the targets are final
-  bool record_paths = false;           // keep what the path trace-back needs
-  double unit = 1.;                    // the engine's unit of length, in the unit of the output distances
-  bool virtual_sources = false;        // one virtual source per vertex (VSP / PVSP) instead of windows
-  bool known_distances = false;        // the run starts from distances already known (see Propagation_state)
-};
-
-// The buffers of one thread: a list being propagated, its children, and counters.
-struct alignas(64) Propagation_scratch
-{
-  std::vector<Window> in, out_ac, out_cb;
-  List_scratch list;
-  std::size_t propagated = 0, created = 0;
-  Stop_events events;
-};
 
 // The state of one propagation and the steps that the sequential and the parallel loops share.
 //
@@ -70,159 +42,11 @@ struct alignas(64) Propagation_scratch
 // Exactness (without resets) does not depend on the order: windows are only cut where another real path
 // is shorter; the order only decides how many windows are created.
 //
-// A run from known distances (settings.known_distances): `dist` (and `label`) start from upper bounds
-// realised by real paths (the field of earlier sources); only the new sources are seeded, and a known
-// vertex is not scheduled unless the new sources lower it. The windows of the new sources are pruned
-// against the known distances like against any other, so the result is, at every vertex, the minimum of
-// the known distance and of the distance from the new sources, and the work is that of the region the new
-// sources win. A window list that arrives at a face none of whose corners was taken waits there like any
-// other; so that it is not left waiting, the known corners of that face are woken: scheduled at their
-// known distance, and taken in order like the others (a woken vertex sweeps its one-ring but emits no
-// window: a path of a new source through it is not shorter than its known distance). The vertices lowered
-// or woken by a run are listed in `touched` (what a next run from this field has to reset, and where
-// the field changed).
-class Propagation_state
+// A run from known distances (settings.known_distances) starts from the field of earlier sources and wakes
+// the known vertices that new windows reach: Known_vertices.h.
+class Propagation_state : public Propagation_data
 {
 public:
-  // ------------------------------------------------------------------------------------------
-  // per-run data (read by the loops)
-  // ------------------------------------------------------------------------------------------
-  const Mesh_arrays* mesh = nullptr;
-  Propagation_settings settings;
-  std::vector<double> dist;            // per vertex
-  std::vector<Index> label;            // per vertex, the nearest source found (if settings.want_labels)
-  std::vector<Index> seed_label;       // per point source (origin nv + i), its label
-  std::vector<unsigned char> swept;    // per face
-  std::vector<unsigned char> queued;   // per half-edge: its list is in a queue
-  std::vector<double> processed;       // per vertex: the distance it was taken at, -1 if never
-  Window_storage store;
-  Vertex_schedule schedule;
-  Window_reset reset;
-  Stop_rule stop;
-  Path_record record;
-  std::vector<Index> fifo;             // queued lists (sequential scheduling: FIFO order)
-  // runs from known distances only: per vertex LOWERED / WOKEN by this run, and the vertices flagged
-  enum Vertex_flag : unsigned char { LOWERED = 1, WOKEN = 2 };
-  std::vector<unsigned char> flag;
-  std::vector<Index> touched;          // not listed (touched_all) in a run after start(): all are reset then
-  bool touched_all = false;
-
-  // counters
-  std::size_t created = 0, propagated = 0, vertices_processed = 0, pseudo_sources = 0;
-
-  // Prepares a run on `m` (the schedule is started by the loop).
-  void start(const Mesh_arrays& m, const Propagation_settings& s, std::size_t pools, std::vector<Target>&& targets)
-  {
-    mesh = &m;
-    settings = s;
-    const std::size_t nh = m.source.size();
-    dist.assign(static_cast<std::size_t>(m.nv), std::numeric_limits<double>::infinity());
-    if(s.want_labels)
-      label.assign(static_cast<std::size_t>(m.nv), NO_INDEX);
-    else
-      label.clear();
-    seed_label.clear();
-    swept.assign(static_cast<std::size_t>(m.nf), 0);
-    queued.assign(nh, 0);
-    processed.assign(static_cast<std::size_t>(m.nv), -1.);
-    store.reset(nh, pools);
-    fifo.clear();
-    reset.start(s.reset_step, s.reset_guard, static_cast<std::size_t>(m.nv));
-    const std::size_t number_of_targets = targets.size();
-    stop.start(m, s.limit, s.stop_at_targets, std::move(targets));
-    record.start(s.record_paths, static_cast<std::size_t>(m.nv), number_of_targets);
-    flag.clear();
-    touched.clear();
-    touched_all = s.known_distances;  // a first run: the next one resets everything, nothing is listed
-    if(s.known_distances)
-      flag.assign(static_cast<std::size_t>(m.nv), 0);
-    m_events.clear();
-    created = propagated = vertices_processed = pseudo_sources = 0;
-  }
-
-  // Prepares a run from known distances that goes on from the field left by the previous run on the same
-  // mesh (dist and label kept, in the engine's unit), resetting only what that run touched: O(touched).
-  // The previous run must have gone to its end (no limit, no targets: every list was consumed).
-  void start_again(const Propagation_settings& s, std::size_t pools)
-  {
-    CGAL_precondition(mesh != nullptr && s.known_distances && settings.known_distances);
-    CGAL_precondition(!(s.limit < std::numeric_limits<double>::infinity()) && !s.record_paths);
-    const Mesh_arrays& m = *mesh;
-    settings = s;
-    if(touched_all || flag.size() != static_cast<std::size_t>(m.nv))
-    {
-      flag.assign(static_cast<std::size_t>(m.nv), 0);
-      processed.assign(static_cast<std::size_t>(m.nv), -1.);
-      swept.assign(static_cast<std::size_t>(m.nf), 0);
-      touched_all = false;
-    }
-    for(Index v : touched)
-    {
-      flag[v] = 0;
-      processed[v] = -1.;
-      for(Index c = m.corner_begin[v]; c < m.corner_begin[v + 1]; ++c)
-        swept[Mesh_arrays::face(m.corners[c])] = 0;
-    }
-    touched.clear();
-    seed_label.clear();
-    store.restart(pools);
-    fifo.clear();
-    reset.start(s.reset_step, s.reset_guard, static_cast<std::size_t>(m.nv));
-    stop.start(m, s.limit, false, std::vector<Target>());
-    m_events.clear();
-    created = propagated = vertices_processed = pseudo_sources = 0;
-  }
-
-  // Run from known distances: v is lowered by this run.
-  void mark_lowered(Index v)
-  {
-    if(flag.empty())
-      return;
-    if(flag[v] == 0 && !touched_all)
-      touched.push_back(v);
-    flag[v] |= LOWERED;
-  }
-
-  // Run from known distances: a list waits on face f; its known corners that nothing scheduled yet are
-  // scheduled at their known distance (see the class comment).
-  void wake_corners(Index f)
-  {
-    if(flag.empty() || swept[f])
-      return;
-    const Mesh_arrays& m = *mesh;
-    for(Index k = 0; k < 3; ++k)
-    {
-      const Index v = m.source[3 * f + k];
-      if(flag[v] == 0 && dist[v] < std::numeric_limits<double>::infinity())
-      {
-        flag[v] = WOKEN;
-        if(!touched_all)
-          touched.push_back(v);
-        schedule.push(v, dist[v]);
-      }
-    }
-  }
-
-  // Run from known distances: wakes the corners of the faces beyond the two other edges of face(h) if the
-  // lists there wait (serial; called after the children of the list of h are stored).
-  void wake_beyond(Index h)
-  {
-    if(flag.empty())
-      return;
-    const Mesh_arrays& m = *mesh;
-    const Index sides[2] = { m.opposite[Mesh_arrays::prev(h)], m.opposite[Mesh_arrays::next(h)] };
-    for(Index o : sides)
-      if(o != NO_INDEX && !store.empty(o))
-        wake_corners(Mesh_arrays::face(o));
-  }
-
-  // The label of a window origin.
-  Index label_of_origin(Index origin) const
-  {
-    const Index nv = mesh->nv;
-    return origin < nv ? label[origin] : seed_label[static_cast<std::size_t>(origin - nv)];
-  }
-
   // ------------------------------------------------------------------------------------------
   // shared steps
   // ------------------------------------------------------------------------------------------
@@ -269,8 +93,7 @@ public:
     processed[v] = dv;
     ++vertices_processed;
     // a known vertex only woken (not lowered) emits nothing, unless a reset forces it (AVTP)
-    const bool lowered = flag.empty() || (flag[v] & LOWERED) != 0;
-    if((mesh->is_pseudo_source[v] && lowered) || reset.is_forced(v))
+    if((mesh->is_pseudo_source[v] && known.lowered(v)) || reset.is_forced(v))
       emit_pseudo_source(v);
     sweep(v);
     reach_targets_through(v);
@@ -473,7 +296,6 @@ public:
 
 private:
   std::vector<Window> m_emit_ac, m_emit_cb;
-  Stop_events m_events;  // of the serial steps
 };
 
 } // namespace internal
