@@ -162,7 +162,8 @@ const vtp_support::Option_table<Arguments>& option_table()
     { "--picture-colour", "C",
       "what --picture colours: distances (the default) or labels (each\n"
       "nearest-source cell in its own colour, the borders between cells\n"
-      "drawn; with --farthest-points: the geodesic Voronoi cells)",
+      "drawn; with --farthest-points: the geodesic Voronoi cells); needs\n"
+      "--picture",
       [](Arguments& a, const std::string& n, const std::string& v) {
         if(v != "distances" && v != "labels")
           throw Tool_error("unknown value '" + v + "' for " + n + " (expected distances or labels)");
