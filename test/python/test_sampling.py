@@ -76,6 +76,8 @@ def test_components_and_more_samples_than_vertices():
     # more samples than vertices: every vertex once, then the radius is 0; the radius is inf until the
     # second component has a sample, which is then the second one
     every = solver.farthest_point_sampling(100, first=3)
+    huge = solver.farthest_point_sampling(2 ** 70, first=3)
+    assert np.array_equal(huge.samples, every.samples) and np.array_equal(huge.radii, every.radii)
     assert sorted(every.samples.tolist()) == list(range(7))
     assert every.radii[0] == math.inf and np.isfinite(every.radii[1]) and every.samples[1] < 3
     assert every.radii[-1] == 0 and np.all(every.radii[:-1] > 0) and np.all(np.diff(every.radii[1:]) <= 0)
