@@ -435,8 +435,8 @@ class Solver:
         else:
             if isinstance(first, (bool, _np.bool_)) or not isinstance(first, (int, _np.integer)):
                 raise TypeError("first must be an integer vertex index, got %r" % (first,))
-            if first < 0:
-                raise ValueError("first must be a vertex index >= 0, got %d" % first)
+            if first < 0 or first >= self._n:
+                raise ValueError("first must be a vertex index in [0, %d), got %d" % (self._n, first))
             first_index = int(first)
         if k < 0:
             raise ValueError("k must be >= 0, got %d" % k)

@@ -110,6 +110,8 @@ def test_bad_input():
     with pytest.raises(ValueError):
         solver.farthest_point_sampling(3, first=-2)
     with pytest.raises(ValueError):
+        solver.farthest_point_sampling(3, first=2 ** 70)
+    with pytest.raises(ValueError):
         solver.farthest_point_sampling(3, radius=-1.0)
     with pytest.raises(ValueError):
         solver.farthest_point_sampling(3, radius=math.nan)
