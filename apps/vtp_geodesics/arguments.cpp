@@ -162,11 +162,13 @@ const vtp_support::Option_table<Arguments>& option_table()
     { "--picture-colour", "C",
       "what --picture colours: distances (the default) or labels (each\n"
       "nearest-source cell in its own colour, the borders between cells\n"
-      "drawn; with --farthest-points: the geodesic Voronoi cells)",
+      "drawn; with --farthest-points: the geodesic Voronoi cells); needs\n"
+      "--picture",
       [](Arguments& a, const std::string& n, const std::string& v) {
         if(v != "distances" && v != "labels")
           throw Tool_error("unknown value '" + v + "' for " + n + " (expected distances or labels)");
         a.colour_labels = v == "labels";
+        a.has_picture_colour = true;
       } },
     { "--isolines", "N", "about N isolines on the picture, at round distances (default: 10;\n0: none)",
       [](Arguments& a, const std::string& n, const std::string& v) {
@@ -259,6 +261,8 @@ void check_arguments(const Arguments& a)
     throw Tool_error("--target-output needs --target or --target-point");
   if(!a.path_output.empty() && !a.has_paths())
     throw Tool_error("--path-output needs --path-to or --path-to-point");
+  if(a.has_picture_colour && a.picture.empty())
+    throw Tool_error("--picture-colour needs --picture");
   if(a.has_paths() && a.path_output.empty() && a.picture.empty())
     throw Tool_error("--path-to and --path-to-point need --path-output (or --picture, which draws the paths)");
   const std::string* files[] = { &a.output, &a.stats_json, &a.picture, &a.labels, &a.target_output, &a.path_output,

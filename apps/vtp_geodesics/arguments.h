@@ -69,6 +69,7 @@ struct Arguments
   bool has_radius = false;
   std::string samples_output;             // empty: none; "-": standard output
   bool colour_labels = false;             // --picture-colour labels
+  bool has_picture_colour = false;        // --picture-colour given (it needs --picture)
   bool help = false;
 
   std::size_t number_of_sources() const { return sources.size() + source_points.size(); }

@@ -277,7 +277,8 @@ int run(int argc, char** argv)
   report.sources = sampling ? samples.size() : args.number_of_sources();
   report.single_vertex_source = args.number_of_sources() == 1 && args.sources.size() == 1;
   if(sampling)
-    report.sources_text = std::to_string(samples.size()) + " farthest points";
+    report.sources_text =
+      std::to_string(samples.size()) + (samples.size() == 1 ? " farthest point" : " farthest points");
   report.source = args.sources.empty() ? 0 : args.sources.front();
   for(std::size_t i = 0; i < args.sources.size(); ++i)
     report.sources_text += (i == 0 ? "" : ", ") + std::to_string(args.sources[i]);

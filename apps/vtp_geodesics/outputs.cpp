@@ -260,7 +260,7 @@ void print_summary(std::ostream& os, const Report& r)
     double total = 0.;
     for(double a : s.cell_areas)
       total += a;
-    os << "farthest points: " << s.samples.size() << " samples, covering radius " << s.radii.back() << "\n"
+    os << "farthest points: " << s.samples.size() << (s.samples.size() == 1 ? " sample" : " samples") << ", covering radius " << s.radii.back() << "\n"
        << "Voronoi cells: area " << *areas.first << " to " << *areas.second << " (total " << total << ")\n";
   }
   if(!r.repairs.empty())

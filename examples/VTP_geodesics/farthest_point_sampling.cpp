@@ -46,8 +46,15 @@ int main(int argc, char* argv[])
   auto cell = tm.add_property_map<vertex_descriptor, std::size_t>("v:cell", 0).first;
   VTP::farthest_point_sampling(tm, 50, std::back_inserter(samples),
                                VTP::parameters::covering_radii(std::back_inserter(radii)).nearest_source_map(cell));
-  std::cout << samples.size() << " samples; covering radius after 1, 10 and 50: " << radii[0] << ", " << radii[9]
-            << ", " << radii.back() << std::endl;
+  // (fewer than 50 on a mesh of fewer vertices: the sampling stops once every vertex is a sample)
+  std::cout << samples.size() << " samples (vertex, covering radius once it is taken):\n";
+  for(std::size_t i = 0; i < samples.size(); ++i)
+  {
+    if(i < 5 || i + 1 == samples.size())
+      std::cout << "  " << std::size_t(samples[i]) << " " << radii[i] << "\n";
+    else if(i == 5)
+      std::cout << "  ...\n";
+  }
 
   // The solver member: the same samples from a given first vertex, until every vertex is within half of the
   // radius above; then the area of each cell.

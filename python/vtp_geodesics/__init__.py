@@ -435,10 +435,13 @@ class Solver:
         else:
             if isinstance(first, (bool, _np.bool_)) or not isinstance(first, (int, _np.integer)):
                 raise TypeError("first must be an integer vertex index, got %r" % (first,))
-            if first < 0:
-                raise ValueError("first must be a vertex index >= 0, got %d" % first)
+            if first < 0 or first >= self._n:
+                raise ValueError("first must be a vertex index in [0, %d), got %d" % (self._n, first))
             first_index = int(first)
-        result = self._core.farthest_point_sampling(int(k), first_index, _check_float(radius, "radius"),
+        if k < 0:
+            raise ValueError("k must be >= 0, got %d" % k)
+        # more samples than vertices are never taken: a k beyond 64 bits is as good as the number of vertices
+        result = self._core.farthest_point_sampling(min(int(k), self._n), first_index, _check_float(radius, "radius"),
                                                     _check_method(method), _check_float(lam, "lam"),
                                                     _check_threads(threads))
         return FarthestPointSamples(*result)

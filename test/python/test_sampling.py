@@ -62,6 +62,33 @@ def test_radius_first_and_plane():
     assert solver.farthest_point_sampling(0).samples.size == 0
 
 
+def test_components_and_more_samples_than_vertices():
+    # a right triangle and a unit square 4 away from it: two components
+    V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [5, 0, 0], [6, 0, 0], [5, 1, 0], [6, 1, 0]], dtype=float)
+    F = np.array([[0, 1, 2], [3, 4, 5], [4, 6, 5]], dtype=np.int64)
+    solver = vtp_geodesics.Solver(V, F)
+    # one sample in the square: the triangle is at inf, labelled -1, and the radius is inf
+    one = solver.farthest_point_sampling(1, first=3)
+    assert one.samples.tolist() == [3] and one.radii.tolist() == [math.inf]
+    assert np.array_equal(np.isinf(one.distances), one.labels == -1)
+    assert np.array_equal(one.labels == -1, np.arange(7) < 3)
+    assert one.cell_areas.tolist() == pytest.approx([1.0], rel=1e-12)
+    # more samples than vertices: every vertex once, then the radius is 0; the radius is inf until the
+    # second component has a sample, which is then the second one
+    every = solver.farthest_point_sampling(100, first=3)
+    huge = solver.farthest_point_sampling(2 ** 70, first=3)
+    assert np.array_equal(huge.samples, every.samples) and np.array_equal(huge.radii, every.radii)
+    assert sorted(every.samples.tolist()) == list(range(7))
+    assert every.radii[0] == math.inf and np.isfinite(every.radii[1]) and every.samples[1] < 3
+    assert every.radii[-1] == 0 and np.all(every.radii[:-1] > 0) and np.all(np.diff(every.radii[1:]) <= 0)
+    assert np.array_equal(every.labels[every.samples], np.arange(7)) and np.all(every.distances == 0)
+    assert every.cell_areas.sum() == pytest.approx(mesh_area(V, F), rel=1e-12)
+    # the radius stops it as soon as the covering radius is at most the radius
+    assert every.radii[2] < every.radii[1]
+    stopped = solver.farthest_point_sampling(100, first=3, radius=every.radii[2])
+    assert np.array_equal(stopped.samples, every.samples[:3])
+
+
 def test_equals_tool(tool, tmp_path):
     samples_file = tmp_path / "s.txt"
     subprocess.run([tool, data_file("elephant.off"), "--farthest-points", "20", "--first", "7",
@@ -82,6 +109,8 @@ def test_bad_input():
         solver.farthest_point_sampling(3, first=1000)
     with pytest.raises(ValueError):
         solver.farthest_point_sampling(3, first=-2)
+    with pytest.raises(ValueError):
+        solver.farthest_point_sampling(3, first=2 ** 70)
     with pytest.raises(ValueError):
         solver.farthest_point_sampling(3, radius=-1.0)
     with pytest.raises(ValueError):

@@ -340,6 +340,24 @@ vtp_cli_check(fps_radius_samples AFTER fps_radius ARGS samples "${fps}.r.samples
 vtp_cli_test(fps_one 0 "${fps}.1.txt" "" SOURCE_LINE 1000 --farthest-points 1 --first 1000 --output "${fps}.1.txt")
 vtp_cli_check(fps_one_is_a_run AFTER fps_one several_single_1 ARGS values "${fps}.1.txt" all "${several}.1.txt" all 1e-12)
 vtp_cli_test(fps_picture 0 "${fps}.png" "" CHECK png --farthest-points 8 --picture "${fps}.png" --picture-colour labels)
+# K above the number of vertices: the sampling stops at covering radius 0, every vertex a sample (the 12 of the
+# prism are at distinct points). Two components: the radius is inf until each has a sample; with one sample, the
+# other component is at inf with label -1.
+vtp_cli_test(fps_all_vertices 0 "${fps}.all.txt" "" LINES 12 SOURCE_LINE none
+             "${cli_data}/hexagonal_prism.off" --farthest-points 50 --samples-output "${fps}.all.samples"
+             --output "${fps}.all.txt" --labels "${fps}.all.labels" NOTE "triangulated 8 faces")
+vtp_cli_check(fps_all_vertices_samples AFTER fps_all_vertices
+              ARGS samples "${fps}.all.samples" "${fps}.all.txt" "${fps}.all.labels" 50 - 0)
+vtp_cli_test(fps_components 0 "${fps}.cc.txt" "" LINES 7 SOURCE_LINE none
+             "${cli_data}/two_components.off" --farthest-points 3 --samples-output "${fps}.cc.samples"
+             --output "${fps}.cc.txt" --labels "${fps}.cc.labels")
+vtp_cli_check(fps_components_samples AFTER fps_components
+              ARGS samples "${fps}.cc.samples" "${fps}.cc.txt" "${fps}.cc.labels" 3 -)
+vtp_cli_test(fps_components_one 0 "${fps}.cc1.txt" "" LINES 7 SOURCE_LINE 3
+             "${cli_data}/two_components.off" --farthest-points 1 --first 3 --samples-output "${fps}.cc1.samples"
+             --output "${fps}.cc1.txt" --labels "${fps}.cc1.labels")
+vtp_cli_check(fps_components_one_samples AFTER fps_components_one
+              ARGS samples "${fps}.cc1.samples" "${fps}.cc1.txt" "${fps}.cc1.labels" 1 3)
 if(TARGET CGAL::VTP_geodesics_OpenMP_support)
   vtp_cli_test(fps_pvtp 0 "${fps}.p.txt" "" SOURCE_LINE none --method pvtp --threads 2 --farthest-points 12
                --first 1000 --samples-output "${fps}.p.samples" --output "${fps}.p.txt" --labels "${fps}.p.labels")
@@ -359,7 +377,8 @@ set(fps_bad_sets
   "first_without_fps|--first|3"
   "radius_without_fps|--radius|0.5"
   "samples_output_without_fps|--samples-output|${bad_output}.fps.s"
-  "picture_colour_unknown|--picture-colour|heights|--picture|${bad_output}.fps.png")
+  "picture_colour_unknown|--picture-colour|heights|--picture|${bad_output}.fps.png"
+  "picture_colour_without_picture|--picture-colour|labels")
 vtp_cli_bad_sets(100 "${fps_bad_sets}")
 
 # Bad lists, points and limits; paths that do not exist: one error line, exit code 2, no file written.
