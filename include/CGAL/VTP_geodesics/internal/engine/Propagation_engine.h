@@ -77,7 +77,7 @@ class Propagation_engine
 {
 public:
   // With settings.known_distances, the run starts from `initial` (per vertex, in the engine's unit) and
-  // `initial_labels` (if labels are wanted), see Propagation_state.
+  // `initial_labels` (if labels are wanted), see Known_vertices.h.
   template <class ConcurrencyTag>
   void run(const Mesh_arrays& m, const std::vector<Seed>& seeds, std::vector<Target>&& targets,
            const Propagation_settings& settings, int requested_threads, Propagation_statistics& statistics,
@@ -121,17 +121,19 @@ public:
     if(settings.unit != 1.)
       for(double& d : m_state.dist)
         d *= settings.unit;
-    const bool approximate = m_state.reset.is_active();
-    statistics = Propagation_statistics();
-    statistics.method = parallel ? (approximate ? "pavtp" : "pvtp") : (approximate ? "avtp" : "vtp");
-    statistics.threads = threads;
-    collect_statistics(parallel, statistics);
+    collect_statistics(parallel, threads, statistics);
+    for(double d : m_state.dist)
+      if(d < std::numeric_limits<double>::infinity())
+      {
+        ++statistics.reached_vertices;
+        statistics.max_distance = (std::max)(statistics.max_distance, d);
+      }
     statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
 
   // Adds `seed` to the field of the previous run (a run from known distances, or the first such run on
   // an empty field), in the engine's unit: the work and the resetting are those of the region the seed
-  // wins (Propagation_state::start_again()). No limit, targets, paths, nor virtual sources. The vertices
+  // wins (Propagation_data::start_again()). No limit, targets, paths, nor virtual sources. The vertices
   // whose distance changed are those of touched() with the LOWERED flag. Statistics: windows, vertices
   // and time of this run only (not the reached vertices nor the largest distance, which would cost O(V)).
   template <class ConcurrencyTag>
@@ -144,23 +146,12 @@ public:
     m_virtual_sources = false;
     int threads = parallel ? (std::min)(number_of_threads(requested_threads), 126) : 1;
     if(m_state.mesh != &m || !m_state.known.active() || !m_state.settings.known_distances)
-    {
       m_state.start(m, settings, static_cast<std::size_t>(threads), std::vector<Target>());
-      if(!settings.want_labels)
-        m_state.label.clear();
-    }
     else
       m_state.start_again(settings, static_cast<std::size_t>(threads));
     m_seeds.assign(1, seed);
     threads = propagate(parallel, threads);
-    statistics = Propagation_statistics();
-    statistics.method = parallel ? "pvtp" : "vtp";
-    if(m_state.reset.is_active())
-      statistics.method = parallel ? "pavtp" : "avtp";
-    statistics.threads = threads;
-    statistics.vertices = static_cast<std::size_t>(m.nv);
-    statistics.faces = static_cast<std::size_t>(m.nf);
-    fill_window_statistics(parallel, statistics);
+    collect_statistics(parallel, threads, statistics);
     statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   // Moves the distances and labels of the last run out of the engine (which then holds no field).
@@ -228,22 +219,16 @@ private:
       }
   }
 
-  void collect_statistics(bool parallel, Propagation_statistics& st) const
+  // The statistics of the last run (window propagation), but the reached vertices and the largest distance.
+  void collect_statistics(bool parallel, int threads, Propagation_statistics& st) const
   {
     const Mesh_arrays& m = *m_state.mesh;
+    const bool approximate = m_state.reset.is_active();
+    st = Propagation_statistics();
+    st.method = parallel ? (approximate ? "pavtp" : "pvtp") : (approximate ? "avtp" : "vtp");
+    st.threads = threads;
     st.vertices = static_cast<std::size_t>(m.nv);
     st.faces = static_cast<std::size_t>(m.nf);
-    fill_window_statistics(parallel, st);
-    for(double d : m_state.dist)
-      if(d < std::numeric_limits<double>::infinity())
-      {
-        ++st.reached_vertices;
-        st.max_distance = (std::max)(st.max_distance, d);
-      }
-  }
-
-  void fill_window_statistics(bool parallel, Propagation_statistics& st) const
-  {
     st.windows_created = m_state.created;
     st.windows_propagated = m_state.propagated;
     st.peak_live_windows = m_state.store.peak_live_windows();
