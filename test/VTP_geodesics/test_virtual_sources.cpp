@@ -342,6 +342,67 @@ TEST(Virtual_sources, compute_each_parallel_tag_and_unreachable)
     EXPECT_EQ(std::isinf(d[i]), i >= 4) << "vertex " << i;
 }
 
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+// PVSP: the rounds give the same bits on any number of threads, and the same as VSP (one thread), with
+// several sources and labels, a source point, a distance limit and targets; on grids large enough for the
+// rounds to run on several threads, with exact ties (a regular grid) and without (jittered).
+TEST(Virtual_sources, Parallel_rounds_give_the_same_bits_on_any_number_of_threads)
+{
+  for(double jitter : {0., 0.3})
+  {
+    const Polygon_soup soup = planar_grid(120, 110, 1.2, 1., jitter, 7u);
+    const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+    Solver solver(mesh);
+    const std::vector<Vertex_index> sources = {Vertex_index(0), Vertex_index(5000), Vertex_index(9001)};
+    const Location point(Surface_mesh::Face_index(3000), {{0.2, 0.3, 0.5}});
+    auto labelled = [&](std::vector<std::size_t>& labels) {
+      labels.assign(index_range(mesh), 99);
+      return boost::make_iterator_property_map(labels.begin(), get(boost::vertex_index, mesh));
+    };
+    std::vector<std::size_t> labels1, labels;
+    const std::vector<double> d1 = run(solver, mesh, sources, VP::virtual_sources(true).nearest_source_map(labelled(labels1)));
+    const std::vector<double> p1 = run(solver, mesh, point, VP::virtual_sources(true));
+    const double limit = 0.3 * max_finite(d1);
+    const std::vector<double> l1 = run(solver, mesh, sources, VP::virtual_sources(true).maximum_distance(limit));
+    for(int threads : {1, 2, 3})
+    {
+      const std::string what = "jitter " + std::to_string(jitter) + ", " + std::to_string(threads) + " threads";
+      std::vector<double> d(index_range(mesh));
+      solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
+                                         sources,
+                                         VP::virtual_sources(true).number_of_threads(threads).nearest_source_map(labelled(labels)));
+      EXPECT_TRUE(identical(d, d1)) << what;
+      EXPECT_EQ(labels, labels1) << what;
+      const CGAL::VTP_geodesics::Propagation_statistics st = solver.statistics();
+      EXPECT_EQ(st.method, "pvsp");
+      EXPECT_EQ(st.vertices_processed, num_vertices(mesh));
+      EXPECT_GT(st.rounds, 0u);
+      if(threads > 1 && st.threads > 1)
+      {
+        EXPECT_GT(st.parallel_rounds, st.rounds / 2) << what;  // the rounds of this grid are large
+      }
+      std::vector<double> p(index_range(mesh));
+      solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(p.begin(), get(boost::vertex_index, mesh)),
+                                         point, VP::virtual_sources(true).number_of_threads(threads));
+      EXPECT_TRUE(identical(p, p1)) << what;
+      std::vector<double> l(index_range(mesh));
+      solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(l.begin(), get(boost::vertex_index, mesh)),
+                                         sources, VP::virtual_sources(true).number_of_threads(threads).maximum_distance(limit));
+      EXPECT_TRUE(identical(l, l1)) << what;
+      EXPECT_TRUE(solver.statistics().stopped_early) << what;
+    }
+    // within the limit, the run with a limit has the full run's distances; beyond it, infinity
+    for(std::size_t i = 0; i < d1.size(); ++i)
+    {
+      if(d1[i] <= limit)
+        EXPECT_EQ(l1[i], d1[i]) << "vertex " << i;
+      else
+        EXPECT_TRUE(std::isinf(l1[i])) << "vertex " << i;
+    }
+  }
+}
+#endif
+
 // Hard but valid input (zero-length edges, nearly collinear faces, boundaries, several components): no
 // crash, no NaN, never below the exact distance, +infinity exactly where VTP has it.
 TEST(Virtual_sources, hard_meshes_keep_the_upper_bound)

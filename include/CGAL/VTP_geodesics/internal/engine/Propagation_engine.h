@@ -68,6 +68,7 @@ namespace internal {
 //   path trace-back                                                 engine/Path_trace.h
 //   virtual sources: per-vertex field, seeding, wedge geometry      engine/Virtual_source_field.h
 //   virtual sources: the propagation (heap, walks around a vertex)  engine/Virtual_source_front.h
+//   virtual sources in rounds on threads (PVSP)                     engine/Virtual_source_rounds.h
 //   threads: thread count, parallel_for (preprocessing, rows)       parallel/Parallel_for.h
 //   threads of the parallel loop                  parallel/Round_team.h, parallel/Stealing_ranges.h
 //
@@ -88,12 +89,14 @@ public:
     m_virtual_sources = settings.virtual_sources;
     if(m_virtual_sources)
     {
-      // one virtual source per vertex (Virtual_source_front.h); the parallel tag runs the same front
+      // one virtual source per vertex (Virtual_source_front.h); the parallel tag runs it in rounds
+      // (Virtual_source_rounds.h)
       m_seeds = seeds;
       statistics = Propagation_statistics();
-      m_vsp.run(m, m_seeds, std::move(targets), settings, statistics, initial, initial_labels);
+      const int threads = m_vsp.run(m, m_seeds, std::move(targets), settings, statistics,
+                                    parallel ? number_of_threads(requested_threads) : 0, initial, initial_labels);
       statistics.method = parallel ? "pvsp" : "vsp";
-      statistics.threads = 1;
+      statistics.threads = threads;
       statistics.vertices = static_cast<std::size_t>(m.nv);
       statistics.faces = static_cast<std::size_t>(m.nf);
       for(double d : m_vsp.dist)

@@ -26,7 +26,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -123,7 +122,6 @@ protected:
   void push(Index v, double d)
   {
     m_heap.emplace_back(d, v);
-    std::push_heap(m_heap.begin(), m_heap.end(), std::greater<Heap_entry>());
     m_peak_heap = (std::max)(m_peak_heap, m_heap.size());
   }
 
@@ -332,7 +330,7 @@ protected:
   Propagation_settings m_settings;
   std::vector<Vertex_source> m_src;
   std::vector<unsigned char> m_taken;
-  std::vector<Heap_entry> m_heap;
+  std::vector<Heap_entry> m_heap;  // the vertices seeded, for the first round (Virtual_source_rounds.h)
   std::vector<Target> m_targets;
   std::vector<double> m_target_value;
   std::vector<Offer> m_target_offer;

@@ -18,12 +18,12 @@
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
 #include <CGAL/VTP_geodesics/internal/engine/Virtual_source_field.h>
+#include <CGAL/VTP_geodesics/internal/engine/Virtual_source_rounds.h>
 
 #include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -42,18 +42,18 @@ namespace internal {
 // root: every point of the face of h inside the wedge is joined to the root by a straight segment that stays
 // in the faces. The distance of u is d(root) + |s - u|.
 //
-// Vertices are taken in the order of a binary heap (Dijkstra). A vertex u taken offers to its neighbours:
+// Vertices are taken in rounds of buckets of distances (Dijkstra by buckets of half a short edge, on one thread
+// or several: Virtual_source_rounds.h). A vertex u taken offers to its neighbours:
 //  - along each edge u-w: d(u) + |uw|, with u as the new root (always a real path);
 //  - through its virtual source: walking around u from the face of h, clockwise and counter-clockwise,
 //    crossing one edge u-x at a time and cutting the wedge to the directions that cross the segment [u, x]
 //    (a crossing is taken only if the image lies strictly on the side of the face it leaves: the line goes
 //    forward); the third vertex y of each face reached is offered d(root) + |s - y| if y lies in the wedge.
 //    An edge u-x whose x is the root itself is crossed with the wedge of the root's corner in the next face.
-// A vertex keeps the smallest offer; a vertex taken is never changed again. The heap is not monotone (an
+// A vertex keeps the smallest offer; a vertex taken is never changed again. The order is not monotone (an
 // offer through a virtual source may be smaller than the distance of the vertex making it, by at most one
-// edge), so a run with a distance limit goes on until the heap passes the limit plus the longest edge: it
-// then gives the full run's distances within the limit; a run stopped at its targets gives the full run's
-// distances of the vertices taken.
+// edge), so a run with a distance limit goes on until the buckets pass the limit plus twice the longest
+// edge; a run stopped at its targets gives the full run's distances of the vertices taken.
 //
 // Upper bound: every offer is the length of a path on the surface (a straight segment in an unfolding whose
 // faces it crosses, after a path to the root realised by induction), hence never below the geodesic distance.
@@ -64,9 +64,11 @@ class Virtual_source_front : public Virtual_source_field
 public:
   // With settings.known_distances, `initial` (and `initial_labels`) give the starting field (see
   // Propagation_state): a known vertex is not taken unless the new sources lower it.
-  void run(const Mesh_arrays& m, const std::vector<Seed>& seeds, std::vector<Target>&& targets,
-           const Propagation_settings& settings, Propagation_statistics& st,
-           const std::vector<double>* initial = nullptr, const std::vector<Index>* initial_labels = nullptr)
+  // On `threads` threads (VSP: 1; PVSP: any number, the same distances, see Virtual_source_rounds.h).
+  // Returns the number of threads of the team.
+  int run(const Mesh_arrays& m, const std::vector<Seed>& seeds, std::vector<Target>&& targets,
+          const Propagation_settings& settings, Propagation_statistics& st, int threads,
+          const std::vector<double>* initial = nullptr, const std::vector<Index>* initial_labels = nullptr)
   {
     m_mesh = &m;
     m_seeds = &seeds;
@@ -95,7 +97,7 @@ public:
     m_peak_heap = 0;
 
     seed(seeds);
-    propagate();
+    threads = m_rounds.propagate(*this, threads);
     finish();
 
     record.start(settings.record_paths, nv, m_targets.size());
@@ -116,61 +118,40 @@ public:
     st.stopped_early = m_stopped;
     st.peak_live_windows = 0;
     st.peak_window_bytes = nv * (sizeof(Vertex_source) + sizeof(double) + 1 + (label.empty() ? 0 : sizeof(Index)))
-                           + m_peak_heap * sizeof(Heap_entry);
+                           + (std::max)(m_rounds.peak_bytes, m_peak_heap * sizeof(Heap_entry));
+    st.rounds = m_rounds.rounds;
+    st.parallel_rounds = m_rounds.parallel_rounds;
+    st.selection_seconds = m_rounds.selection_seconds;
+    st.propagation_seconds = m_rounds.propagation_seconds;
+    st.merge_seconds = m_rounds.merge_seconds;
+    return threads;
   }
 
 private:
+  friend class Virtual_source_rounds;
+
   // ------------------------------------------------------------------------------------------
   // propagation
   // ------------------------------------------------------------------------------------------
-  void propagate()
+  // With a stop at the targets: marks the vertices to take before stopping (a target vertex, the corners
+  // of a target face) and returns their number; otherwise 0.
+  std::size_t mark_targets(std::vector<unsigned char>& is_target) const
   {
+    std::size_t count = 0;
+    is_target.clear();
+    if(!m_settings.stop_at_targets || m_targets.empty())
+      return 0;
     const Mesh_arrays& m = *m_mesh;
-    std::size_t remaining_vertex_targets = 0;
-    std::vector<unsigned char> is_target;
-    const bool stop_at_targets = m_settings.stop_at_targets && !m_targets.empty();
-    if(stop_at_targets)
+    is_target.assign(static_cast<std::size_t>(m.nv), 0);
+    for(const Target& t : m_targets)
     {
-      is_target.assign(static_cast<std::size_t>(m.nv), 0);
-      for(const Target& t : m_targets)
-      {
-        if(t.vertex != NO_INDEX)
-          mark(is_target, t.vertex, remaining_vertex_targets);
-        else
-          for(int k = 0; k < 3; ++k)
-            mark(is_target, m.source[3 * t.face + k], remaining_vertex_targets);
-      }
+      if(t.vertex != NO_INDEX)
+        mark(is_target, t.vertex, count);
+      else
+        for(int k = 0; k < 3; ++k)
+          mark(is_target, m.source[3 * t.face + k], count);
     }
-    const double cutoff = m_settings.limit + 2. * m.max_edge_length;
-    while(!m_heap.empty())
-    {
-      std::pop_heap(m_heap.begin(), m_heap.end(), std::greater<Heap_entry>());
-      const Heap_entry e = m_heap.back();
-      m_heap.pop_back();
-      const std::size_t u = static_cast<std::size_t>(e.second);
-      if(m_taken[u] || e.first > dist[u])
-        continue;
-      // An offer of a vertex u is at least d(u) minus one edge (d(root) + |s - y| >= d(root) + |s - u| - |uy|,
-      // y a neighbour of u): past limit + the longest edge (twice, for rounding), no offer can be within the
-      // limit any more, and every vertex within it is taken, as in a full run.
-      if(e.first > cutoff)
-      {
-        m_stopped = true;
-        break;
-      }
-      m_taken[u] = 1;
-      ++m_taken_count;
-      take(e.second);
-      if(stop_at_targets && is_target[u])
-      {
-        is_target[u] = 0;
-        if(--remaining_vertex_targets == 0)
-        {
-          m_stopped = !m_heap.empty();
-          break;
-        }
-      }
-    }
+    return count;
   }
 
   static void mark(std::vector<unsigned char>& is_target, Index v, std::size_t& count)
@@ -182,8 +163,10 @@ private:
     }
   }
 
-  // Vertex u is taken: its offers to its neighbours.
-  void take(Index u)
+  // Vertex u is taken: its offers to its neighbours, each given to sink(v, d, source, label) if v is not
+  // taken and d is below its distance.
+  template <class Sink>
+  void take(Index u, Sink& sink) const
   {
     const Mesh_arrays& m = *m_mesh;
     const double du = dist[static_cast<std::size_t>(u)];
@@ -198,7 +181,7 @@ private:
       if(db < dist[static_cast<std::size_t>(b)] && !m_taken[static_cast<std::size_t>(b)])
       {
         const Halfedge_geometry g = m.geometry[Mesh_arrays::next(h)];  // B at the origin, C on the x axis, u above
-        offer_along_edge(b, db, g.cx, g.cy, -g.cx, -g.cy, g.length - g.cx, -g.cy, Mesh_arrays::next(h), u, lab);
+        offer_along_edge(b, db, g.cx, g.cy, -g.cx, -g.cy, g.length - g.cx, -g.cy, Mesh_arrays::next(h), u, lab, sink);
       }
       const Index p = Mesh_arrays::prev(h);
       if(m.opposite[p] == NO_INDEX)
@@ -206,18 +189,19 @@ private:
         // a border edge C -> u: C is reached only from this face
         const Halfedge_geometry gp = m.geometry[p];  // C at the origin, u = (length, 0), B above
         offer_along_edge(m.source[p], du + gp.length, gp.length, 0., gp.cx - gp.length, gp.cy, -gp.length, 0., p, u,
-                         lab);
+                         lab, sink);
       }
     }
     if(su.root == u || su.h == NO_INDEX)
       return;  // a source vertex: the edges are its straight lines
     const double sigma = root_distance(su.root);
-    walk_counterclockwise(u, su, sigma, lab);
-    walk_clockwise(u, su, sigma, lab);
+    walk_counterclockwise(u, su, sigma, lab, sink);
+    walk_clockwise(u, su, sigma, lab, sink);
   }
 
+  template <class Sink>
   void offer_along_edge(Index v, double d, double sx, double sy, double rx, double ry, double lx, double ly, Index h,
-                        Index root, Index lab)
+                        Index root, Index lab, Sink& sink) const
   {
     if(m_taken[static_cast<std::size_t>(v)] || !(d < dist[static_cast<std::size_t>(v)]))
       return;
@@ -227,11 +211,12 @@ private:
     s.lx = lx; s.ly = ly;
     s.h = h;
     s.root = root;
-    offer(v, d, s, lab);
+    sink(v, d, s, lab);
   }
 
   // The walk through the faces after the face of s.h, counter-clockwise around u.
-  void walk_counterclockwise(Index u, Vertex_source s, double sigma, Index lab)
+  template <class Sink>
+  void walk_counterclockwise(Index u, Vertex_source s, double sigma, Index lab, Sink& sink) const
   {
     const Mesh_arrays& m = *m_mesh;
     const Index degree = m.corner_begin[u + 1] - m.corner_begin[u];
@@ -269,12 +254,13 @@ private:
       }
       h = o;
       s.h = o;
-      reach_third_vertex(s, go, Mesh_arrays::prev(o), sigma, lab);
+      reach_third_vertex(s, go, Mesh_arrays::prev(o), sigma, lab, sink);
     }
   }
 
   // The walk through the faces before the face of s.h, clockwise around u.
-  void walk_clockwise(Index u, Vertex_source s, double sigma, Index lab)
+  template <class Sink>
+  void walk_clockwise(Index u, Vertex_source s, double sigma, Index lab, Sink& sink) const
   {
     const Mesh_arrays& m = *m_mesh;
     const Index degree = m.corner_begin[u + 1] - m.corner_begin[u];
@@ -312,13 +298,15 @@ private:
       }
       h = hg;
       s.h = hg;
-      reach_third_vertex(s, gg, Mesh_arrays::next(hg), sigma, lab);
+      reach_third_vertex(s, gg, Mesh_arrays::next(hg), sigma, lab, sink);
     }
   }
 
   // s is in the frame of s.h (geometry g); the vertex y = source(hy) is the third vertex (cx, cy) when hy is
   // prev(s.h), or the target (length, 0) when hy is next(s.h). Offers y its distance through s.
-  void reach_third_vertex(const Vertex_source& s, const Halfedge_geometry& g, Index hy, double sigma, Index lab)
+  template <class Sink>
+  void reach_third_vertex(const Vertex_source& s, const Halfedge_geometry& g, Index hy, double sigma, Index lab,
+                          Sink& sink) const
   {
     const Mesh_arrays& m = *m_mesh;
     const Index y = m.source[hy];
@@ -353,8 +341,10 @@ private:
     t.rx = s.rx * ux + s.ry * uy; t.ry = -s.rx * uy + s.ry * ux;
     t.h = hy;
     t.root = s.root;
-    offer(y, d, t, lab);
+    sink(y, d, t, lab);
   }
+
+  Virtual_source_rounds m_rounds;
 };
 
 } // namespace internal

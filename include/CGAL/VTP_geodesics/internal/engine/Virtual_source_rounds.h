@@ -1,0 +1,426 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_ENGINE_VIRTUAL_SOURCE_ROUNDS_H
+#define CGAL_VTP_GEODESICS_INTERNAL_ENGINE_VIRTUAL_SOURCE_ROUNDS_H
+
+#include <CGAL/license/VTP_geodesics.h>
+
+#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/engine/Virtual_source_field.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <exception>
+#include <limits>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace CGAL {
+namespace VTP_geodesics {
+namespace internal {
+
+// The schedule of virtual source propagation (VSP on one thread, PVSP on several): rounds of buckets.
+//
+// The vertices waiting are kept in buckets of distances of a fixed width (half a short edge length, see
+// short_edge_length()). A
+// round takes every vertex of the lowest bucket at once (they are then final); the team computes their
+// offers (Virtual_source_front::take(), reading the field only; chunks of the round shared out
+// dynamically), each thread sorting its offers by the thread that owns the vertex offered (a fixed
+// function of the vertex); then each thread applies the offers to its own vertices and puts them in its
+// own buckets. A vertex not taken keeps the least offer in a total order (distance first, then the virtual
+// source, see better()), and no offer depends on another of the same round: so neither the order of the
+// round nor the number of threads changes a bit of the distances, labels and paths.
+//
+// Vertices of one round cannot lower each other (a heap, taking them one at a time, would let them): a
+// cost in accuracy that the benchmark measures (with buckets of half a short edge it is small). Every offer is
+// still the length of a path on the surface (the same walks make them), so the distances are never below
+// the exact ones.
+//
+// An offer of a vertex u is at most d(u) plus the longest edge (d(root) + |s - y| <= d(root) + |s - u| +
+// |u - y|) and at least d(u) minus the longest edge: the buckets in use span twice that length, and a ring
+// of buckets suffices. An offer below the next bucket waits in the next bucket.
+class Virtual_source_rounds
+{
+public:
+  typedef Virtual_source_field::Vertex_source Vertex_source;
+
+  // The bucket width, in short edge lengths (short_edge_length()).
+  static constexpr double bucket_width = 0.5;
+
+  // statistics of the last run: rounds, those run on several threads, bytes of the buckets and buffers;
+  // seconds (thread 0) choosing the rounds, computing the offers (with the wait for the team), applying them
+  std::size_t rounds = 0, parallel_rounds = 0, peak_bytes = 0;
+  double selection_seconds = 0., propagation_seconds = 0., merge_seconds = 0.;
+
+  // Runs the propagation of `front` (seeded: its heap holds the seeds) on `threads` threads; returns the
+  // number of threads of the team.
+  template <class Front>
+  int propagate(Front& front, int threads)
+  {
+    threads = (std::max)(threads, 1);
+    rounds = parallel_rounds = 0;
+    selection_seconds = propagation_seconds = merge_seconds = 0.;
+    m_done = false;
+    m_failed.store(false, std::memory_order_relaxed);
+    m_error = nullptr;
+    m_team = 1;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads) if(threads > 1)
+#endif
+    {
+      int t = 0;
+#ifdef _OPENMP
+      t = omp_get_thread_num();
+#pragma omp single
+      {
+        m_team = omp_get_num_threads();
+        guarded([&] { setup(front); });
+      }
+#else
+      guarded([&] { setup(front); });
+#endif
+      Clock::time_point t0, t1, t2;
+      for(;;)
+      {
+        if(t == 0)
+        {
+          t0 = Clock::now();
+          guarded([&] { next_round(front); });
+          t1 = Clock::now();
+          selection_seconds += seconds(t0, t1);
+        }
+        barrier();
+        if(m_done || m_failed.load(std::memory_order_relaxed))
+          break;
+        guarded([&] { compute(front, t); });
+        barrier();
+        if(t == 0)
+        {
+          t2 = Clock::now();
+          propagation_seconds += seconds(t1, t2);
+        }
+        guarded([&] { apply(front, t); });
+        barrier();
+        if(t == 0)
+          merge_seconds += seconds(t2, Clock::now());
+      }
+    }
+    peak_bytes = m_batch.capacity() * sizeof(Index);
+    for(const Thread_data& d : m_threads)
+    {
+      peak_bytes += d.peak_entries * sizeof(Entry) + d.ring.capacity() * sizeof(std::vector<Entry>);
+      for(const std::vector<Pending>& b : d.offers)
+        peak_bytes += b.capacity() * sizeof(Pending);
+    }
+    if(m_error)
+      std::rethrow_exception(m_error);
+    return m_team;
+  }
+
+private:
+  typedef std::pair<double, Index> Entry;
+  typedef std::chrono::steady_clock Clock;
+
+  struct Pending
+  {
+    Vertex_source s;
+    double d;
+    Index v;
+    Index label;
+  };
+
+  // what one thread owns: its buckets, and its offers by owner
+  struct Thread_data
+  {
+    std::vector<std::vector<Entry>> ring;
+    std::vector<std::vector<Pending>> offers;
+    std::size_t pending = 0, peak_entries = 0;
+  };
+
+  static double seconds(Clock::time_point a, Clock::time_point b)
+  {
+    return std::chrono::duration<double>(b - a).count();
+  }
+
+  static void barrier()
+  {
+#ifdef _OPENMP
+#pragma omp barrier
+#endif
+  }
+
+  template <class F>
+  void guarded(const F& f)
+  {
+    if(m_failed.load(std::memory_order_relaxed))
+      return;
+    try
+    {
+      f();
+    }
+    catch(...)
+    {
+#ifdef _OPENMP
+#pragma omp critical(vtp_geodesics_virtual_source_rounds)
+#endif
+      {
+        if(!m_error)
+          m_error = std::current_exception();
+        m_failed.store(true, std::memory_order_relaxed);
+      }
+    }
+  }
+
+  // the thread that owns vertex v (blocks of 64 vertices)
+  Index owner(Index v) const { return (v >> 6) % static_cast<Index>(m_team); }
+
+  // whether (d, s) is a better offer than the vertex's (d0, s0): a total order, so that the least offer of
+  // a round does not depend on the order in which they are applied
+  static bool better(double d, const Vertex_source& s, double d0, const Vertex_source& s0)
+  {
+    if(d != d0)
+      return d < d0;
+    if(s.root != s0.root)
+      return s.root < s0.root;
+    if(s.h != s0.h)
+      return s.h < s0.h;
+    const double a[6] = { s.sx, s.sy, s.lx, s.ly, s.rx, s.ry };
+    const double b[6] = { s0.sx, s0.sy, s0.lx, s0.ly, s0.rx, s0.ry };
+    for(int k = 0; k < 6; ++k)
+      if(a[k] != b[k])
+        return a[k] < b[k];
+    return false;
+  }
+
+  template <class Front>
+  void setup(Front& front)
+  {
+    const Mesh_arrays& m = *front.m_mesh;
+    m_width = bucket_width * short_edge_length(m);
+    if(!(m_width > 0.) || !std::isfinite(m_width))
+      m_width = 1.;
+    // the ring: the offers two longest edges around the current bucket, plus rounding; at most 2^16
+    // buckets (wider ones on meshes whose longest edge is that many times the bucket width)
+    const double max_ring = 65536.;
+    if(!(2. * m.max_edge_length / m_width < max_ring - 4.))
+      m_width = 2. * m.max_edge_length / (max_ring - 4.);
+    m_ring = static_cast<long long>(std::floor(2. * m.max_edge_length / m_width)) + 4;
+    m_threads.resize(static_cast<std::size_t>(m_team));
+    for(Thread_data& d : m_threads)
+    {
+      d.ring.resize(static_cast<std::size_t>(m_ring));
+      for(std::vector<Entry>& s : d.ring)
+        s.clear();
+      d.offers.resize(static_cast<std::size_t>(m_team));
+      d.pending = d.peak_entries = 0;
+    }
+    m_current = (std::numeric_limits<long long>::max)();
+    for(const Entry& e : front.m_heap)
+      m_current = (std::min)(m_current, index(e.first) - 1);
+    for(const Entry& e : front.m_heap)
+      push(m_threads[0], e.second, e.first);
+    front.m_heap.clear();
+    m_remaining_targets = front.mark_targets(m_is_target);
+    m_cutoff = front.m_settings.limit + 2. * m.max_edge_length;
+    m_next_chunk.store(0, std::memory_order_relaxed);
+  }
+
+  // A short edge length of the mesh (the first decile of the lengths of at most 4096 half-edges taken at
+  // a regular stride, zero lengths left out): on meshes of varying density, the buckets are those of the
+  // fine regions, where vertices of one round would otherwise be many edges apart.
+  static double short_edge_length(const Mesh_arrays& m)
+  {
+    const std::size_t nh = static_cast<std::size_t>(m.nf) * 3;
+    const std::size_t stride = (std::max)(std::size_t(1), nh / 4096);
+    std::vector<double> lengths;
+    lengths.reserve(nh / stride + 1);
+    for(std::size_t h = 0; h < nh; h += stride)
+    {
+      const double l = m.geometry.faces[h / 3].length[h % 3];
+      if(l > 0.)
+        lengths.push_back(l);
+    }
+    if(lengths.empty())
+      return m.mean_edge_length;
+    const std::size_t k = lengths.size() / 10;
+    std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(k), lengths.end());
+    return lengths[k];
+  }
+
+  long long index(double d) const
+  {
+    const double b = std::floor(d / m_width);
+    return b < 9e18 ? static_cast<long long>(b) : (std::numeric_limits<long long>::max)() / 2;
+  }
+
+  // a vertex waits in the bucket of its distance, after the current one, and within the ring
+  void push(Thread_data& td, Index v, double d) const
+  {
+    const long long b = (std::min)((std::max)(index(d), m_current + 1), m_current + m_ring - 1);
+    td.ring[static_cast<std::size_t>(b % m_ring)].emplace_back(d, v);
+    ++td.pending;
+    td.peak_entries = (std::max)(td.peak_entries, td.pending);
+  }
+
+  std::size_t pending() const
+  {
+    std::size_t n = 0;
+    for(const Thread_data& d : m_threads)
+      n += d.pending;
+    return n;
+  }
+
+  // thread 0: the vertices of the next round (m_batch, taken), or m_done
+  template <class Front>
+  void next_round(Front& front)
+  {
+    m_batch.clear();
+    m_next_chunk.store(0, std::memory_order_relaxed);
+    while(pending() > 0)
+    {
+      ++m_current;
+      const std::size_t slot_index = static_cast<std::size_t>(m_current % m_ring);
+      const bool beyond = static_cast<double>(m_current) * m_width > m_cutoff;
+      for(Thread_data& d : m_threads)
+      {
+        std::vector<Entry>& slot = d.ring[slot_index];
+        for(const Entry& e : slot)
+        {
+          const std::size_t v = static_cast<std::size_t>(e.second);
+          if(front.m_taken[v] || front.dist[v] != e.first)
+            continue;
+          if(beyond)
+          {
+            // no offer can be within the limit any more (see Virtual_source_front.h)
+            front.m_stopped = true;
+            m_done = true;
+            return;
+          }
+          front.m_taken[v] = 1;
+          m_batch.push_back(e.second);
+        }
+        d.pending -= slot.size();
+        slot.clear();
+      }
+      if(!m_batch.empty())
+        break;
+    }
+    if(m_batch.empty())
+    {
+      m_done = true;
+      return;
+    }
+    ++rounds;
+    if(m_team > 1 && m_batch.size() > chunk)
+      ++parallel_rounds;
+    front.m_taken_count += m_batch.size();
+    if(m_remaining_targets > 0)
+    {
+      for(Index v : m_batch)
+        if(m_is_target[static_cast<std::size_t>(v)])
+        {
+          m_is_target[static_cast<std::size_t>(v)] = 0;
+          --m_remaining_targets;
+        }
+      if(m_remaining_targets == 0)
+      {
+        // the vertices of this round are final; the others are not needed
+        front.m_stopped = has_waiting(front);
+        m_done = true;
+      }
+    }
+  }
+
+  template <class Front>
+  bool has_waiting(const Front& front) const
+  {
+    for(const Thread_data& d : m_threads)
+      for(const std::vector<Entry>& slot : d.ring)
+        for(const Entry& e : slot)
+          if(!front.m_taken[static_cast<std::size_t>(e.second)] && front.dist[static_cast<std::size_t>(e.second)] == e.first)
+            return true;
+    return false;
+  }
+
+  // thread t: the offers of chunks of the round, by owner
+  template <class Front>
+  void compute(const Front& front, int t)
+  {
+    Thread_data& td = m_threads[static_cast<std::size_t>(t)];
+    for(std::vector<Pending>& b : td.offers)
+      b.clear();
+    auto sink = [this, &td](Index v, double d, const Vertex_source& s, Index lab) {
+      Pending p;
+      p.s = s;
+      p.d = d;
+      p.v = v;
+      p.label = lab;
+      td.offers[static_cast<std::size_t>(owner(v))].push_back(p);
+    };
+    const std::size_t n = m_batch.size();
+    for(;;)
+    {
+      const std::size_t begin = m_next_chunk.fetch_add(chunk, std::memory_order_relaxed);
+      if(begin >= n)
+        break;
+      const std::size_t end = (std::min)(n, begin + chunk);
+      for(std::size_t i = begin; i < end; ++i)
+        front.take(m_batch[i], sink);
+    }
+  }
+
+  // thread t: the offers to its vertices
+  template <class Front>
+  void apply(Front& front, int t)
+  {
+    Thread_data& td = m_threads[static_cast<std::size_t>(t)];
+    for(Thread_data& from : m_threads)
+      for(const Pending& p : from.offers[static_cast<std::size_t>(t)])
+      {
+        const std::size_t v = static_cast<std::size_t>(p.v);
+        if(front.m_taken[v] || !better(p.d, p.s, front.dist[v], front.m_src[v]))
+          continue;
+        front.dist[v] = p.d;
+        front.m_src[v] = p.s;
+        if(!front.label.empty())
+          front.label[v] = p.label;
+        push(td, p.v, p.d);
+      }
+  }
+
+  // the vertices of the round a thread takes at a time
+  static constexpr std::size_t chunk = 32;
+
+  std::vector<Thread_data> m_threads;
+  std::vector<Index> m_batch;  // the vertices of the round
+  std::atomic<std::size_t> m_next_chunk{ 0 };
+  std::vector<unsigned char> m_is_target;
+  std::size_t m_remaining_targets = 0;
+  long long m_current = 0, m_ring = 1;
+  double m_width = 1., m_cutoff = 0.;
+  int m_team = 1;
+  bool m_done = false;
+  std::atomic<bool> m_failed{ false };
+  std::exception_ptr m_error;
+};
+
+} // namespace internal
+} // namespace VTP_geodesics
+} // namespace CGAL
+
+#endif // CGAL_VTP_GEODESICS_INTERNAL_ENGINE_VIRTUAL_SOURCE_ROUNDS_H
