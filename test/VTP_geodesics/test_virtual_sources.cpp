@@ -350,11 +350,14 @@ TEST(Virtual_sources, Parallel_rounds_give_the_same_bits_on_any_number_of_thread
 {
   for(double jitter : {0., 0.3})
   {
-    const Polygon_soup soup = planar_grid(120, 110, 1.2, 1., jitter, 7u);
+    // large enough for rounds of hundreds of vertices (smaller ones run on one thread)
+    const int nx = 280, ny = 260;
+    const Polygon_soup soup = planar_grid(nx, ny, 1.2, 1., jitter, 7u);
     const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
     Solver solver(mesh);
-    const std::vector<Vertex_index> sources = {Vertex_index(0), Vertex_index(5000), Vertex_index(9001)};
-    const Location point(Surface_mesh::Face_index(3000), {{0.2, 0.3, 0.5}});
+    const std::vector<Vertex_index> sources = {Vertex_index(grid_vertex(nx, nx / 2, ny / 2)), Vertex_index(0),
+                                               Vertex_index(grid_vertex(nx, nx - 3, 10))};
+    const Location point(Surface_mesh::Face_index(2 * (nx * ny / 2 + nx / 2)), {{0.2, 0.3, 0.5}});
     auto labelled = [&](std::vector<std::size_t>& labels) {
       labels.assign(index_range(mesh), 99);
       return boost::make_iterator_property_map(labels.begin(), get(boost::vertex_index, mesh));
@@ -379,7 +382,7 @@ TEST(Virtual_sources, Parallel_rounds_give_the_same_bits_on_any_number_of_thread
       EXPECT_GT(st.rounds, 0u);
       if(threads > 1 && st.threads > 1)
       {
-        EXPECT_GT(st.parallel_rounds, st.rounds / 2) << what;  // the rounds of this grid are large
+        EXPECT_GT(st.parallel_rounds, st.rounds / 10) << what;  // the team really ran rounds
       }
       std::vector<double> p(index_range(mesh));
       solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(p.begin(), get(boost::vertex_index, mesh)),

@@ -135,7 +135,8 @@ typename Solver_for<TriangleMesh, NamedParameters>::type solver_for(const Triang
 ///     \cgalParamDescription{if `true`, one virtual source per vertex (VSP) instead of window lists: an
 ///       approximation, much faster than the exact algorithm, whose every distance is the length of a path on
 ///       the surface (never below the exact distance; mean relative error about 0.5-0.9% on our benchmark
-///       meshes). `lambda` is then ignored; `CGAL::Parallel_tag` runs the same sequential propagation. See
+///       meshes). `lambda` is then ignored; `CGAL::Parallel_tag` runs its rounds on several threads, with the same
+///       distances bit for bit. See
 ///       \ref VTPGeodesicsVirtualSources.}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}

@@ -35,7 +35,7 @@ inline const Method_info* methods_begin()
     { "avtp",  false, true,  "approximate, sequential", false },
     { "pavtp", true,  true,  "approximate, parallel", false },
     { "vsp",   false, false, "approximate (one virtual source per vertex, upper bound), sequential", true },
-    { "pvsp",  true,  false, "as vsp, parallel tag (runs the sequential front)", true },
+    { "pvsp",  true,  false, "as vsp, on T threads (the same distances, bit for bit)", true },
   };
   return table;
 }

@@ -99,10 +99,24 @@ public:
       {
         if(t == 0)
         {
-          t0 = Clock::now();
-          guarded([&] { next_round(front); });
-          t1 = Clock::now();
-          selection_seconds += seconds(t0, t1);
+          // small rounds on thread 0 alone (the team waits at the barrier), until a large one or the end
+          for(;;)
+          {
+            t0 = Clock::now();
+            guarded([&] { next_round(front); });
+            t1 = Clock::now();
+            selection_seconds += seconds(t0, t1);
+            if(m_done || m_failed.load(std::memory_order_relaxed) || m_team == 1 || m_batch.size() >= min_parallel)
+              break;
+            guarded([&] { compute(front, 0); });
+            t2 = Clock::now();
+            propagation_seconds += seconds(t1, t2);
+            guarded([&] {
+              for(int o = 0; o < m_team; ++o)
+                apply(front, o, 0, 1);
+            });
+            merge_seconds += seconds(t2, Clock::now());
+          }
         }
         barrier();
         if(m_done || m_failed.load(std::memory_order_relaxed))
@@ -114,7 +128,7 @@ public:
           t2 = Clock::now();
           propagation_seconds += seconds(t1, t2);
         }
-        guarded([&] { apply(front, t); });
+        guarded([&] { apply(front, t, t, m_team); });
         barrier();
         if(t == 0)
           merge_seconds += seconds(t2, Clock::now());
@@ -326,7 +340,7 @@ private:
       return;
     }
     ++rounds;
-    if(m_team > 1 && m_batch.size() > chunk)
+    if(m_team > 1 && m_batch.size() >= min_parallel)
       ++parallel_rounds;
     front.m_taken_count += m_batch.size();
     if(m_remaining_targets > 0)
@@ -384,13 +398,14 @@ private:
     }
   }
 
-  // thread t: the offers to its vertices
+  // thread t: the offers of threads 0, ..., from - 1 to the vertices of owner o (its own ones when the
+  // team runs the round; every owner's, of thread 0 alone, in a small round)
   template <class Front>
-  void apply(Front& front, int t)
+  void apply(Front& front, int o, int t, int from)
   {
     Thread_data& td = m_threads[static_cast<std::size_t>(t)];
-    for(Thread_data& from : m_threads)
-      for(const Pending& p : from.offers[static_cast<std::size_t>(t)])
+    for(int f = 0; f < from; ++f)
+      for(const Pending& p : m_threads[static_cast<std::size_t>(f)].offers[static_cast<std::size_t>(o)])
       {
         const std::size_t v = static_cast<std::size_t>(p.v);
         if(front.m_taken[v] || !better(p.d, p.s, front.dist[v], front.m_src[v]))
@@ -403,8 +418,10 @@ private:
       }
   }
 
-  // the vertices of the round a thread takes at a time
+  // the vertices of the round a thread takes at a time, and the least round the team runs (smaller ones
+  // cost less than the barriers)
   static constexpr std::size_t chunk = 32;
+  static constexpr std::size_t min_parallel = 256;
 
   std::vector<Thread_data> m_threads;
   std::vector<Index> m_batch;  // the vertices of the round
