@@ -363,7 +363,8 @@ TEST(Virtual_sources, Parallel_rounds_give_the_same_bits_on_any_number_of_thread
       return boost::make_iterator_property_map(labels.begin(), get(boost::vertex_index, mesh));
     };
     std::vector<std::size_t> labels1, labels;
-    const std::vector<double> d1 = run(solver, mesh, sources, VP::virtual_sources(true).nearest_source_map(labelled(labels1)));
+    const std::vector<double> d1 =
+      run(solver, mesh, sources, VP::virtual_sources(true).nearest_source_map(labelled(labels1)));
     const std::vector<double> p1 = run(solver, mesh, point, VP::virtual_sources(true));
     const double limit = 0.3 * max_finite(d1);
     const std::vector<double> l1 = run(solver, mesh, sources, VP::virtual_sources(true).maximum_distance(limit));
@@ -373,7 +374,8 @@ TEST(Virtual_sources, Parallel_rounds_give_the_same_bits_on_any_number_of_thread
       std::vector<double> d(index_range(mesh));
       solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
                                          sources,
-                                         VP::virtual_sources(true).number_of_threads(threads).nearest_source_map(labelled(labels)));
+                                         VP::virtual_sources(true).number_of_threads(threads).nearest_source_map(
+                                           labelled(labels)));
       EXPECT_TRUE(identical(d, d1)) << what;
       EXPECT_EQ(labels, labels1) << what;
       const CGAL::VTP_geodesics::Propagation_statistics st = solver.statistics();
@@ -390,7 +392,8 @@ TEST(Virtual_sources, Parallel_rounds_give_the_same_bits_on_any_number_of_thread
       EXPECT_TRUE(identical(p, p1)) << what;
       std::vector<double> l(index_range(mesh));
       solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(l.begin(), get(boost::vertex_index, mesh)),
-                                         sources, VP::virtual_sources(true).number_of_threads(threads).maximum_distance(limit));
+                                         sources,
+                                         VP::virtual_sources(true).number_of_threads(threads).maximum_distance(limit));
       EXPECT_TRUE(identical(l, l1)) << what;
       EXPECT_TRUE(solver.statistics().stopped_early) << what;
     }

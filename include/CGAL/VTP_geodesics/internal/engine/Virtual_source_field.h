@@ -36,7 +36,7 @@ namespace internal {
 
 // The field of virtual source propagation (the propagation itself is Virtual_source_front.h): per vertex its
 // distance, its label and its virtual source (the image of its root and the wedge of directions of its
-// straight line), the heap of the vertices waiting, the seeding by the sources, and the end of a run
+// straight line), the vertices seeded (for the first round), the seeding by the sources, and the end of a run
 // (cutoff, targets in faces, trace-back offers); and the wedge geometry, which the propagation and the
 // targets share.
 class Virtual_source_field
@@ -67,7 +67,7 @@ public:
   const std::vector<Target>& targets() const { return m_targets; }
 
 protected:
-  typedef std::pair<double, Index> Heap_entry;
+  typedef std::pair<double, Index> Seeded_entry;
 
   // ------------------------------------------------------------------------------------------
   // wedge geometry
@@ -121,8 +121,8 @@ protected:
 
   void push(Index v, double d)
   {
-    m_heap.emplace_back(d, v);
-    m_peak_heap = (std::max)(m_peak_heap, m_heap.size());
+    m_seeded.emplace_back(d, v);
+    m_peak_seeded = (std::max)(m_peak_seeded, m_seeded.size());
   }
 
   // Lowers the distance of v (not taken) to d with source s, if smaller.
@@ -330,12 +330,12 @@ protected:
   Propagation_settings m_settings;
   std::vector<Vertex_source> m_src;
   std::vector<unsigned char> m_taken;
-  std::vector<Heap_entry> m_heap;  // the vertices seeded, for the first round (Virtual_source_rounds.h)
+  std::vector<Seeded_entry> m_seeded;  // the vertices seeded, for the first round (Virtual_source_rounds.h)
   std::vector<Target> m_targets;
   std::vector<double> m_target_value;
   std::vector<Offer> m_target_offer;
   std::size_t m_taken_count = 0;
-  std::size_t m_peak_heap = 0;
+  std::size_t m_peak_seeded = 0;
   bool m_stopped = false;
 };
 

@@ -88,13 +88,13 @@ public:
       if(settings.want_labels && initial_labels != nullptr)
         label = *initial_labels;
     }
-    m_heap.clear();
+    m_seeded.clear();
     m_targets = std::move(targets);
     m_target_value.assign(m_targets.size(), std::numeric_limits<double>::infinity());
     m_target_offer.assign(m_targets.size(), Offer());
     m_taken_count = 0;
     m_stopped = false;
-    m_peak_heap = 0;
+    m_peak_seeded = 0;
 
     seed(seeds);
     threads = m_rounds.propagate(*this, threads);
@@ -118,7 +118,7 @@ public:
     st.stopped_early = m_stopped;
     st.peak_live_windows = 0;
     st.peak_window_bytes = nv * (sizeof(Vertex_source) + sizeof(double) + 1 + (label.empty() ? 0 : sizeof(Index)))
-                           + (std::max)(m_rounds.peak_bytes, m_peak_heap * sizeof(Heap_entry));
+                           + (std::max)(m_rounds.peak_bytes, m_peak_seeded * sizeof(Seeded_entry));
     st.rounds = m_rounds.rounds;
     st.parallel_rounds = m_rounds.parallel_rounds;
     st.selection_seconds = m_rounds.selection_seconds;

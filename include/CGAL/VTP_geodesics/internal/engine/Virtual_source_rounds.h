@@ -67,7 +67,7 @@ public:
   std::size_t rounds = 0, parallel_rounds = 0, peak_bytes = 0;
   double selection_seconds = 0., propagation_seconds = 0., merge_seconds = 0.;
 
-  // Runs the propagation of `front` (seeded: its heap holds the seeds) on `threads` threads; returns the
+  // Runs the propagation of `front` (seeded: m_seeded holds the seeds) on `threads` threads; returns the
   // number of threads of the team.
   template <class Front>
   int propagate(Front& front, int threads)
@@ -244,11 +244,11 @@ private:
       d.pending = d.peak_entries = 0;
     }
     m_current = (std::numeric_limits<long long>::max)();
-    for(const Entry& e : front.m_heap)
+    for(const Entry& e : front.m_seeded)
       m_current = (std::min)(m_current, index(e.first) - 1);
-    for(const Entry& e : front.m_heap)
+    for(const Entry& e : front.m_seeded)
       push(m_threads[0], e.second, e.first);
-    front.m_heap.clear();
+    front.m_seeded.clear();
     m_remaining_targets = front.mark_targets(m_is_target);
     m_cutoff = front.m_settings.limit + 2. * m.max_edge_length;
     m_next_chunk.store(0, std::memory_order_relaxed);
@@ -366,8 +366,11 @@ private:
     for(const Thread_data& d : m_threads)
       for(const std::vector<Entry>& slot : d.ring)
         for(const Entry& e : slot)
-          if(!front.m_taken[static_cast<std::size_t>(e.second)] && front.dist[static_cast<std::size_t>(e.second)] == e.first)
+        {
+          const std::size_t v = static_cast<std::size_t>(e.second);
+          if(!front.m_taken[v] && front.dist[v] == e.first)
             return true;
+        }
     return false;
   }
 
