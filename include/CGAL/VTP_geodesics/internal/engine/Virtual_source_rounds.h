@@ -16,13 +16,13 @@
 
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/engine/Virtual_source_field.h>
+#include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
-#include <exception>
 #include <limits>
 #include <vector>
 
@@ -76,8 +76,7 @@ public:
     rounds = parallel_rounds = 0;
     selection_seconds = propagation_seconds = merge_seconds = 0.;
     m_done = false;
-    m_failed.store(false, std::memory_order_relaxed);
-    m_error = nullptr;
+    m_capture.reset();
     m_team = 1;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads) if(threads > 1)
@@ -89,10 +88,10 @@ public:
 #pragma omp single
       {
         m_team = omp_get_num_threads();
-        guarded([&] { setup(front); });
+        m_capture.run([&] { setup(front); });
       }
 #else
-      guarded([&] { setup(front); });
+      m_capture.run([&] { setup(front); });
 #endif
       Clock::time_point t0, t1, t2;
       for(;;)
@@ -103,15 +102,15 @@ public:
           for(;;)
           {
             t0 = Clock::now();
-            guarded([&] { next_round(front); });
+            m_capture.run([&] { next_round(front); });
             t1 = Clock::now();
             selection_seconds += seconds(t0, t1);
-            if(m_done || m_failed.load(std::memory_order_relaxed) || m_team == 1 || m_batch.size() >= min_parallel)
+            if(m_done || m_capture.failed() || m_team == 1 || m_batch.size() >= min_parallel)
               break;
-            guarded([&] { compute(front, 0); });
+            m_capture.run([&] { compute(front, 0); });
             t2 = Clock::now();
             propagation_seconds += seconds(t1, t2);
-            guarded([&] {
+            m_capture.run([&] {
               for(int o = 0; o < m_team; ++o)
                 apply(front, o, 0, 1);
             });
@@ -119,16 +118,16 @@ public:
           }
         }
         barrier();
-        if(m_done || m_failed.load(std::memory_order_relaxed))
+        if(m_done || m_capture.failed())
           break;
-        guarded([&] { compute(front, t); });
+        m_capture.run([&] { compute(front, t); });
         barrier();
         if(t == 0)
         {
           t2 = Clock::now();
           propagation_seconds += seconds(t1, t2);
         }
-        guarded([&] { apply(front, t, t, m_team); });
+        m_capture.run([&] { apply(front, t, t, m_team); });
         barrier();
         if(t == 0)
           merge_seconds += seconds(t2, Clock::now());
@@ -141,8 +140,7 @@ public:
       for(const std::vector<Pending>& b : d.offers)
         peak_bytes += b.capacity() * sizeof(Pending);
     }
-    if(m_error)
-      std::rethrow_exception(m_error);
+    m_capture.rethrow();
     return m_team;
   }
 
@@ -176,28 +174,6 @@ private:
 #ifdef _OPENMP
 #pragma omp barrier
 #endif
-  }
-
-  template <class F>
-  void guarded(const F& f)
-  {
-    if(m_failed.load(std::memory_order_relaxed))
-      return;
-    try
-    {
-      f();
-    }
-    catch(...)
-    {
-#ifdef _OPENMP
-#pragma omp critical(vtp_geodesics_virtual_source_rounds)
-#endif
-      {
-        if(!m_error)
-          m_error = std::current_exception();
-        m_failed.store(true, std::memory_order_relaxed);
-      }
-    }
   }
 
   // the thread that owns vertex v (blocks of 64 vertices)
@@ -435,8 +411,7 @@ private:
   double m_width = 1., m_cutoff = 0.;
   int m_team = 1;
   bool m_done = false;
-  std::atomic<bool> m_failed{ false };
-  std::exception_ptr m_error;
+  Exception_capture m_capture;  // an exception of the team, thrown again after the region
 };
 
 } // namespace internal

@@ -60,6 +60,54 @@ inline int number_of_threads(int requested)
 #endif
 }
 
+// The first exception thrown by work done on several threads, kept to be thrown again once they are done
+// (an exception cannot leave an OpenMP region). run(f) calls f() unless an exception was already caught.
+class Exception_capture
+{
+public:
+  void reset()
+  {
+    m_failed.store(false, std::memory_order_relaxed);
+    m_error = nullptr;
+  }
+
+  // whether some work has thrown (work still running may check it to stop early)
+  bool failed() const { return m_failed.load(std::memory_order_relaxed); }
+
+  template <class F>
+  void run(const F& f)
+  {
+    if(failed())
+      return;
+    try
+    {
+      f();
+    }
+    catch(...)
+    {
+#ifdef _OPENMP
+#pragma omp critical(vtp_geodesics_exception_capture)
+#endif
+      {
+        if(!m_error)
+          m_error = std::current_exception();
+        m_failed.store(true, std::memory_order_relaxed);
+      }
+    }
+  }
+
+  // throws the first exception caught again, if there was one
+  void rethrow() const
+  {
+    if(m_error)
+      std::rethrow_exception(m_error);
+  }
+
+private:
+  std::atomic<bool> m_failed{ false };
+  std::exception_ptr m_error;  // written in the critical section only
+};
+
 // A loop whose iterations are shared among `threads` OpenMP threads (on the calling thread alone when
 // threads <= 1 or without OpenMP). An exception cannot leave an OpenMP region: one thrown by an
 // iteration is caught there, the iterations not begun yet are skipped, and the first exception is thrown
@@ -77,14 +125,13 @@ public:
   int threads() const { return m_threads; }
 
   // whether an iteration has thrown (iterations still running may check it to stop early)
-  bool failed() const { return m_failed.load(std::memory_order_relaxed); }
+  bool failed() const { return m_capture.failed(); }
 
   // Calls body(i, t) for i = 0, ..., n - 1, t being the number of the calling thread (0 <= t < threads()).
   template <class Body>
   void run(long long n, const Body& body, bool rethrow_now = true)
   {
-    m_failed.store(false, std::memory_order_relaxed);
-    m_error = nullptr;
+    m_capture.reset();
 #ifdef _OPENMP
     const int threads = m_threads;
     if(m_schedule == DYNAMIC)
@@ -108,39 +155,18 @@ public:
   }
 
   // throws the first exception of the last run() again, if there was one
-  void rethrow() const
-  {
-    if(m_error)
-      std::rethrow_exception(m_error);
-  }
+  void rethrow() const { m_capture.rethrow(); }
 
 private:
   template <class Body>
   void iteration(long long i, int t, const Body& body)
   {
-    if(failed())
-      return;
-    try
-    {
-      body(i, t);
-    }
-    catch(...)
-    {
-#ifdef _OPENMP
-#pragma omp critical(vtp_geodesics_parallel_for)
-#endif
-      {
-        if(!m_error)
-          m_error = std::current_exception();
-        m_failed.store(true, std::memory_order_relaxed);
-      }
-    }
+    m_capture.run([&] { body(i, t); });
   }
 
   int m_threads;
   Schedule m_schedule;
-  std::atomic<bool> m_failed{ false };
-  std::exception_ptr m_error;  // written in the critical section only
+  Exception_capture m_capture;
 };
 
 } // namespace internal
