@@ -58,12 +58,6 @@ std::vector<double> distances_through_assoc_map(const Mesh& mesh, std::size_t so
   return d;
 }
 
-const Surface_mesh& elephant()
-{
-  static const Surface_mesh mesh = load_mesh("elephant.off");
-  return mesh;
-}
-
 } // namespace
 
 // ---------------------------------------------------------------------------------------------------

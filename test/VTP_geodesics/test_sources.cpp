@@ -41,13 +41,6 @@ typedef Geodesic_distance_solver<Surface_mesh> Solver;
 namespace {
 
 // The four methods: scheduling and reset period.
-struct Method
-{
-  const char* name;
-  bool parallel;
-  double lambda;
-};
-
 const Method exact_methods[] = { { "vtp", false, INF }, { "pvtp", true, INF } };
 const Method approximate_methods[] = { { "avtp", false, 2. }, { "pavtp", true, 2. } };
 
@@ -87,18 +80,6 @@ std::vector<const Method*> methods_to_test(bool approximate)
     r.push_back(&m);
   }
   return r;
-}
-
-// The point of a face location.
-Point_3 point_of(const Surface_mesh& mesh, const Location& l)
-{
-  const Surface_mesh::Halfedge_index h = mesh.halfedge(l.first);
-  const Point_3& a = mesh.point(mesh.source(h));
-  const Point_3& b = mesh.point(mesh.target(h));
-  const Point_3& c = mesh.point(mesh.target(mesh.next(h)));
-  return Point_3(l.second[0] * a.x() + l.second[1] * b.x() + l.second[2] * c.x(),
-                 l.second[0] * a.y() + l.second[1] * b.y() + l.second[2] * c.y(),
-                 l.second[0] * a.z() + l.second[1] * b.z() + l.second[2] * c.z());
 }
 
 // Reference distances from face locations with CGAL::Surface_mesh_shortest_path (the mesh is connected).
@@ -563,12 +544,6 @@ TEST(Bad_input, invalid_face_locations_are_rejected)
 // ---------------------------------------------------------------------------------------------------
 
 namespace {
-
-const Surface_mesh& elephant()
-{
-  static const Surface_mesh mesh = load_mesh("elephant.off");
-  return mesh;
-}
 
 // Rows of compute_each() by row index, with the number of times each row was handed over.
 struct Collected_rows

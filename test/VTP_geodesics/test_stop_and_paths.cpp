@@ -36,13 +36,6 @@ typedef Geodesic_distance_solver<Surface_mesh> Solver;
 
 namespace {
 
-struct Method
-{
-  const char* name;
-  bool parallel;
-  double lambda;
-};
-
 std::vector<Method> all_methods()
 {
   std::vector<Method> r = { { "vtp", false, INF }, { "avtp", false, 2. } };
@@ -70,25 +63,6 @@ std::vector<double> run(Solver& solver, const Surface_mesh& mesh, const Sources&
   else
     solver.compute(map, sources, np.lambda(method.lambda));
   return d;
-}
-
-Point_3 point_of(const Surface_mesh& mesh, const Location& l)
-{
-  const Surface_mesh::Halfedge_index h = mesh.halfedge(l.first);
-  const Point_3 p[3] = { mesh.point(mesh.source(h)), mesh.point(mesh.target(h)), mesh.point(mesh.target(mesh.next(h))) };
-  double c[3] = { 0., 0., 0. };
-  for(int k = 0; k < 3; ++k)
-    for(int j = 0; j < 3; ++j)
-      c[j] += l.second[std::size_t(k)] * p[k][j];
-  return Point_3(c[0], c[1], c[2]);
-}
-
-double polyline_length(const std::vector<Point_3>& p)
-{
-  double l = 0.;
-  for(std::size_t i = 1; i < p.size(); ++i)
-    l += distance(p[i - 1], p[i]);
-  return l;
 }
 
 double distance_to_segment(const Point_3& p, const Point_3& a, const Point_3& b)

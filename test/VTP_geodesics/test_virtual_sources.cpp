@@ -76,14 +76,6 @@ std::vector<double> run(Solver& solver, const Surface_mesh& mesh, const Sources&
   return ::testing::AssertionSuccess();
 }
 
-double polyline_length(const std::vector<Point_3>& p)
-{
-  double l = 0.;
-  for(std::size_t i = 1; i < p.size(); ++i)
-    l += distance(p[i - 1], p[i]);
-  return l;
-}
-
 // A cone of apex (0, 0, height) over a circle of radius `radius`, `sectors` sectors, `rings` rings below
 // the apex (vertex 0 is the apex), open at the bottom.
 Polygon_soup cone(int sectors, int rings, double radius, double height)

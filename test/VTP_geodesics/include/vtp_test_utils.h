@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <iostream>
@@ -22,6 +23,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #ifndef VTP_TEST_DATA_DIR
@@ -229,6 +231,45 @@ inline Polygon_soup to_soup(const Surface_mesh& mesh, std::vector<std::size_t>* 
 
 // Euclidean distance between two points.
 inline double distance(const Point_3& a, const Point_3& b) { return std::sqrt(CGAL::squared_distance(a, b)); }
+
+// The length of a polyline.
+inline double polyline_length(const std::vector<Point_3>& p)
+{
+  double l = 0.;
+  for(std::size_t i = 1; i < p.size(); ++i)
+    l += distance(p[i - 1], p[i]);
+  return l;
+}
+
+// A point of a face given by barycentric coordinates with respect to the vertices of the face (starting
+// at the source of its half-edge).
+inline Point_3 point_of(const Surface_mesh& mesh,
+                        const std::pair<Surface_mesh::Face_index, std::array<double, 3> >& location)
+{
+  const Surface_mesh::Halfedge_index h = mesh.halfedge(location.first);
+  const Point_3& a = mesh.point(mesh.source(h));
+  const Point_3& b = mesh.point(mesh.target(h));
+  const Point_3& c = mesh.point(mesh.target(mesh.next(h)));
+  const std::array<double, 3>& w = location.second;
+  return Point_3(w[0] * a.x() + w[1] * b.x() + w[2] * c.x(), w[0] * a.y() + w[1] * b.y() + w[2] * c.y(),
+                 w[0] * a.z() + w[1] * b.z() + w[2] * c.z());
+}
+
+// The elephant of the test data (read once).
+inline const Surface_mesh& elephant()
+{
+  static const Surface_mesh mesh = load_mesh("elephant.off");
+  return mesh;
+}
+
+// A method of the tests that run several: its name, whether it runs with CGAL::Parallel_tag, and its
+// lambda (infinity for the exact methods).
+struct Method
+{
+  const char* name;
+  bool parallel;
+  double lambda;
+};
 
 } // namespace vtp_test
 
