@@ -164,7 +164,8 @@ private:
   }
 
   // Vertex u is taken: its offers to its neighbours, each given to sink(v, d, source, label) if v is not
-  // taken and d is below its distance.
+  // taken and d is not above its distance (an offer equal to it may still win the tie, see
+  // Virtual_source_rounds::better()).
   template <class Sink>
   void take(Index u, Sink& sink) const
   {
@@ -178,7 +179,7 @@ private:
       const Index h = m.corners[c];
       const Index b = m.source[Mesh_arrays::next(h)];
       const double db = du + m.geometry.faces[static_cast<std::size_t>(h / 3)].length[h % 3];
-      if(db < dist[static_cast<std::size_t>(b)] && !m_taken[static_cast<std::size_t>(b)])
+      if(db <= dist[static_cast<std::size_t>(b)] && !m_taken[static_cast<std::size_t>(b)])
       {
         const Halfedge_geometry g = m.geometry[Mesh_arrays::next(h)];  // B at the origin, C on the x axis, u above
         offer_along_edge(b, db, g.cx, g.cy, -g.cx, -g.cy, g.length - g.cx, -g.cy, Mesh_arrays::next(h), u, lab, sink);
@@ -203,7 +204,7 @@ private:
   void offer_along_edge(Index v, double d, double sx, double sy, double rx, double ry, double lx, double ly, Index h,
                         Index root, Index lab, Sink& sink) const
   {
-    if(m_taken[static_cast<std::size_t>(v)] || !(d < dist[static_cast<std::size_t>(v)]))
+    if(m_taken[static_cast<std::size_t>(v)] || !(d <= dist[static_cast<std::size_t>(v)]))
       return;
     Vertex_source s;
     s.sx = sx; s.sy = sy;
@@ -318,7 +319,7 @@ private:
       return;
     const double dx = px - s.sx, dy = py - s.sy;
     const double d = sigma + std::sqrt(dx * dx + dy * dy);
-    if(!(d < dist[static_cast<std::size_t>(y)]))
+    if(!(d <= dist[static_cast<std::size_t>(y)]))
       return;
     // the frame of hy: y at the origin
     double ux, uy;

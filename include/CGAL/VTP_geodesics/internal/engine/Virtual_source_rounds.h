@@ -44,7 +44,10 @@ namespace internal {
 // function of the vertex); then each thread applies the offers to its own vertices and puts them in its
 // own buckets. A vertex not taken keeps the least offer in a total order (distance first, then the virtual
 // source, see better()), and no offer depends on another of the same round: so neither the order of the
-// round nor the number of threads changes a bit of the distances, labels and paths.
+// round nor the number of threads changes a bit of the distances, labels and paths. A round that one
+// thread runs alone (VSP, and the small rounds of PVSP) applies each offer at once instead of sorting it
+// out: the same least offers (take() lets through every offer not above the vertex's distance, so an offer
+// that ties with one applied before it in the round still meets it in better()), without the buffers.
 //
 // Vertices of one round cannot lower each other (a heap, taking them one at a time, would let them): a
 // cost in accuracy that the benchmark measures (with buckets of half a short edge it is small). Every offer is
@@ -63,7 +66,8 @@ public:
   static constexpr double bucket_width = 0.5;
 
   // statistics of the last run: rounds, those run on several threads, bytes of the buckets and buffers;
-  // seconds (thread 0) choosing the rounds, computing the offers (with the wait for the team), applying them
+  // seconds (thread 0) choosing the rounds, computing the offers (with the wait for the team; in a round of
+  // thread 0 alone, applying them too), applying them (rounds of the team)
   std::size_t rounds = 0, parallel_rounds = 0, peak_bytes = 0;
   double selection_seconds = 0., propagation_seconds = 0., merge_seconds = 0.;
 
@@ -105,16 +109,10 @@ public:
             m_capture.run([&] { next_round(front); });
             t1 = Clock::now();
             selection_seconds += seconds(t0, t1);
-            if(m_done || m_capture.failed() || m_team == 1 || m_batch.size() >= min_parallel)
+            if(m_done || m_capture.failed() || (m_team > 1 && m_batch.size() >= min_parallel))
               break;
-            m_capture.run([&] { compute(front, 0); });
-            t2 = Clock::now();
-            propagation_seconds += seconds(t1, t2);
-            m_capture.run([&] {
-              for(int o = 0; o < m_team; ++o)
-                apply(front, o, 0, 1);
-            });
-            merge_seconds += seconds(t2, Clock::now());
+            m_capture.run([&] { take_alone(front); });
+            propagation_seconds += seconds(t1, Clock::now());
           }
         }
         barrier();
@@ -127,7 +125,7 @@ public:
           t2 = Clock::now();
           propagation_seconds += seconds(t1, t2);
         }
-        m_capture.run([&] { apply(front, t, t, m_team); });
+        m_capture.run([&] { apply(front, t); });
         barrier();
         if(t == 0)
           merge_seconds += seconds(t2, Clock::now());
@@ -377,24 +375,40 @@ private:
     }
   }
 
-  // thread t: the offers of threads 0, ..., from - 1 to the vertices of owner o (its own ones when the
-  // team runs the round; every owner's, of thread 0 alone, in a small round)
+  // thread t: the offers of every thread to the vertices it owns
   template <class Front>
-  void apply(Front& front, int o, int t, int from)
+  void apply(Front& front, int t)
   {
     Thread_data& td = m_threads[static_cast<std::size_t>(t)];
-    for(int f = 0; f < from; ++f)
-      for(const Pending& p : m_threads[static_cast<std::size_t>(f)].offers[static_cast<std::size_t>(o)])
-      {
-        const std::size_t v = static_cast<std::size_t>(p.v);
-        if(front.m_taken[v] || !better(p.d, p.s, front.dist[v], front.m_src[v]))
-          continue;
-        front.dist[v] = p.d;
-        front.m_src[v] = p.s;
-        if(!front.label.empty())
-          front.label[v] = p.label;
-        push(td, p.v, p.d);
-      }
+    for(const Thread_data& from : m_threads)
+      for(const Pending& p : from.offers[static_cast<std::size_t>(t)])
+        lower(front, td, p.v, p.d, p.s, p.label);
+  }
+
+  // thread 0 alone: the offers of the round, each applied at once
+  template <class Front>
+  void take_alone(Front& front)
+  {
+    Thread_data& td = m_threads[0];
+    auto sink = [this, &front, &td](Index v, double d, const Vertex_source& s, Index lab) {
+      lower(front, td, v, d, s, lab);
+    };
+    for(Index u : m_batch)
+      front.take(u, sink);
+  }
+
+  // the vertex v (not taken) keeps the offer (d, s) if it is better than its own
+  template <class Front>
+  void lower(Front& front, Thread_data& td, Index v, double d, const Vertex_source& s, Index lab) const
+  {
+    const std::size_t i = static_cast<std::size_t>(v);
+    if(front.m_taken[i] || !better(d, s, front.dist[i], front.m_src[i]))
+      return;
+    front.dist[i] = d;
+    front.m_src[i] = s;
+    if(!front.label.empty())
+      front.label[i] = lab;
+    push(td, v, d);
   }
 
   // the vertices of the round a thread takes at a time, and the least round the team runs (smaller ones
