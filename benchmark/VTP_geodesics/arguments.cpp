@@ -14,7 +14,7 @@ void print_usage(std::ostream& os)
 {
   os << "usage: vtp_benchmark [options] MESH...\n"
         "\n"
-        "Inputs (applied in this order; the mesh label gets /rR, /LN, /sN):\n"
+        "Inputs (applied in this order; the mesh label gets /rR, /LN, /sN, /morton):\n"
         "  --remesh R       isotropic remeshing (CGAL::Polygon_mesh_processing::isotropic_remeshing) at a\n"
         "                   target edge length of R times the mean edge length of the input (e.g. 0.25\n"
         "                   gives about 16x more vertices)\n"
@@ -22,6 +22,10 @@ void print_usage(std::ostream& os)
         "  --loop N         Loop subdivision (CGAL::Subdivision_method_3::Loop_subdivision), N steps (x4 each)\n"
         "  --subdivide N    1-to-4 midpoint subdivision, N times: every new vertex is flat (angle sum\n"
         "                   360 degrees), so few vertices are saddles: the easy case for VTP\n"
+        "  --morton         renumber the vertices along a Morton (Z-order) curve of their positions and\n"
+        "                   the faces by their first vertex, vertex 0 staying vertex 0: neighbours close\n"
+        "                   in memory, as in many scans (CGAL's subdivisions and remeshings number new\n"
+        "                   vertices far from their neighbours)\n"
         "  --save-meshes DIR  write each (generated) mesh as DIR/<label>.off, vertices in index order\n"
         "\n"
         "Methods and output:\n"
@@ -76,6 +80,7 @@ const vtp_support::Option_table<Parsed>& option_table()
   typedef const std::string& S;
   static const vtp_support::Option_table<Parsed> table = {
     { "--help", nullptr, nullptr, [](Parsed& p, S, S) { p.a.help = true; } },
+    { "--morton", nullptr, nullptr, [](Parsed& p, S, S) { p.a.morton = true; } },
     { "--subdivide", "N", nullptr, [](Parsed& p, S n, S v) { p.a.subdivide = static_cast<int>(parse_integer(n, v, 0, 6)); } },
     { "--loop", "N", nullptr, [](Parsed& p, S n, S v) { p.a.loop = static_cast<int>(parse_integer(n, v, 0, 6)); } },
     { "--remesh", "R", nullptr,

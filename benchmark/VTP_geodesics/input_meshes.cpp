@@ -11,8 +11,15 @@
 
 #include <vtp_support/midpoint_subdivision.h>
 
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
+#include <utility>
+#include <vector>
 #include <sstream>
 #include <string>
 
@@ -30,10 +37,74 @@ namespace {
 
 std::string base_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
+// the 21 low bits of x spread to every third bit
+std::uint64_t spread_bits(std::uint64_t x)
+{
+  x &= 0x1fffff;
+  x = (x | x << 32) & 0x1f00000000ffffULL;
+  x = (x | x << 16) & 0x1f0000ff0000ffULL;
+  x = (x | x << 8) & 0x100f00f00f00f00fULL;
+  x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+  x = (x | x << 2) & 0x1249249249249249ULL;
+  return x;
+}
+
+// Renumbers the vertices of `mesh` (no garbage) along a Morton curve of their positions, vertex 0 first,
+// and orders the faces by their least new vertex index.
+void reorder_morton(Mesh& mesh)
+{
+  const std::size_t n = mesh.number_of_vertices();
+  CGAL::Bbox_3 box;
+  for(Mesh::Vertex_index v : mesh.vertices())
+    box += mesh.point(v).bbox();
+  const double size = (std::max)({ box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin(), 1e-300 });
+  const double cells = double((1 << 21) - 1);
+  std::vector<std::pair<std::uint64_t, std::uint32_t> > keys;
+  keys.reserve(n);
+  for(Mesh::Vertex_index v : mesh.vertices())
+  {
+    const auto& p = mesh.point(v);
+    const auto cell = [&](double x, double lo) { return static_cast<std::uint64_t>((x - lo) / size * cells); };
+    const std::uint64_t key = spread_bits(cell(p.x(), box.xmin())) | spread_bits(cell(p.y(), box.ymin())) << 1
+                              | spread_bits(cell(p.z(), box.zmin())) << 2;
+    keys.emplace_back(std::uint32_t(v) == 0 ? 0 : key + 1, std::uint32_t(v));
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::size_t> new_index(n);
+  std::vector<Mesh::Point> points(n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    new_index[keys[i].second] = i;
+    points[i] = mesh.point(Mesh::Vertex_index(keys[i].second));
+  }
+  std::vector<std::array<std::size_t, 3> > triangles;
+  triangles.reserve(mesh.number_of_faces());
+  for(Mesh::Face_index f : mesh.faces())
+  {
+    std::array<std::size_t, 3> t;
+    std::size_t k = 0;
+    for(Mesh::Vertex_index v : mesh.vertices_around_face(mesh.halfedge(f)))
+      t[k++] = new_index[std::size_t(v)];
+    triangles.push_back(t);
+  }
+  std::stable_sort(triangles.begin(), triangles.end(), [](const std::array<std::size_t, 3>& a, const std::array<std::size_t, 3>& b) {
+    return (std::min)({ a[0], a[1], a[2] }) < (std::min)({ b[0], b[1], b[2] });
+  });
+  Mesh reordered;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, reordered);
+  bool same = reordered.number_of_vertices() == n && reordered.number_of_faces() == mesh.number_of_faces();
+  for(std::size_t i = 0; same && i < n; ++i)
+    same = reordered.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(i))) == points[i];
+  if(!same)
+    throw Tool_error("--morton: the renumbered mesh is not the mesh in the new order");
+  mesh = std::move(reordered);
+}
+
 } // namespace
 
 // Reads a mesh and makes the requested input from it: isotropic remeshing, then Loop subdivision,
-// then midpoint subdivision. The vertices are numbered 0..n-1 in the end (garbage collected).
+// then midpoint subdivision, then (--morton) the renumbering along a Morton curve. The vertices are numbered
+// 0..n-1 in the end (garbage collected).
 std::string load_mesh(const std::string& file, const Arguments& args, Mesh& mesh)
 {
   std::ostringstream diagnostics;
@@ -72,6 +143,11 @@ std::string load_mesh(const std::string& file, const Arguments& args, Mesh& mesh
   }
   if(mesh.has_garbage())
     mesh.collect_garbage();
+  if(args.morton)
+  {
+    reorder_morton(mesh);
+    label += "/morton";
+  }
   return label;
 }
 

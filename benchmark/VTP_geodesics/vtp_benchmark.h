@@ -74,6 +74,7 @@ struct Arguments
   int remesh_iterations = 3;
   int loop = 0;
   int subdivide = 0;
+  bool morton = false;      // renumber along a Morton curve (see reorder_morton())
   std::string save_meshes;
   std::size_t sources = 1;
   std::vector<Method> methods;
