@@ -49,12 +49,15 @@ struct Propagation_statistics
   std::size_t resets = 0;
   /// Whether the propagation stopped before the end, at the distance limit or once every target was final.
   bool stopped_early = false;
-  /// Parallel scheduling only: propagation rounds (arrays of lists), and those run on several threads.
+  /// Parallel scheduling and virtual sources only: propagation rounds (arrays of lists; with
+  /// `virtual_sources(true)`, buckets of vertices), and those run on several threads.
   std::size_t rounds = 0;
   std::size_t parallel_rounds = 0;
   /// Parallel scheduling only: seconds spent selecting vertices and lists (serial), propagating
   /// lists and storing their children (parallel), and in the serial tail of each round (lowering
-  /// the distances, queueing the next lists; `merge_seconds`).
+  /// the distances, queueing the next lists; `merge_seconds`). With `virtual_sources(true)`:
+  /// choosing the rounds, computing the offers (and applying them, in a round that one thread runs
+  /// alone), and applying the offers of a round that the team runs (`merge_seconds`).
   double selection_seconds = 0.;
   double propagation_seconds = 0.;
   double merge_seconds = 0.;
