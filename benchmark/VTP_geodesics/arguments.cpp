@@ -23,7 +23,7 @@ void print_usage(std::ostream& os)
         "  --subdivide N    1-to-4 midpoint subdivision, N times: every new vertex is flat (angle sum\n"
         "                   360 degrees), so few vertices are saddles: the easy case for VTP\n"
         "  --morton         renumber the vertices along a Morton (Z-order) curve of their positions and\n"
-        "                   the faces by their first vertex, vertex 0 staying vertex 0: neighbours close\n"
+        "                   the faces by their least vertex, vertex 0 staying vertex 0: neighbours close\n"
         "                   in memory, as in many scans (CGAL's subdivisions and remeshings number new\n"
         "                   vertices far from their neighbours)\n"
         "  --save-meshes DIR  write each (generated) mesh as DIR/<label>.off, vertices in index order\n"
