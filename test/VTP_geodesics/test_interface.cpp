@@ -20,8 +20,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <limits>
 #include <map>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -554,4 +556,124 @@ TEST(Bad_input, messages_name_the_vertex_face_source_or_target)
   const auto bad_location = std::make_pair(*faces(mesh).begin(), std::array<double, 3>{ { 0.5, 0.9, 0. } });
   EXPECT_MESSAGE(([&] { solver.compute(map, bad_location); }), "source 0 (in face 0)");
   EXPECT_MESSAGE(([&] { solver.compute(map, Vertex_index(0), VP::number_of_threads(-3)); }), "got -3");
+}
+
+// ------------------------------------------------------------------------------------------------------
+// Numbering: the solver numbers the vertices along a space-filling curve inside, users see the order
+// of vertices(tm) everywhere.
+// ------------------------------------------------------------------------------------------------------
+
+TEST(Numbering, users_see_the_order_of_the_mesh_whatever_the_order_inside)
+{
+  namespace VP = CGAL::VTP_geodesics::parameters;
+  const Surface_mesh& mesh = elephant();
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  const std::vector<Vertex_index> in_order(vertices(mesh).begin(), vertices(mesh).end());
+  ASSERT_EQ(solver.vertex_list(), in_order);
+  for(std::size_t i = 0; i < in_order.size(); ++i)
+    ASSERT_EQ(solver.vertex_id(in_order[i]), i);
+  // the engine's own numbering is another one (else this test would not test anything)
+  const auto& arrays = solver.mesh_arrays();
+  std::size_t renumbered = 0;
+  std::size_t f = 0;
+  for(auto face : faces(mesh))
+  {
+    auto h = halfedge(face, mesh);
+    for(int k = 0; k < 3; ++k, h = next(h, mesh))
+      renumbered += std::size_t(arrays.source[3 * f + std::size_t(k)]) != solver.vertex_id(source(h, mesh));
+    ++f;
+  }
+  EXPECT_GT(renumbered, num_faces(mesh));
+
+  const Vertex_index s(1234);
+  for(bool vsp : { false, true })
+  {
+    std::vector<double> d(num_vertices(mesh), NOT_A_VERTEX);
+    solver.compute(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)), s,
+                   VP::virtual_sources(vsp));
+    ASSERT_EQ(d[s], 0.);
+    for(Vertex_index v : vertices(mesh))
+    {
+      ASSERT_EQ(solver.distance(v), d[v]);
+      ASSERT_EQ(solver.distances()[solver.vertex_id(v)], d[v]);
+    }
+    std::size_t rows = 0;
+    solver.compute_each(std::vector<Vertex_index>(1, s), [&](std::size_t, Vertex_index, const std::vector<double>& row) {
+      ++rows;
+      for(Vertex_index v : vertices(mesh))
+        ASSERT_EQ(row[solver.vertex_id(v)], d[v]) << "vertex " << std::size_t(v);
+    }, VP::virtual_sources(vsp));
+    EXPECT_EQ(rows, 1u);
+  }
+}
+
+// The same mesh with its vertices listed in a shuffled order gives the same distances, bit for bit (the
+// numbering inside depends on the points only), and the same farthest-point samples.
+TEST(Numbering, distances_do_not_depend_on_the_order_of_the_vertices)
+{
+  namespace VP = CGAL::VTP_geodesics::parameters;
+  const Polygon_soup soup = to_soup(elephant());
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);  // built as the shuffled copy is
+  std::vector<std::size_t> new_of(soup.points.size());
+  for(std::size_t i = 0; i < new_of.size(); ++i)
+    new_of[i] = i;
+  std::mt19937 generator(7);
+  std::shuffle(new_of.begin(), new_of.end(), generator);
+  Polygon_soup shuffled;
+  shuffled.points.resize(soup.points.size());
+  for(std::size_t i = 0; i < new_of.size(); ++i)
+    shuffled.points[new_of[i]] = soup.points[i];
+  for(const std::vector<std::size_t>& polygon : soup.polygons)
+    shuffled.add_triangle(new_of[polygon[0]], new_of[polygon[1]], new_of[polygon[2]]);
+  const Surface_mesh other = to_mesh<Surface_mesh>(shuffled);
+
+  const std::size_t s = 2774;
+  for(bool vsp : { false, true })
+  {
+    const std::vector<double> d = vtp_distances(mesh, Vertex_index(Surface_mesh::size_type(s)), VP::virtual_sources(vsp));
+    const std::vector<double> e
+      = vtp_distances(other, Vertex_index(Surface_mesh::size_type(new_of[s])), VP::virtual_sources(vsp));
+    for(std::size_t i = 0; i < d.size(); ++i)
+      ASSERT_EQ(d[i], e[new_of[i]]) << "vertex " << i << (vsp ? " (vsp)" : " (vtp)");
+  }
+
+  Geodesic_distance_solver<Surface_mesh> a(mesh), b(other);
+  const auto first = a.farthest_point_sampling(6, VP::first_sample(Vertex_index(Surface_mesh::size_type(s))));
+  const auto second = b.farthest_point_sampling(6, VP::first_sample(Vertex_index(Surface_mesh::size_type(new_of[s]))));
+  ASSERT_EQ(first.samples.size(), second.samples.size());
+  for(std::size_t k = 0; k < first.samples.size(); ++k)
+    EXPECT_EQ(new_of[std::size_t(first.samples[k])], std::size_t(second.samples[k]));
+  for(std::size_t i = 0; i < new_of.size(); ++i)
+  {
+    ASSERT_EQ(first.distances[i], second.distances[new_of[i]]);
+    ASSERT_EQ(first.labels[i], second.labels[new_of[i]]);
+  }
+}
+
+// Error messages name vertices by their place in vertices(tm).
+TEST(Numbering, messages_name_vertices_in_the_order_of_the_mesh)
+{
+  namespace VP = CGAL::VTP_geodesics::parameters;
+  Polygon_soup soup = planar_grid(6, 6, 1., 1.);
+  Polygon_soup two = soup;
+  two.append(soup, Vector_3(3., 0., 0.));  // a second component
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(two);
+  Geodesic_distance_solver<Surface_mesh> solver(mesh);
+  std::vector<double> d(num_vertices(mesh));
+  auto map = boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh));
+  for(std::size_t bad : { std::size_t(0), std::size_t(17), std::size_t(40), std::size_t(num_vertices(mesh) - 1) })
+  {
+    std::vector<double> known(num_vertices(mesh), 1.);
+    known[bad] = -2.;
+    auto known_map = boost::make_iterator_property_map(known.begin(), get(boost::vertex_index, mesh));
+    EXPECT_MESSAGE(([&] { solver.compute(map, Vertex_index(0), VP::initial_distances(known_map)); }),
+                   "initial distance of vertex " + std::to_string(bad) + " is");
+  }
+  solver.compute(map, Vertex_index(0));
+  const std::size_t unreachable = num_vertices(mesh) - 3;
+  ASSERT_EQ(d[unreachable], INF);
+  std::vector<Point_3> path;
+  EXPECT_MESSAGE(([&] { solver.shortest_path_points(Vertex_index(Surface_mesh::size_type(unreachable)),
+                                                     std::back_inserter(path)); }),
+                 "no path: vertex " + std::to_string(unreachable) + " is not reached");
 }

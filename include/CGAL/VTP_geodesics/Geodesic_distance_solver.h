@@ -288,10 +288,13 @@ public:
   /// @{
 
   /// the distances, indexed by `vertex_id()`.
-  const std::vector<double>& distances() const { return m_engine.distances(); }
+  const std::vector<double>& distances() const { return m_distances; }
   /// the distance of `v`.
   /// \pre `v` is a vertex of the mesh.
-  double distance(vertex_descriptor v) const { return m_engine.distances()[vertex_id(v)]; }
+  double distance(vertex_descriptor v) const
+  {
+    return m_engine.distances()[static_cast<std::size_t>(get(m_mesh.vertex_id, v))];
+  }
   /// the number of targets (named parameter `targets`).
   std::size_t number_of_targets() const { return m_engine.number_of_targets(); }
   /// the distance of target `i` (in the order given): exact, or `+infinity` if it is unreachable or
@@ -330,7 +333,8 @@ public:
   template <class VertexOrLocation, class OutputIterator>
   OutputIterator shortest_path_points(const VertexOrLocation& p, OutputIterator out)
   {
-    for(const internal::Trace_point& q : m_paths.trace(m_mesh.arrays, m_engine, m_mesh.target_of(p, "the start of the path")))
+    for(const internal::Trace_point& q : m_paths.trace(m_mesh.arrays, m_engine, m_mesh.target_of(p, "the start of the path"),
+                                                         m_mesh.position))
       *out++ = internal::point_of<Point_3>(m_mesh, m_vpm, q);
     return out;
   }
@@ -341,7 +345,8 @@ public:
   template <class VertexOrLocation, class OutputIterator>
   OutputIterator shortest_path_locations(const VertexOrLocation& p, OutputIterator out)
   {
-    for(const internal::Trace_point& q : m_paths.trace(m_mesh.arrays, m_engine, m_mesh.target_of(p, "the start of the path")))
+    for(const internal::Trace_point& q : m_paths.trace(m_mesh.arrays, m_engine, m_mesh.target_of(p, "the start of the path"),
+                                                         m_mesh.position))
       *out++ = internal::location_of(m_mesh, q);
     return out;
   }
@@ -353,9 +358,9 @@ public:
   /// the dense index of `v` (vertices are numbered in the order of `vertices(tm)`; error messages name
   /// vertices by this index).
   /// \pre `v` is a vertex of the mesh.
-  std::size_t vertex_id(vertex_descriptor v) const { return static_cast<std::size_t>(get(m_mesh.vertex_id, v)); }
+  std::size_t vertex_id(vertex_descriptor v) const { return m_mesh.position_of(get(m_mesh.vertex_id, v)); }
   /// the vertices, in the order of their dense indices.
-  const std::vector<vertex_descriptor>& vertex_list() const { return m_mesh.vertices; }
+  const std::vector<vertex_descriptor>& vertex_list() const { return m_mesh.vertices_in_order; }
   /// number of vertices and faces of the mesh.
   std::size_t number_of_vertices() const { return m_mesh.vertices.size(); }
   std::size_t number_of_faces() const { return static_cast<std::size_t>(m_mesh.arrays.nf); }
@@ -383,6 +388,7 @@ private:
     const auto t0 = std::chrono::steady_clock::now();
     internal::import_mesh(m_mesh, m_vpm, m_traits, internal::number_of_threads(threads));
     m_engine.distances().assign(m_mesh.vertices.size(), std::numeric_limits<double>::infinity());
+    m_distances = m_engine.distances();
     m_preprocessing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
 
@@ -393,10 +399,11 @@ private:
       throw Invalid_input_error("no source");
     int threads = 0;
     internal::Propagation_settings settings = internal::settings_from_parameters(np, m_mesh, threads);
-    const internal::Known_field known = internal::known_field_of(np, m_mesh.vertices, m_mesh.length_scale, settings, seeds);
+    const internal::Known_field known = internal::known_field_of(np, m_mesh, m_mesh.length_scale, settings, seeds);
     std::vector<internal::Target> targets = m_mesh.targets_of(CGAL::parameters::get_parameter(np, internal_np::targets));
     m_engine.template run<ConcurrencyTag>(m_mesh.arrays, seeds, std::move(targets), settings, threads, m_statistics,
                                           &known.distances, &known.labels);
+    m_mesh.to_positions(m_engine.distances(), m_distances);
     m_paths.remember(settings, internal::is_parallel<ConcurrencyTag>(), threads);
     m_statistics.sources = seeds.size();
   }
@@ -406,7 +413,8 @@ private:
   internal::Mesh_index<TriangleMesh> m_mesh;  // descriptors <-> indices, the engine's arrays and unit
   double m_preprocessing_seconds = 0.;
   std::vector<internal::Seed> m_sources;
-  internal::Propagation_engine m_engine;
+  internal::Propagation_engine m_engine;  // per vertex index
+  std::vector<double> m_distances;       // those of m_engine, in the order of vertices(tm)
   Propagation_statistics m_statistics;
   internal::Path_queries m_paths;  // remembers the parameters of the last computation
   std::vector<std::unique_ptr<internal::Propagation_engine> > m_workspaces;  // of compute_each(), one per thread

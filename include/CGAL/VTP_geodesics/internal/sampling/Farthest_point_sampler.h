@@ -55,12 +55,16 @@ public:
   std::vector<double> radii;
   Propagation_statistics statistics;
 
-  // Takes up to k samples on `m` (first: NO_INDEX for the vertex farthest from vertex 0), stopping once the
-  // covering radius is <= `radius` (engine unit); `settings` as for a computation (labels are always kept).
+  // Takes up to k samples on `m` (first: NO_INDEX for the vertex farthest from the first vertex), stopping
+  // once the covering radius is <= `radius` (engine unit); `settings` as for a computation (labels are
+  // always kept). `rank`: per vertex index, its place in the order of the ties (that of vertices(tm)); the
+  // first vertex is that of rank 0.
   template <class ConcurrencyTag>
-  void run(const Mesh_arrays& m, std::size_t k, Index first, double radius, Propagation_settings settings,
-           int threads)
+  void run(const Mesh_arrays& m, const std::vector<Index>& rank, std::size_t k, Index first, double radius,
+           Propagation_settings settings, int threads)
   {
+    CGAL_precondition(rank.size() == static_cast<std::size_t>(m.nv));
+    m_rank = &rank;
     const auto t0 = std::chrono::steady_clock::now();
     samples.clear();
     radii.clear();
@@ -71,7 +75,7 @@ public:
     settings.known_distances = true;
     settings.unit = 1.;
     if(first == NO_INDEX)
-      first = farthest_from_vertex_0<ConcurrencyTag>(m, settings, threads);
+      first = farthest_from_first_vertex<ConcurrencyTag>(m, rank, settings, threads);
     const std::vector<double>& dist = m_engine->distances();
     Index next = first;
     for(;;)
@@ -128,12 +132,12 @@ public:
   }
 
 private:
-  // the heap order: a before b if a is farther, or as far with a lower index
+  // the heap order: a before b if a is farther, or as far with a lower rank
   bool before(Index a, Index b) const
   {
     const double da = m_engine->distances()[static_cast<std::size_t>(a)];
     const double db = m_engine->distances()[static_cast<std::size_t>(b)];
-    return da > db || (da == db && a < b);
+    return da > db || (da == db && (*m_rank)[static_cast<std::size_t>(a)] < (*m_rank)[static_cast<std::size_t>(b)]);
   }
 
   void place(std::size_t i, Index v)
@@ -173,29 +177,35 @@ private:
       sift_down(static_cast<Index>(i));
   }
 
-  // The default first sample: the vertex farthest from vertex 0 (ties: the lowest index), in a workspace
-  // freed before the sampling starts.
+  // The default first sample: the vertex farthest from the vertex of rank 0 (ties: the lowest rank), in a
+  // workspace freed before the sampling starts.
   template <class ConcurrencyTag>
-  static Index farthest_from_vertex_0(const Mesh_arrays& m, const Propagation_settings& settings, int threads)
+  static Index farthest_from_first_vertex(const Mesh_arrays& m, const std::vector<Index>& rank,
+                                          const Propagation_settings& settings, int threads)
   {
+    const Index first = static_cast<Index>(std::find(rank.begin(), rank.end(), Index(0)) - rank.begin());
     Propagation_engine engine;
     Propagation_settings s = settings;
     s.known_distances = false;
     s.want_labels = false;
     Seed seed;
     seed.kind = Seed::AT_VERTEX;
-    seed.element = 0;
+    seed.element = first;
     Propagation_statistics st;
     engine.template run<ConcurrencyTag>(m, std::vector<Seed>(1, seed), std::vector<Target>(), s, threads, st);
     const std::vector<double>& d = engine.distances();
-    Index best = 0;
-    for(Index v = 1; v < m.nv; ++v)
-      if(d[static_cast<std::size_t>(v)] > d[static_cast<std::size_t>(best)])
+    Index best = first;
+    for(Index v = 0; v < m.nv; ++v)
+    {
+      const double dv = d[static_cast<std::size_t>(v)], db = d[static_cast<std::size_t>(best)];
+      if(dv > db || (dv == db && rank[static_cast<std::size_t>(v)] < rank[static_cast<std::size_t>(best)]))
         best = v;
+    }
     return best;
   }
 
   std::unique_ptr<Propagation_engine> m_engine{ new Propagation_engine() };
+  const std::vector<Index>* m_rank = nullptr;
   std::vector<Index> m_heap;      // vertices
   std::vector<Index> m_position;  // per vertex, its place in m_heap
   std::vector<Index> m_lowered;   // places of the vertices lowered by a run
@@ -238,7 +248,7 @@ farthest_point_samples_of(const MeshIndex& mesh, std::size_t k, const NamedParam
     throw Invalid_input_error("the sampling radius must be >= 0, got " + std::to_string(radius));
 
   Farthest_point_sampler sampler;
-  sampler.template run<ConcurrencyTag>(mesh.arrays, k, first, radius / mesh.length_scale, settings, threads);
+  sampler.template run<ConcurrencyTag>(mesh.arrays, mesh.position, k, first, radius / mesh.length_scale, settings, threads);
   Farthest_point_samples<vertex_descriptor> r;
   const double unit = mesh.length_scale;
   for(Index v : sampler.samples)
@@ -248,12 +258,21 @@ farthest_point_samples_of(const MeshIndex& mesh, std::size_t k, const NamedParam
   r.statistics = sampler.statistics;
   r.statistics.max_distance *= unit;
   std::vector<Index> labels;
-  sampler.release_field(r.distances, labels);  // the workspace is freed before the labels are widened
-  for(double& d : r.distances)
-    d *= unit;
-  r.labels.reserve(labels.size());
-  for(Index l : labels)
-    r.labels.push_back(l == NO_INDEX ? no_source : static_cast<std::size_t>(l));
+  std::vector<double> distances;
+  sampler.release_field(distances, labels);  // the workspace is freed before the labels are widened
+  if(!distances.empty())  // in the order of vertices(tm)
+  {
+    mesh.to_positions(distances, r.distances);
+    std::vector<double>().swap(distances);
+    for(double& d : r.distances)
+      d *= unit;
+    r.labels.resize(labels.size());
+    for(std::size_t i = 0; i < labels.size(); ++i)
+    {
+      const Index l = labels[i];
+      r.labels[mesh.position_of(static_cast<Index>(i))] = l == NO_INDEX ? no_source : static_cast<std::size_t>(l);
+    }
+  }
   if(r.distances.size() != mesh.vertices.size())  // no sample
   {
     r.distances.assign(mesh.vertices.size(), std::numeric_limits<double>::infinity());

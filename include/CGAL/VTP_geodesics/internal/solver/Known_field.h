@@ -43,62 +43,66 @@ struct Known_field
   std::vector<Index> labels;      // per vertex index (if labels are wanted)
 };
 
-template <class Vertex>
-void read_known_labels(const std::vector<Vertex>&, CGAL::internal_np::Param_not_found, std::vector<Index>& labels)
+template <class MeshIndex>
+void read_known_labels(const MeshIndex&, CGAL::internal_np::Param_not_found, std::vector<Index>& labels)
 {
   labels.clear();
 }
 
-template <class Vertex, class VertexSourceMap>
-void read_known_labels(const std::vector<Vertex>& vertices, VertexSourceMap vsm, std::vector<Index>& labels)
+// (read in the order of vertices(tm), so that an error names the first bad vertex in that order)
+template <class MeshIndex, class VertexSourceMap>
+void read_known_labels(const MeshIndex& mesh, VertexSourceMap vsm, std::vector<Index>& labels)
 {
-  labels.resize(vertices.size());
-  for(std::size_t i = 0; i < vertices.size(); ++i)
+  labels.resize(mesh.vertices_in_order.size());
+  for(std::size_t i = 0; i < labels.size(); ++i)
   {
-    const std::size_t l = static_cast<std::size_t>(get(vsm, vertices[i]));
+    const auto v = mesh.vertices_in_order[i];
+    const std::size_t l = static_cast<std::size_t>(get(vsm, v));
+    const std::size_t id = static_cast<std::size_t>(get(mesh.vertex_id, v));
     if(l == no_source)
-      labels[i] = NO_INDEX;
+      labels[id] = NO_INDEX;
     else if(l >= static_cast<std::size_t>((std::numeric_limits<Index>::max)()))
       throw Invalid_input_error("the initial nearest source of vertex " + std::to_string(i) + " is too large ("
                                 + std::to_string(l) + ")");
     else
-      labels[i] = static_cast<Index>(l);
+      labels[id] = static_cast<Index>(l);
   }
 }
 
-template <class Vertex>
-void read_known_distances(const std::vector<Vertex>&, double, CGAL::internal_np::Param_not_found, Known_field&)
+template <class MeshIndex>
+void read_known_distances(const MeshIndex&, double, CGAL::internal_np::Param_not_found, Known_field&)
 {}
 
-template <class Vertex, class VertexDistanceMap>
-void read_known_distances(const std::vector<Vertex>& vertices, double length_scale, VertexDistanceMap vdm,
-                          Known_field& field)
+// (read in the order of vertices(tm), so that an error names the first bad vertex in that order)
+template <class MeshIndex, class VertexDistanceMap>
+void read_known_distances(const MeshIndex& mesh, double length_scale, VertexDistanceMap vdm, Known_field& field)
 {
   field.active = true;
-  field.distances.resize(vertices.size());
-  for(std::size_t i = 0; i < vertices.size(); ++i)
+  field.distances.resize(mesh.vertices_in_order.size());
+  for(std::size_t i = 0; i < field.distances.size(); ++i)
   {
-    const double d = static_cast<double>(get(vdm, vertices[i]));
+    const auto v = mesh.vertices_in_order[i];
+    const double d = static_cast<double>(get(vdm, v));
     if(!(d >= 0.))
       throw Invalid_input_error("the initial distance of vertex " + std::to_string(i) + " is "
                                 + (std::isnan(d) ? std::string("NaN") : std::to_string(d))
                                 + " (it must be >= 0, +infinity for none)");
-    field.distances[i] = d / length_scale;
+    field.distances[static_cast<std::size_t>(get(mesh.vertex_id, v))] = d / length_scale;
   }
 }
 
 // Reads the known field of `np` (if any) for a run with `settings` (which it marks), and numbers the labels
 // of `seeds` from first_source_label. Throws Invalid_input_error for a combination that a run from known
 // distances does not support (a distance limit, targets, paths) or for bad values.
-template <class Vertex, class NamedParameters>
-Known_field known_field_of(const NamedParameters& np, const std::vector<Vertex>& vertices, double length_scale,
+template <class MeshIndex, class NamedParameters>
+Known_field known_field_of(const NamedParameters& np, const MeshIndex& mesh, double length_scale,
                            Propagation_settings& settings, std::vector<Seed>& seeds)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
   Known_field field;
-  read_known_distances(vertices, length_scale, get_parameter(np, internal_np::initial_distances), field);
+  read_known_distances(mesh, length_scale, get_parameter(np, internal_np::initial_distances), field);
   const bool has_labels = !is_default_parameter<NamedParameters, internal_np::initial_nearest_sources_t>::value;
   const std::size_t first = choose_parameter(get_parameter(np, internal_np::first_source_label), std::size_t(0));
   if(!field.active && (has_labels || first != 0))
@@ -116,9 +120,9 @@ Known_field known_field_of(const NamedParameters& np, const std::vector<Vertex>&
   settings.known_distances = true;
   if(settings.want_labels)
   {
-    read_known_labels(vertices, get_parameter(np, internal_np::initial_nearest_sources), field.labels);
+    read_known_labels(mesh, get_parameter(np, internal_np::initial_nearest_sources), field.labels);
     if(field.labels.empty())
-      field.labels.assign(vertices.size(), NO_INDEX);
+      field.labels.assign(mesh.vertices.size(), NO_INDEX);
   }
   return field;
 }

@@ -42,10 +42,12 @@ namespace internal {
 // shared among number_of_threads(threads) threads (at most one per seed), dynamically; else one after
 // the other. An exception of a propagation or of the sink stops the handing out of rows and is thrown
 // again once the rows under way are done. `statistics` receives the sum of the rows.
+// A row reaches the sink in the order of vertices(tm) (`position`: per vertex index, its place in the row).
 template <class Item, class RowSink>
-void compute_rows(const Mesh_arrays& arrays, const std::vector<Item>& items, const std::vector<Seed>& seeds,
-                  RowSink& sink, const Propagation_settings& settings, bool parallel, int threads,
-                  std::vector<std::unique_ptr<Propagation_engine> >& workspaces, Propagation_statistics& statistics)
+void compute_rows(const Mesh_arrays& arrays, const std::vector<Index>& position, const std::vector<Item>& items,
+                  const std::vector<Seed>& seeds, RowSink& sink, const Propagation_settings& settings, bool parallel,
+                  int threads, std::vector<std::unique_ptr<Propagation_engine> >& workspaces,
+                  Propagation_statistics& statistics)
 {
   CGAL_precondition(items.size() == seeds.size());
   threads = parallel ? number_of_threads(threads) : 1;
@@ -53,6 +55,7 @@ void compute_rows(const Mesh_arrays& arrays, const std::vector<Item>& items, con
   while(workspaces.size() < static_cast<std::size_t>(threads))
     workspaces.emplace_back(new Propagation_engine());
   std::vector<Propagation_statistics> per_thread(static_cast<std::size_t>(threads));
+  std::vector<std::vector<double> > rows(static_cast<std::size_t>(threads));
 
   const auto t0 = std::chrono::steady_clock::now();
   Parallel_for loop(threads, Parallel_for::DYNAMIC);
@@ -65,12 +68,17 @@ void compute_rows(const Mesh_arrays& arrays, const std::vector<Item>& items, con
     workspace.template run<CGAL::Sequential_tag>(arrays, std::vector<Seed>(1, seeds[i]), std::vector<Target>(),
                                                  settings, 1, st);
     add_row_statistics(st, per_thread[static_cast<std::size_t>(t)]);
+    std::vector<double>& row = rows[static_cast<std::size_t>(t)];
+    const std::vector<double>& d = workspace.distances();
+    row.resize(d.size());
+    for(std::size_t v = 0; v < d.size(); ++v)
+      row[static_cast<std::size_t>(position[v])] = d[v];
     std::lock_guard<std::mutex> lock(sink_mutex);
     if(sink_failed || loop.failed())
       return;
     try
     {
-      sink(i, items[i], workspace.distances());
+      sink(i, items[i], static_cast<const std::vector<double>&>(row));
     }
     catch(...)
     {
@@ -111,7 +119,7 @@ void compute_each_row(const MeshIndex& mesh, const SourceRange& sources, RowSink
   settings.want_labels = false;
   settings.record_paths = false;
   settings.stop_at_targets = false;
-  compute_rows(mesh.arrays, items, seeds, sink, settings, parallel, threads, workspaces, statistics);
+  compute_rows(mesh.arrays, mesh.position, items, seeds, sink, settings, parallel, threads, workspaces, statistics);
 }
 
 } // namespace internal

@@ -20,6 +20,7 @@
 #include <CGAL/VTP_geodesics/internal/engine/Targets.h>
 #include <CGAL/VTP_geodesics/internal/source_forms.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Named_function_parameters.h>
@@ -64,10 +65,27 @@ public:
   const TriangleMesh& tm;
   Vertex_id_map vertex_id;
   Face_id_map face_id;
-  std::vector<vertex_descriptor> vertices;  // in index order
-  std::vector<face_descriptor> faces;       // in index order
+  // The engine numbers the vertices along a space-filling curve (Mesh_import.h), for the locality of its
+  // per-vertex arrays; users see them numbered in the order of vertices(tm) (their *position*).
+  std::vector<vertex_descriptor> vertices;           // in index order
+  std::vector<vertex_descriptor> vertices_in_order;  // in the order of vertices(tm)
+  std::vector<Index> position;                       // per index, the position of the vertex in vertices(tm)
+  std::vector<face_descriptor> faces;                // in index order (that of faces(tm))
   Mesh_arrays arrays;
   double length_scale = 1.;                 // the engine's unit of length, in the unit of the mesh
+
+  // the position in vertices(tm) of the vertex of index i
+  std::size_t position_of(Index i) const { return static_cast<std::size_t>(position[static_cast<std::size_t>(i)]); }
+
+  // `values` (per index) in the order of vertices(tm)
+  template <class T>
+  void to_positions(const std::vector<T>& values, std::vector<T>& out) const
+  {
+    CGAL_precondition(values.size() == position.size());
+    out.resize(values.size());
+    for(std::size_t i = 0; i < values.size(); ++i)
+      out[static_cast<std::size_t>(position[i])] = values[i];
+  }
 
   // ------------------------------------------------------------------------------------------------
   // descriptors -> indices (checked)

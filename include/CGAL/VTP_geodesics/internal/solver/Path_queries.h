@@ -53,7 +53,9 @@ public:
   }
 
   // The path from `target` back to its nearest source for the last computation of `engine`, on `arrays`.
-  std::vector<Trace_point> trace(const Mesh_arrays& arrays, const Propagation_engine& engine, const Target& target)
+  // (`position`: per vertex index, the number of the vertex in the error messages)
+  std::vector<Trace_point> trace(const Mesh_arrays& arrays, const Propagation_engine& engine, const Target& target,
+                                 const std::vector<Index>& position)
   {
     if(!m_has_run)
       throw Invalid_input_error("a path was asked for before any computation");
@@ -86,9 +88,13 @@ public:
       from = m_engine.get();
       index = 0;
       if(!is_reached(*from, target, index))
-        throw Invalid_input_error("no path: " + (target.vertex != NO_INDEX ? "vertex " + std::to_string(target.vertex)
-                                                                          : std::string("the point"))
+      {
+        const std::string what = target.vertex != NO_INDEX
+                                   ? "vertex " + std::to_string(position[static_cast<std::size_t>(target.vertex)])
+                                   : std::string("the point");
+        throw Invalid_input_error("no path: " + what
                                   + " is not reached by any source (or lies beyond the distance limit)");
+      }
     }
     std::vector<Trace_point> points;
     const Path_trace tracer(arrays, from->path_record(), from->seeds());
@@ -146,7 +152,7 @@ location_of(const Mesh_index<TriangleMesh>& index, const Trace_point& p)
   {
     const Index v = p.element;
     if(m.corner_begin[v] == m.corner_begin[v + 1])
-      throw Invalid_input_error("vertex " + std::to_string(v) + " is isolated: it has no face location");
+      throw Invalid_input_error("vertex " + std::to_string(index.position_of(v)) + " is isolated: it has no face location");
     const Index h = m.corners[m.corner_begin[v]];
     f = Mesh_arrays::face(h);
     b[static_cast<std::size_t>(h % 3)] = 1.;
