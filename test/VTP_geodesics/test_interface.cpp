@@ -669,6 +669,17 @@ TEST(Numbering, messages_name_vertices_in_the_order_of_the_mesh)
     EXPECT_MESSAGE(([&] { solver.compute(map, Vertex_index(0), VP::initial_distances(known_map)); }),
                    "initial distance of vertex " + std::to_string(bad) + " is");
   }
+  // faces too are numbered otherwise inside (by their least vertex), and named by their place in faces(tm)
+  const std::size_t last_face = num_faces(mesh) - 1;
+  const auto& source_of = solver.mesh_arrays().source;
+  for(std::size_t f = 1; f < num_faces(mesh); ++f)
+    ASSERT_LE((std::min)({ source_of[3 * f - 3], source_of[3 * f - 2], source_of[3 * f - 1] }),
+              (std::min)({ source_of[3 * f], source_of[3 * f + 1], source_of[3 * f + 2] }));
+  const auto bad_location = std::make_pair(Surface_mesh::Face_index(Surface_mesh::size_type(last_face)),
+                                           std::array<double, 3>{ { 0.5, 0.9, 0. } });
+  EXPECT_MESSAGE(([&] { solver.compute(map, bad_location); }),
+                 "source 0 (in face " + std::to_string(last_face) + ")");
+
   solver.compute(map, Vertex_index(0));
   const std::size_t unreachable = num_vertices(mesh) - 3;
   ASSERT_EQ(d[unreachable], INF);

@@ -55,7 +55,7 @@ template <class TriangleMesh, class VertexPointMap>
         throw Invalid_input_error("vertex " + std::to_string(index.position_of(get(index.vertex_id, source(h, tm))))
                                   + " has a non-finite coordinate");
   }
-  throw Invalid_input_error("face " + std::to_string(f) + " has an edge of non-finite length (coordinates too "
+  throw Invalid_input_error("face " + std::to_string(index.face_position[f]) + " has an edge of non-finite length (coordinates too "
                             "large)");
 }
 
@@ -165,24 +165,49 @@ void import_mesh(Mesh_index<TriangleMesh>& index, VertexPointMap vpm, const Trai
   // Half-edges are numbered face by face (3f, 3f+1, 3f+2); the arrays are filled in place (no
   // per-half-edge temporary beyond the numbering map), so that the peak memory of the
   // construction stays close to that of the arrays.
-  Halfedge_id_map hid = get(CGAL::dynamic_halfedge_property_t<Index>(), tm);
+  // Faces are numbered by their least vertex index (ties in the order of faces(tm)), so that the faces
+  // around a vertex are near each other in memory too.
   std::vector<face_descriptor>& faces_in_order = index.faces;
-  faces_in_order.reserve(num_faces(tm));
-  for(face_descriptor f : faces(tm))
   {
-    const std::size_t id = faces_in_order.size();
-    put(index.face_id, f, static_cast<Index>(id));
-    const halfedge_descriptor h0 = halfedge(f, tm);
-    halfedge_descriptor h = h0;
-    for(int k = 0; k < 3; ++k)
+    std::vector<std::pair<Index, Index> > key;  // (least vertex index, position in faces(tm))
+    key.reserve(num_faces(tm));
+    faces_in_order.reserve(num_faces(tm));
+    for(face_descriptor f : faces(tm))
     {
-      put(hid, h, static_cast<Index>(3 * id + static_cast<std::size_t>(k)));
-      h = next(h, tm);
-      if((h == h0) != (k == 2))  // a face of another degree than 3
-        throw Invalid_input_error("the mesh is not a triangle mesh (face " + std::to_string(id)
-                                  + " is not a triangle)");
+      const Index position = static_cast<Index>(faces_in_order.size());
+      const halfedge_descriptor h0 = halfedge(f, tm);
+      halfedge_descriptor h = h0;
+      Index least = nv;
+      for(int k = 0; k < 3; ++k)
+      {
+        least = (std::min)(least, get(index.vertex_id, source(h, tm)));
+        h = next(h, tm);
+        if((h == h0) != (k == 2))  // a face of another degree than 3
+          throw Invalid_input_error("the mesh is not a triangle mesh (face " + std::to_string(position)
+                                    + " is not a triangle)");
+      }
+      key.emplace_back(least, position);
+      faces_in_order.push_back(f);
     }
-    faces_in_order.push_back(f);
+    std::sort(key.begin(), key.end());
+    index.face_position.resize(key.size());
+    std::vector<face_descriptor> by_position;
+    by_position.swap(faces_in_order);
+    faces_in_order.resize(key.size());
+    for(std::size_t i = 0; i < key.size(); ++i)
+    {
+      index.face_position[i] = key[i].second;
+      faces_in_order[i] = by_position[static_cast<std::size_t>(key[i].second)];
+    }
+  }
+  Halfedge_id_map hid = get(CGAL::dynamic_halfedge_property_t<Index>(), tm);
+  for(std::size_t id = 0; id < faces_in_order.size(); ++id)
+  {
+    const face_descriptor f = faces_in_order[id];
+    put(index.face_id, f, static_cast<Index>(id));
+    halfedge_descriptor h = halfedge(f, tm);
+    for(int k = 0; k < 3; ++k, h = next(h, tm))
+      put(hid, h, static_cast<Index>(3 * id + static_cast<std::size_t>(k)));
   }
   const std::size_t nf = faces_in_order.size();
   std::vector<Index> tri(3 * nf), opp(3 * nf);

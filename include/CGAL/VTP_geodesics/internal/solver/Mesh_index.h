@@ -70,7 +70,8 @@ public:
   std::vector<vertex_descriptor> vertices;           // in index order
   std::vector<vertex_descriptor> vertices_in_order;  // in the order of vertices(tm)
   std::vector<Index> position;                       // per index, the position of the vertex in vertices(tm)
-  std::vector<face_descriptor> faces;                // in index order (that of faces(tm))
+  std::vector<face_descriptor> faces;                // in index order (by their least vertex index)
+  std::vector<Index> face_position;                  // per face index, the position of the face in faces(tm)
   Mesh_arrays arrays;
   double length_scale = 1.;                 // the engine's unit of length, in the unit of the mesh
 
@@ -155,7 +156,7 @@ public:
     if(!std::isfinite(sum) || !(std::abs(sum - 1.) <= tolerance) || !(b[0] >= -tolerance) || !(b[1] >= -tolerance)
        || !(b[2] >= -tolerance))
       throw Invalid_input_error("the barycentric coordinates of " + name_of(role, position) + " (in face "
-                                + std::to_string(id) + ") must be finite, non-negative and of sum 1");
+                                + std::to_string(face_position[static_cast<std::size_t>(id)]) + ") must be finite, non-negative and of sum 1");
     sum = 0.;
     for(int k = 0; k < 3; ++k)
     {
