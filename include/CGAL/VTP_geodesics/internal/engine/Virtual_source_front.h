@@ -165,7 +165,8 @@ private:
 
   // Vertex u is taken: its offers to its neighbours, each given to sink(v, d, source, label) if v is not
   // taken and d is not above its distance (an offer equal to it may still win the tie, see
-  // Virtual_source_rounds::better()).
+  // Virtual_source_rounds::better()); the distance of v is read only if sink.reads(v) (another thread may
+  // be lowering it: the offer is then given unfiltered).
   template <class Sink>
   void take(Index u, Sink& sink) const
   {
@@ -179,7 +180,7 @@ private:
       const Index h = m.corners[c];
       const Index b = m.source[Mesh_arrays::next(h)];
       const double db = du + m.geometry.faces[static_cast<std::size_t>(h / 3)].length[h % 3];
-      if(db <= dist[static_cast<std::size_t>(b)] && !m_taken[static_cast<std::size_t>(b)])
+      if(!m_taken[static_cast<std::size_t>(b)] && (!sink.reads(b) || db <= dist[static_cast<std::size_t>(b)]))
       {
         const Halfedge_geometry g = m.geometry[Mesh_arrays::next(h)];  // B at the origin, C on the x axis, u above
         offer_along_edge(b, db, g.cx, g.cy, -g.cx, -g.cy, g.length - g.cx, -g.cy, Mesh_arrays::next(h), u, lab, sink);
@@ -204,7 +205,7 @@ private:
   void offer_along_edge(Index v, double d, double sx, double sy, double rx, double ry, double lx, double ly, Index h,
                         Index root, Index lab, Sink& sink) const
   {
-    if(m_taken[static_cast<std::size_t>(v)] || !(d <= dist[static_cast<std::size_t>(v)]))
+    if(m_taken[static_cast<std::size_t>(v)] || (sink.reads(v) && !(d <= dist[static_cast<std::size_t>(v)])))
       return;
     Vertex_source s;
     s.sx = sx; s.sy = sy;
@@ -319,7 +320,7 @@ private:
       return;
     const double dx = px - s.sx, dy = py - s.sy;
     const double d = sigma + std::sqrt(dx * dx + dy * dy);
-    if(!(d <= dist[static_cast<std::size_t>(y)]))
+    if(sink.reads(y) && !(d <= dist[static_cast<std::size_t>(y)]))
       return;
     // the frame of hy: y at the origin
     double ux, uy;

@@ -19,7 +19,6 @@
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -38,16 +37,19 @@ namespace internal {
 //
 // The vertices waiting are kept in buckets of distances of a fixed width (half a short edge length, see
 // short_edge_length()). A
-// round takes every vertex of the lowest bucket at once (they are then final); the team computes their
-// offers (Virtual_source_front::take(), reading the field only; chunks of the round shared out
-// dynamically), each thread sorting its offers by the thread that owns the vertex offered (a fixed
-// function of the vertex); then each thread applies the offers to its own vertices and puts them in its
-// own buckets. A vertex not taken keeps the least offer in a total order (distance first, then the virtual
+// round takes every vertex of the lowest bucket at once (they are then final). Each vertex is owned by a
+// thread (blocks of 2^owner_bits consecutive indices, dealt round-robin: the solver numbers the vertices
+// along a space-filling curve, so most neighbours of a vertex have the same owner); each thread of the team
+// computes the offers of the vertices of the round it owns (Virtual_source_front::take()), applies at once
+// those to its own vertices and keeps the others, by owner, for the second phase, in which each thread
+// applies the offers of the others to its own vertices; a thread puts the vertices it lowered in its own
+// buckets. A thread reads the distance of another's vertex only between the phases (the offers to it go
+// unfiltered). A vertex not taken keeps the least offer in a total order (distance first, then the virtual
 // source, see better()), and no offer depends on another of the same round: so neither the order of the
-// round nor the number of threads changes a bit of the distances, labels and paths. A round that one
-// thread runs alone (VSP, and the small rounds of PVSP) applies each offer at once instead of sorting it
-// out: the same least offers (take() lets through every offer not above the vertex's distance, so an offer
-// that ties with one applied before it in the round still meets it in better()), without the buffers.
+// round nor the number of threads changes a bit of the distances, labels and paths (take() lets through
+// every offer not above the vertex's distance, so an offer that ties with one applied before it still meets
+// it in better()). A round that one thread runs alone (VSP, and the small rounds of PVSP) applies every
+// offer at once.
 //
 // Vertices of one round cannot lower each other (a heap, taking them one at a time, would let them): a
 // cost in accuracy that the benchmark measures (with buckets of half a short edge it is small). Every offer is
@@ -174,8 +176,45 @@ private:
 #endif
   }
 
-  // the thread that owns vertex v (blocks of 64 vertices)
-  Index owner(Index v) const { return (v >> 6) % static_cast<Index>(m_team); }
+  // the thread that owns vertex v
+  Index owner(Index v) const { return (v >> owner_bits) % static_cast<Index>(m_team); }
+
+  // The sinks of take(): one thread alone (it reads and lowers every vertex), or thread t of the team in
+  // the first phase (it lowers its own vertices, keeps the offers to the others for their owners).
+  template <class Front>
+  struct Alone_sink
+  {
+    Virtual_source_rounds& rounds;
+    Front& front;
+    Thread_data& td;
+    bool reads(Index) const { return true; }
+    void operator()(Index v, double d, const Vertex_source& s, Index lab) { rounds.lower(front, td, v, d, s, lab); }
+  };
+
+  template <class Front>
+  struct Team_sink
+  {
+    Virtual_source_rounds& rounds;
+    Front& front;
+    Thread_data& td;
+    Index t;
+    bool reads(Index v) const { return rounds.owner(v) == t; }
+    void operator()(Index v, double d, const Vertex_source& s, Index lab)
+    {
+      const Index o = rounds.owner(v);
+      if(o == t)
+      {
+        rounds.lower(front, td, v, d, s, lab);
+        return;
+      }
+      Pending p;
+      p.s = s;
+      p.d = d;
+      p.v = v;
+      p.label = lab;
+      td.offers[static_cast<std::size_t>(o)].push_back(p);
+    }
+  };
 
   // whether (d, s) is a better offer than the vertex's (d0, s0): a total order, so that the least offer of
   // a round does not depend on the order in which they are applied
@@ -225,7 +264,6 @@ private:
     front.m_seeded.clear();
     m_remaining_targets = front.mark_targets(m_is_target);
     m_cutoff = front.m_settings.limit + 2. * m.max_edge_length;
-    m_next_chunk.store(0, std::memory_order_relaxed);
   }
 
   // A short edge length of the mesh (the first decile of the lengths of at most 4096 half-edges taken at
@@ -278,7 +316,6 @@ private:
   void next_round(Front& front)
   {
     m_batch.clear();
-    m_next_chunk.store(0, std::memory_order_relaxed);
     while(pending() > 0)
     {
       ++m_current;
@@ -348,31 +385,17 @@ private:
     return false;
   }
 
-  // thread t: the offers of chunks of the round, by owner
+  // thread t, first phase: the offers of its vertices of the round; those to its own vertices applied
   template <class Front>
-  void compute(const Front& front, int t)
+  void compute(Front& front, int t)
   {
     Thread_data& td = m_threads[static_cast<std::size_t>(t)];
     for(std::vector<Pending>& b : td.offers)
       b.clear();
-    auto sink = [this, &td](Index v, double d, const Vertex_source& s, Index lab) {
-      Pending p;
-      p.s = s;
-      p.d = d;
-      p.v = v;
-      p.label = lab;
-      td.offers[static_cast<std::size_t>(owner(v))].push_back(p);
-    };
-    const std::size_t n = m_batch.size();
-    for(;;)
-    {
-      const std::size_t begin = m_next_chunk.fetch_add(chunk, std::memory_order_relaxed);
-      if(begin >= n)
-        break;
-      const std::size_t end = (std::min)(n, begin + chunk);
-      for(std::size_t i = begin; i < end; ++i)
-        front.take(m_batch[i], sink);
-    }
+    Team_sink<Front> sink{ *this, front, td, static_cast<Index>(t) };
+    for(Index u : m_batch)
+      if(owner(u) == static_cast<Index>(t))
+        front.take(u, sink);
   }
 
   // thread t: the offers of every thread to the vertices it owns
@@ -389,10 +412,7 @@ private:
   template <class Front>
   void take_alone(Front& front)
   {
-    Thread_data& td = m_threads[0];
-    auto sink = [this, &front, &td](Index v, double d, const Vertex_source& s, Index lab) {
-      lower(front, td, v, d, s, lab);
-    };
+    Alone_sink<Front> sink{ *this, front, m_threads[0] };
     for(Index u : m_batch)
       front.take(u, sink);
   }
@@ -411,14 +431,13 @@ private:
     push(td, v, d);
   }
 
-  // the vertices of the round a thread takes at a time, and the least round the team runs (smaller ones
-  // cost less than the barriers)
-  static constexpr std::size_t chunk = 32;
+  // the vertices a thread owns come in blocks of 2^owner_bits; the least round the team runs (smaller
+  // ones cost less than the barriers)
+  static constexpr int owner_bits = 9;
   static constexpr std::size_t min_parallel = 256;
 
   std::vector<Thread_data> m_threads;
   std::vector<Index> m_batch;  // the vertices of the round
-  std::atomic<std::size_t> m_next_chunk{ 0 };
   std::vector<unsigned char> m_is_target;
   std::size_t m_remaining_targets = 0;
   long long m_current = 0, m_ring = 1;
