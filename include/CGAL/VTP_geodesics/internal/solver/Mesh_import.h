@@ -168,9 +168,11 @@ void import_mesh(Mesh_index<TriangleMesh>& index, VertexPointMap vpm, const Trai
   // Faces are numbered by their least vertex index (ties in the order of faces(tm)), so that the faces
   // around a vertex are near each other in memory too.
   std::vector<face_descriptor>& faces_in_order = index.faces;
+  std::vector<face_descriptor> by_position;  // the faces in the order of faces(tm)
+  std::vector<Index> id_of_position;         // per position in faces(tm), the index of the face
   {
-    std::vector<std::pair<Index, Index> > key;  // (least vertex index, position in faces(tm))
-    key.reserve(num_faces(tm));
+    std::vector<Index> least_vertex;  // per position in faces(tm)
+    least_vertex.reserve(num_faces(tm));
     faces_in_order.reserve(num_faces(tm));
     for(face_descriptor f : faces(tm))
     {
@@ -186,24 +188,36 @@ void import_mesh(Mesh_index<TriangleMesh>& index, VertexPointMap vpm, const Trai
           throw Invalid_input_error("the mesh is not a triangle mesh (face " + std::to_string(position)
                                     + " is not a triangle)");
       }
-      key.emplace_back(least, position);
+      least_vertex.push_back(least);
       faces_in_order.push_back(f);
     }
-    std::sort(key.begin(), key.end());
-    index.face_position.resize(key.size());
-    std::vector<face_descriptor> by_position;
+    // a counting sort by least vertex (stable: ties in the order of faces(tm))
+    const std::size_t nf_all = least_vertex.size();
+    std::vector<Index> start(static_cast<std::size_t>(nv) + 1, 0);
+    for(Index v : least_vertex)
+      ++start[static_cast<std::size_t>(v) + 1];
+    for(std::size_t v = 0; v < static_cast<std::size_t>(nv); ++v)
+      start[v + 1] += start[v];
+    index.face_position.resize(nf_all);
+    for(std::size_t p = 0; p < nf_all; ++p)
+      index.face_position[static_cast<std::size_t>(start[static_cast<std::size_t>(least_vertex[p])]++)] = static_cast<Index>(p);
+    std::vector<Index>().swap(start);
+    std::vector<Index>().swap(least_vertex);
     by_position.swap(faces_in_order);
-    faces_in_order.resize(key.size());
-    for(std::size_t i = 0; i < key.size(); ++i)
+    faces_in_order.resize(nf_all);
+    id_of_position.resize(nf_all);
+    for(std::size_t i = 0; i < nf_all; ++i)
     {
-      index.face_position[i] = key[i].second;
-      faces_in_order[i] = by_position[static_cast<std::size_t>(key[i].second)];
+      faces_in_order[i] = by_position[static_cast<std::size_t>(index.face_position[i])];
+      id_of_position[static_cast<std::size_t>(index.face_position[i])] = static_cast<Index>(i);
     }
   }
+  // the maps and the pass below go through the faces in the order of the mesh (its memory)
   Halfedge_id_map hid = get(CGAL::dynamic_halfedge_property_t<Index>(), tm);
-  for(std::size_t id = 0; id < faces_in_order.size(); ++id)
+  for(std::size_t p = 0; p < by_position.size(); ++p)
   {
-    const face_descriptor f = faces_in_order[id];
+    const std::size_t id = static_cast<std::size_t>(id_of_position[p]);
+    const face_descriptor f = by_position[p];
     put(index.face_id, f, static_cast<Index>(id));
     halfedge_descriptor h = halfedge(f, tm);
     for(int k = 0; k < 3; ++k, h = next(h, tm))
@@ -214,7 +228,8 @@ void import_mesh(Mesh_index<TriangleMesh>& index, VertexPointMap vpm, const Trai
   std::vector<Face_geometry> face_geometry(nf);
   // One pass over the faces (the mesh is read once), which only reads the mesh and the maps: the faces
   // are shared among the threads. The squared area is kept in `area` until the scale is known. The
-  // longest edge and the first face with a non-finite edge are found per thread, then over the threads.
+  // longest edge and the first face (in faces(tm)) with a non-finite edge are found per thread, then over
+  // the threads.
   struct alignas(64) Per_thread
   {
     double longest = 0.;
@@ -222,10 +237,11 @@ void import_mesh(Mesh_index<TriangleMesh>& index, VertexPointMap vpm, const Trai
   };
   Parallel_for loop(threads);
   std::vector<Per_thread> per_thread(static_cast<std::size_t>(loop.threads()));
-  loop.run(static_cast<long long>(nf), [&](long long fl, int t) {
-    const std::size_t f = static_cast<std::size_t>(fl);
+  loop.run(static_cast<long long>(nf), [&](long long pl, int t) {
+    const std::size_t position = static_cast<std::size_t>(pl);
+    const std::size_t f = static_cast<std::size_t>(id_of_position[position]);
     Per_thread& mine = per_thread[static_cast<std::size_t>(t)];
-    halfedge_descriptor h = halfedge(faces_in_order[f], tm);
+    halfedge_descriptor h = halfedge(by_position[position], tm);
     vertex_descriptor corner[3];
     for(std::size_t k = 0; k < 3; ++k, h = next(h, tm))
     {
@@ -239,7 +255,7 @@ void import_mesh(Mesh_index<TriangleMesh>& index, VertexPointMap vpm, const Trai
     {
       const double l = std::sqrt(CGAL::to_double(sqd(get(vpm, corner[k]), get(vpm, corner[(k + 1) % 3]))));
       if(!std::isfinite(l))
-        mine.first_non_finite = (std::min)(mine.first_non_finite, f);
+        mine.first_non_finite = (std::min)(mine.first_non_finite, position);
       g.length[k] = l;
       mine.longest = (std::max)(mine.longest, l);
     }
@@ -253,7 +269,9 @@ void import_mesh(Mesh_index<TriangleMesh>& index, VertexPointMap vpm, const Trai
     first_non_finite = (std::min)(first_non_finite, p.first_non_finite);
   }
   if(first_non_finite < nf)
-    throw_non_finite(index, vpm, first_non_finite);
+    throw_non_finite(index, vpm, static_cast<std::size_t>(id_of_position[first_non_finite]));
+  std::vector<face_descriptor>().swap(by_position);
+  std::vector<Index>().swap(id_of_position);
   // The engine works on lengths scaled by a power of two (exact in floating point) that brings the
   // longest edge into [0.5, 1): its squares and fourth powers can then neither overflow nor
   // underflow, whatever the scale of the coordinates. Distances are scaled back on output.
