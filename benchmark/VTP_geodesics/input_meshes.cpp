@@ -11,6 +11,8 @@
 
 #include <vtp_support/midpoint_subdivision.h>
 
+#include <CGAL/VTP_geodesics/internal/Morton_code.h>
+
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
 #include <algorithm>
@@ -37,18 +39,6 @@ namespace {
 
 std::string base_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
-// the 21 low bits of x spread to every third bit
-std::uint64_t spread_bits(std::uint64_t x)
-{
-  x &= 0x1fffff;
-  x = (x | x << 32) & 0x1f00000000ffffULL;
-  x = (x | x << 16) & 0x1f0000ff0000ffULL;
-  x = (x | x << 8) & 0x100f00f00f00f00fULL;
-  x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
-  x = (x | x << 2) & 0x1249249249249249ULL;
-  return x;
-}
-
 // Renumbers the vertices of `mesh` (no garbage) along a Morton curve of their positions, vertex 0 first,
 // and orders the faces by their least new vertex index.
 void reorder_morton(Mesh& mesh)
@@ -57,16 +47,16 @@ void reorder_morton(Mesh& mesh)
   CGAL::Bbox_3 box;
   for(Mesh::Vertex_index v : mesh.vertices())
     box += mesh.point(v).bbox();
+  typedef CGAL::VTP_geodesics::internal::Morton_code Morton_code;
   const double size = (std::max)({ box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin(), 1e-300 });
-  const double cells = double((1 << 21) - 1);
+  const double lo[3] = { box.xmin(), box.ymin(), box.zmin() };
   std::vector<std::pair<std::uint64_t, std::uint32_t> > keys;
   keys.reserve(n);
   for(Mesh::Vertex_index v : mesh.vertices())
   {
     const auto& p = mesh.point(v);
-    const auto cell = [&](double x, double lo) { return static_cast<std::uint64_t>((x - lo) / size * cells); };
-    const std::uint64_t key = spread_bits(cell(p.x(), box.xmin())) | spread_bits(cell(p.y(), box.ymin())) << 1
-                              | spread_bits(cell(p.z(), box.zmin())) << 2;
+    const double xyz[3] = { p.x(), p.y(), p.z() };
+    const std::uint64_t key = Morton_code::of(xyz, lo, Morton_code::cells / size);
     keys.emplace_back(std::uint32_t(v) == 0 ? 0 : key + 1, std::uint32_t(v));
   }
   std::sort(keys.begin(), keys.end());

@@ -16,6 +16,7 @@
 
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/Morton_code.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
 #include <CGAL/VTP_geodesics/internal/solver/Mesh_index.h>
 
@@ -63,18 +64,6 @@ template <class TriangleMesh, class VertexPointMap>
 // depend on their number): numbers the vertices, faces and half-edges, checks that every face is a
 // triangle and that the mesh fits 32-bit indices, measures the edges and the face areas with the
 // vertex point map `vpm` and the traits, and scales the lengths by a power of two (index.length_scale).
-// Spreads the 21 low bits of x to every third bit.
-inline std::uint64_t spread_bits(std::uint64_t x)
-{
-  x &= 0x1fffff;
-  x = (x | (x << 32)) & 0x1f00000000ffffULL;
-  x = (x | (x << 16)) & 0x1f0000ff0000ffULL;
-  x = (x | (x << 8)) & 0x100f00f00f00f00fULL;
-  x = (x | (x << 4)) & 0x10c30c30c30c30c3ULL;
-  x = (x | (x << 2)) & 0x1249249249249249ULL;
-  return x;
-}
-
 // Numbers the vertices of index.vertices_in_order along a Morton (Z-order) curve of their points, ties in
 // the order of vertices(tm): neighbours on the surface get nearby indices, so that the per-vertex arrays
 // of a propagation are read from memory a few lines at a time (virtual source propagation on a million
@@ -112,20 +101,11 @@ void number_along_curve(Mesh_index<TriangleMesh>& index, VertexPointMap vpm)
   double extent = 0.;
   for(int j = 0; j < 3; ++j)
     extent = (std::max)(extent, hi[j] - lo[j]);
-  const double cells = double((1 << 21) - 1);
+  const double cells = Morton_code::cells;
   const double scale = extent > 0. && std::isfinite(cells / extent) ? cells / extent : 0.;
   std::vector<std::pair<std::uint64_t, Index> > key(nv);
-  for(std::size_t i = 0; i < nv; ++i)
-  {
-    std::uint64_t code = 0;
-    for(std::size_t j = 0; j < 3; ++j)
-    {
-      const double c = (p[i][j] - lo[j]) * scale;  // NaN for a non-finite point
-      const std::uint64_t cell = c >= 0. ? static_cast<std::uint64_t>((std::min)(c, cells)) : 0;
-      code |= spread_bits(cell) << j;
-    }
-    key[i] = std::make_pair(code, static_cast<Index>(i));
-  }
+  for(std::size_t i = 0; i < nv; ++i)  // a non-finite point (NaN) gets the first cell
+    key[i] = std::make_pair(Morton_code::of(p[i].data(), lo, scale), static_cast<Index>(i));
   std::vector<std::array<double, 3> >().swap(p);
   std::sort(key.begin(), key.end());
   index.vertices.resize(nv);
