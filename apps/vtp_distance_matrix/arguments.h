@@ -18,7 +18,8 @@ struct Arguments
   bool has_max_distance = false;  // with a distance limit, the rows are sparse (CSR)
   double max_distance = std::numeric_limits<double>::infinity();
   bool approximate = false;       // --method avtp
-  bool virtual_sources = false;   // --method vsp
+  bool virtual_sources = false;   // --method vsp or vsp2
+  int per_vertex = 1;             // virtual sources per vertex: 2 with --method vsp2
   double lambda = 8.;             // AVTP reset period (mean edge lengths), --lambda
   bool has_lambda = false;
   int threads = 0;                // 0: OpenMP's default

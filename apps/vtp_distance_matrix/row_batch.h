@@ -37,6 +37,7 @@ struct Row_method
 {
   bool approximate = false;  // AVTP instead of VTP
   bool virtual_sources = false;  // VSP instead of VTP
+  int per_vertex = 1;            // its virtual sources per vertex (1 or 2)
   double lambda = CGAL::VTP_geodesics::recommended_lambda;
   double max_distance = std::numeric_limits<double>::infinity();  // the distance limit (none: +inf)
 };
@@ -63,7 +64,8 @@ void compute_rows(const Mesh_input& input, const std::vector<std::int64_t>& sour
   const auto np = CGAL::VTP_geodesics::parameters::number_of_threads((std::max)(threads, 1))
                     .lambda(method.approximate ? method.lambda : infinity)
                     .maximum_distance(method.max_distance)
-                    .virtual_sources(method.virtual_sources);
+                    .virtual_sources(method.virtual_sources)
+                    .virtual_sources_per_vertex(method.per_vertex);
   Solver solver(input.mesh, CGAL::VTP_geodesics::parameters::number_of_threads((std::max)(threads, 1)));
 
   // The solver's index of each mesh vertex (by Surface_mesh index), and the file's vertex of each column.

@@ -70,7 +70,7 @@ std::string run_signature(const Arguments& a, const Mesh_input& input, const std
   s += "sources=" + std::to_string(sources.size()) + " " + h.hex() + "\n";
   s += std::string("layout=") + (a.has_max_distance ? "csr" : "dense") + "\n";
   s += std::string("values=") + (a.float32 ? "float32" : "float64") + "\n";
-  s += std::string("method=") + (a.virtual_sources ? "vsp" : a.approximate ? "avtp" : "vtp") + "\n";
+  s += std::string("method=") + (a.virtual_sources ? (a.per_vertex == 2 ? "vsp2" : "vsp") : a.approximate ? "avtp" : "vtp") + "\n";
   s += "lambda=" + (a.approximate ? number_text(a.lambda) : std::string("-")) + "\n";
   s += "max_distance=" + (a.has_max_distance ? number_text(a.max_distance) : std::string("-")) + "\n";
   return s;
@@ -129,7 +129,7 @@ int run(Job& job, int argc, char** argv)
   spec.file.columns = static_cast<std::int64_t>(input.file_vertices);
   spec.file.float32 = args.float32;
   spec.file.signature = run_signature(args, input, sources);
-  spec.file.text_attributes = { { "method", args.virtual_sources ? "vsp" : args.approximate ? "avtp" : "vtp" },
+  spec.file.text_attributes = { { "method", args.virtual_sources ? (args.per_vertex == 2 ? "vsp2" : "vsp") : args.approximate ? "avtp" : "vtp" },
                                 { "format", args.has_max_distance ? "csr" : "dense" } };
   const double infinity = std::numeric_limits<double>::infinity();
   spec.file.number_attributes = { { "lambda", args.approximate ? args.lambda : infinity },
@@ -150,6 +150,7 @@ int run(Job& job, int argc, char** argv)
   Row_method method;
   method.approximate = args.approximate;
   method.virtual_sources = args.virtual_sources;
+  method.per_vertex = args.per_vertex;
   method.lambda = args.lambda;
   method.max_distance = args.max_distance;  // +inf without --max-distance
   const int threads = args.threads > 0 ? args.threads : default_thread_count();

@@ -125,7 +125,7 @@ const vtp_support::Option_table<Arguments>& option_table()
       "ties: the lowest index), which then are the sources of --output,\n"
       "--labels (the geodesic Voronoi cells), --picture and --stats-json.\n"
       "Not with --source, --source-point, targets, paths, --max-distance\n"
-      "nor --method vsp / pvsp",
+      "nor --method vsp / pvsp / vsp2 / pvsp2",
       [](Arguments& a, const std::string& n, const std::string& v) {
         a.farthest_points = parse_index(n, v);
         if(a.farthest_points == 0)

@@ -213,7 +213,8 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
                            .targets(targets)
                            .stop_at_targets(request.stop_at_targets)
                            .record_paths(!request.paths.empty())
-                           .virtual_sources(method.virtual_sources);
+                           .virtual_sources(method.virtual_sources)
+                           .virtual_sources_per_vertex(method.per_vertex);
     if(request.want_labels)
       run_method(method, solver,
                  options.nearest_source_map(boost::make_iterator_property_map(labels.begin(),

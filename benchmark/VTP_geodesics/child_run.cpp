@@ -58,7 +58,8 @@ void run_vtp(const Mesh& mesh, Vertex_index source, const Method& method, int re
   h.preprocessing_seconds = solver.preprocessing_seconds();
   h.pseudo_source_vertices = solver.number_of_pseudo_source_vertices();
   const auto options = CGAL::VTP_geodesics::parameters::lambda(method.lambda).number_of_threads(method.threads)
-                         .virtual_sources(method.virtual_sources);
+                         .virtual_sources(method.virtual_sources)
+                         .virtual_sources_per_vertex(method.per_vertex);
   // the distances are read from the solver: nothing to write through a map
   for(int r = 0; r < repeat; ++r)
   {

@@ -60,6 +60,7 @@ bool parse_vtp_method(const std::vector<std::string>& fields, Method& m)
   m.kind = info->parallel ? (info->approximate ? Method_kind::PAVTP : Method_kind::PVTP)
                           : (info->approximate ? Method_kind::AVTP : Method_kind::VTP);
   m.virtual_sources = info->virtual_sources;
+  m.per_vertex = info->per_vertex;
   std::size_t k = 1;
   if(info->parallel)
     m.threads = parse_int_field(m.label, fields[k++], 1);

@@ -58,7 +58,8 @@ struct Method
   Method_kind kind = Method_kind::VTP;
   int threads = 1;
   double lambda = inf;      // approximate variants
-  bool virtual_sources = false;  // vsp, pvsp:T (one virtual source per vertex)
+  bool virtual_sources = false;  // vsp, pvsp:T (one virtual source per vertex), vsp2, pvsp2:T (two)
+  int per_vertex = 1;
   std::string command;      // EXTERNAL: shell command with {mesh}, {source}, {output}
 };
 

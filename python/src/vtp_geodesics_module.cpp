@@ -345,7 +345,7 @@ public:
       const auto vdm = boost::make_iterator_property_map(d, get(boost::vertex_index, m_mesh));
       const auto np = VTP::parameters::number_of_threads(threads_or_default(threads))
                         .lambda(lambda)
-                        .virtual_sources(method.virtual_sources)
+                        .virtual_sources(method.virtual_sources).virtual_sources_per_vertex(method.per_vertex)
                         .maximum_distance(max_distance)
                         .targets(live_targets)
                         .stop_at_targets(!live_targets.empty())
@@ -532,7 +532,7 @@ public:
     const CGAL::Constant_property_map<Vertex_index, double> no_map;
     const auto np = VTP::parameters::number_of_threads(threads_or_default(0))
                       .lambda(method.approximate ? lam : infinity)
-                      .virtual_sources(method.virtual_sources)
+                      .virtual_sources(method.virtual_sources).virtual_sources_per_vertex(method.per_vertex)
                       .stop_at_targets(true)
                       .statistics(m_statistics);
     with_method_tag(method, [&](auto tag) {
@@ -871,7 +871,7 @@ private:
       std::lock_guard<std::mutex> lock(m_mutex);
       const auto np = VTP::parameters::number_of_threads(threads_or_default(threads))
                         .lambda(method.approximate ? lam : infinity)
-                        .virtual_sources(method.virtual_sources)
+                        .virtual_sources(method.virtual_sources).virtual_sources_per_vertex(method.per_vertex)
                         .maximum_distance(max_distance);
       auto sink = [&](std::size_t i, Vertex_index, const std::vector<double>& d) {
         write(i, d);

@@ -43,7 +43,7 @@ struct Field
   Propagation_statistics statistics;
 };
 
-enum Method_kind { VTP, PVTP, AVTP, VSP };
+enum Method_kind { VTP, PVTP, AVTP, VSP, VSP2 };
 
 template <class Sources, class NP>
 Field compute(const Surface_mesh& mesh, const Sources& sources, Method_kind method, const NP& np)
@@ -55,7 +55,8 @@ Field compute(const Surface_mesh& mesh, const Sources& sources, Method_kind meth
   auto lmap = boost::make_iterator_property_map(f.label.begin(), get(boost::vertex_index, mesh));
   Solver solver(mesh);
   const auto all = np.nearest_source_map(lmap).number_of_threads(2)
-                     .lambda(method == AVTP ? 2. : INF).virtual_sources(method == VSP);
+                     .lambda(method == AVTP ? 2. : INF).virtual_sources(method == VSP || method == VSP2)
+                     .virtual_sources_per_vertex(method == VSP2 ? 2 : 1);
   if(method == PVTP)
   {
 #ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
@@ -161,9 +162,9 @@ TEST(Initial_distances, approximate_methods_stay_upper_bounds)
   const std::vector<Vertex_index> a = { Vertex_index(0), Vertex_index(900) };
   const std::vector<Vertex_index> b = { Vertex_index(2000) };
   const Field ea = plain(mesh, a, VTP), eb = plain(mesh, b, VTP);
-  for(Method_kind method : { AVTP, VSP })
+  for(Method_kind method : { AVTP, VSP, VSP2 })
   {
-    SCOPED_TRACE(method == AVTP ? "avtp" : "vsp");
+    SCOPED_TRACE(method == AVTP ? "avtp" : method == VSP ? "vsp" : "vsp2");
     const Field known = plain(mesh, a, method);
     const Field sum = add_to(mesh, known, b, 2, method);
     const double scale = max_finite(ea.d);

@@ -86,11 +86,14 @@ vtp_cli_test(check_cgal 0 "${cli_dir}/check.txt" "${cli_dir}/check.json"
 vtp_cli_test(stats_stdout 0 "" "" "${VTP_GEODESICS_DEFAULT_MESH}" --source 3 --stats-json -)
 vtp_cli_test(method_avtp 0 "${cli_dir}/avtp.txt" "" --method avtp --lambda 4 --output "${cli_dir}/avtp.txt")
 vtp_cli_test(method_vsp 0 "${cli_dir}/vsp.txt" "" --method vsp --output "${cli_dir}/vsp.txt")
+vtp_cli_test(method_vsp2 0 "${cli_dir}/vsp2.txt" "${cli_dir}/vsp2.json" JSON_MATCH "\"method\": \"vsp2\""
+             --method vsp2 --output "${cli_dir}/vsp2.txt" --stats-json "${cli_dir}/vsp2.json")
 vtp_cli_test(method_vsp_rejects_lambda 2 "" "" --method vsp --lambda 4 ERROR "need --method avtp or pavtp")
 if(TARGET CGAL::VTP_geodesics_OpenMP_support)
   vtp_cli_test(method_pvtp 0 "${cli_dir}/pvtp.txt" "" --method pvtp --threads 2 --output "${cli_dir}/pvtp.txt")
   vtp_cli_test(method_pavtp 0 "${cli_dir}/pavtp.txt" "" --method pavtp --threads 3 --output "${cli_dir}/pavtp.txt")
   vtp_cli_test(method_pvsp 0 "${cli_dir}/pvsp.txt" "" --method pvsp --threads 2 --output "${cli_dir}/pvsp.txt")
+  vtp_cli_test(method_pvsp2 0 "${cli_dir}/pvsp2.txt" "" --method pvsp2 --threads 2 --output "${cli_dir}/pvsp2.txt")
 endif()
 
 set(bad_output "${cli_dir}/bad.txt")

@@ -163,10 +163,12 @@ def file_hash(path):
 # ------------------------------------------------------------------------------------------------
 
 def test_rows_single_source():
-    """Each row equals a single-source run of vtp_geodesics, bitwise, for VTP and AVTP, on a mesh with
+    """Each row equals a single-source run of vtp_geodesics, bitwise, for VTP, AVTP, VSP and VSP2, on a mesh with
     boundaries and on a mesh that is repaired (a vertex cut in two copies, an isolated point)."""
     cases = [("elephant-with-holes.off", A.data, "0,17,1000,2797,1500", []),
              ("elephant-with-holes.off", A.data, "2000,5", ["--method", "avtp", "--lambda", "4"]),
+             ("elephant-with-holes.off", A.data, "3,900", ["--method", "vsp"]),
+             ("elephant-with-holes.off", A.data, "3,900", ["--method", "vsp2"]),
              ("nonmanifold_vertex.off", A.cli_data, "all", [])]
     for name, folder, sources, method in cases:
         out = work("rows.h5")

@@ -30,7 +30,8 @@ struct Propagation_statistics
   std::size_t faces = 0;
   /// Number of sources.
   std::size_t sources = 0;
-  /// Name of the algorithm that ran: `"vtp"`, `"pvtp"`, `"avtp"` or `"pavtp"`.
+  /// Name of the algorithm that ran: `"vtp"`, `"pvtp"`, `"avtp"`, `"pavtp"`, `"vsp"`, `"pvsp"`, `"vsp2"` or
+  /// `"pvsp2"` (two virtual sources per vertex).
   std::string method = "vtp";
   /// Number of threads used (1 for the sequential scheduling).
   int threads = 1;

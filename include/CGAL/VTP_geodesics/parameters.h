@@ -50,6 +50,7 @@ enum targets_t { targets };
 enum stop_at_targets_t { stop_at_targets };
 enum record_paths_t { record_paths };
 enum virtual_sources_t { virtual_sources };
+enum virtual_sources_per_vertex_t { virtual_sources_per_vertex };
 enum initial_distances_t { initial_distances };
 enum initial_nearest_sources_t { initial_nearest_sources };
 enum first_source_label_t { first_source_label };
@@ -91,6 +92,7 @@ struct Named_parameters
   CGAL_VTP_GEODESICS_LINK(stop_at_targets, internal_np::stop_at_targets_t)
   CGAL_VTP_GEODESICS_LINK(record_paths, internal_np::record_paths_t)
   CGAL_VTP_GEODESICS_LINK(virtual_sources, internal_np::virtual_sources_t)
+  CGAL_VTP_GEODESICS_LINK(virtual_sources_per_vertex, internal_np::virtual_sources_per_vertex_t)
   CGAL_VTP_GEODESICS_LINK(initial_distances, internal_np::initial_distances_t)
   CGAL_VTP_GEODESICS_LINK(initial_nearest_sources, internal_np::initial_nearest_sources_t)
   CGAL_VTP_GEODESICS_LINK(first_source_label, internal_np::first_source_label_t)
@@ -135,6 +137,7 @@ CGAL_VTP_GEODESICS_FIRST_LINK(targets, internal_np::targets_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(stop_at_targets, internal_np::stop_at_targets_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(record_paths, internal_np::record_paths_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(virtual_sources, internal_np::virtual_sources_t)
+CGAL_VTP_GEODESICS_FIRST_LINK(virtual_sources_per_vertex, internal_np::virtual_sources_per_vertex_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(initial_distances, internal_np::initial_distances_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(initial_nearest_sources, internal_np::initial_nearest_sources_t)
 CGAL_VTP_GEODESICS_FIRST_LINK(first_source_label, internal_np::first_source_label_t)

@@ -45,6 +45,7 @@ struct Propagation_settings
   bool record_paths = false;           // keep what the path trace-back needs
   double unit = 1.;                    // the engine's unit of length, in the unit of the output distances
   bool virtual_sources = false;        // one virtual source per vertex (VSP / PVSP) instead of windows
+  bool second_virtual_source = false;  // with virtual_sources: a second one per vertex, of another root
   bool known_distances = false;        // the run starts from distances already known (Known_vertices.h)
 };
 

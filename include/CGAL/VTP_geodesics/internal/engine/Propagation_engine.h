@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -95,7 +96,7 @@ public:
       statistics = Propagation_statistics();
       const int threads = m_vsp.run(m, m_seeds, std::move(targets), settings, statistics,
                                     parallel ? number_of_threads(requested_threads) : 0, initial, initial_labels);
-      statistics.method = parallel ? "pvsp" : "vsp";
+      statistics.method = std::string(parallel ? "pvsp" : "vsp") + (settings.second_virtual_source ? "2" : "");
       statistics.threads = threads;
       statistics.vertices = static_cast<std::size_t>(m.nv);
       statistics.faces = static_cast<std::size_t>(m.nf);

@@ -36,9 +36,9 @@ namespace internal {
 
 // The field of virtual source propagation (the propagation itself is Virtual_source_front.h): per vertex its
 // distance, its label and its virtual source (the image of its root and the wedge of directions of its
-// straight line), the vertices seeded (for the first round), the seeding by the sources, and the end of a run
-// (cutoff, targets in faces, trace-back offers); and the wedge geometry, which the propagation and the
-// targets share.
+// straight line), and with settings.second_virtual_source a second one (see second_offer()), the vertices
+// seeded (for the first round), the seeding by the sources, and the end of a run (cutoff, targets in faces,
+// trace-back offers); and the wedge geometry, which the propagation and the targets share.
 class Virtual_source_field
 {
 public:
@@ -119,18 +119,58 @@ protected:
     return root < m_mesh->nv ? dist[static_cast<std::size_t>(root)] : 0.;
   }
 
+  // the label of the paths through a root (that of its own path, or of its source point)
+  Index root_label(Index root) const
+  {
+    if(label.empty())
+      return NO_INDEX;
+    return root < m_mesh->nv ? label[static_cast<std::size_t>(root)]
+                             : (*m_seeds)[static_cast<std::size_t>(root - m_mesh->nv)].label;
+  }
+
+  // Whether vertex v has a second virtual source.
+  bool has_second(std::size_t v) const { return !m_src2.empty() && m_dist2[v] < std::numeric_limits<double>::infinity(); }
+
+  // With a second virtual source per vertex, vertex v (not taken, distance d0 with source s0) is offered
+  // (d, s), which is not better than (d0, s0): v keeps as its second source the best offer whose root is not
+  // that of its first one (the same total order as the first, see Virtual_source_rounds::better(), so the
+  // pair kept does not depend on the order of the offers).
+  template <class Better>
+  void second_offer(std::size_t v, double d, const Vertex_source& s, Better better)
+  {
+    if(s.root != m_src[v].root && better(d, s, m_dist2[v], m_src2[v]))
+    {
+      m_dist2[v] = d;
+      m_src2[v] = s;
+    }
+  }
+
+  // ... v's first source (d0, s0), a virtual source (not the start of a known field), gives way to an offer
+  // of root `root`: it is the best offer so far, so it becomes the second if its root differs (otherwise the
+  // second, of another root than both, stays).
+  void demote_first(std::size_t v, Index root)
+  {
+    if(dist[v] < std::numeric_limits<double>::infinity() && m_src[v].h != NO_INDEX && m_src[v].root != root)
+    {
+      m_dist2[v] = dist[v];
+      m_src2[v] = m_src[v];
+    }
+  }
+
   void push(Index v, double d)
   {
     m_seeded.emplace_back(d, v);
     m_peak_seeded = (std::max)(m_peak_seeded, m_seeded.size());
   }
 
-  // Lowers the distance of v (not taken) to d with source s, if smaller.
+  // Lowers the distance of v (not taken) to d with source s, if smaller (the seeding by source points).
   void offer(Index v, double d, const Vertex_source& s, Index lab)
   {
     const std::size_t i = static_cast<std::size_t>(v);
     if(m_taken[i] || !(d < dist[i]))
       return;
+    if(!m_src2.empty())
+      demote_first(i, s.root);
     dist[i] = d;
     m_src[i] = s;
     if(!label.empty())
@@ -264,19 +304,25 @@ protected:
           m_target_value[t] = d;
           m_target_offer[t] = straight_offer(d, a);
         }
-        const Vertex_source& s = m_src[static_cast<std::size_t>(a)];
-        if(s.h != h || s.root == a)
-          continue;
-        if(!in_wedge(s, target.x[k], target.y[k]))
-          continue;
-        const double dx = target.x[k] - s.sx, dy = target.y[k] - s.sy;
-        const double ds = root_distance(s.root) + std::sqrt(dx * dx + dy * dy);
-        if(ds < m_target_value[t])
-        {
-          m_target_value[t] = ds;
-          m_target_offer[t] = image_offer(ds, s);
-        }
+        reach_target(t, k, m_src[static_cast<std::size_t>(a)], h, a);
+        if(has_second(static_cast<std::size_t>(a)))
+          reach_target(t, k, m_src2[static_cast<std::size_t>(a)], h, a);
       }
+    }
+  }
+
+  // target t, in the face of h = s.h, through the virtual source s of the corner a = source(h)
+  void reach_target(std::size_t t, int k, const Vertex_source& s, Index h, Index a)
+  {
+    const Target& target = m_targets[t];
+    if(s.h != h || s.root == a || !in_wedge(s, target.x[k], target.y[k]))
+      return;
+    const double dx = target.x[k] - s.sx, dy = target.y[k] - s.sy;
+    const double ds = root_distance(s.root) + std::sqrt(dx * dx + dy * dy);
+    if(ds < m_target_value[t])
+    {
+      m_target_value[t] = ds;
+      m_target_offer[t] = image_offer(ds, s);
     }
   }
 
@@ -329,6 +375,8 @@ protected:
   const std::vector<Seed>* m_seeds = nullptr;
   Propagation_settings m_settings;
   std::vector<Vertex_source> m_src;
+  std::vector<Vertex_source> m_src2;  // the second virtual sources (empty without), of distances m_dist2
+  std::vector<double> m_dist2;
   std::vector<unsigned char> m_taken;
   std::vector<Seeded_entry> m_seeded;  // the vertices seeded, for the first round (Virtual_source_rounds.h)
   std::vector<Target> m_targets;

@@ -422,8 +422,17 @@ private:
   void lower(Front& front, Thread_data& td, Index v, double d, const Vertex_source& s, Index lab) const
   {
     const std::size_t i = static_cast<std::size_t>(v);
-    if(front.m_taken[i] || !better(d, s, front.dist[i], front.m_src[i]))
+    if(front.m_taken[i])
       return;
+    const bool two = !front.m_src2.empty();
+    if(!better(d, s, front.dist[i], front.m_src[i]))
+    {
+      if(two)
+        front.second_offer(i, d, s, better);
+      return;
+    }
+    if(two)
+      front.demote_first(i, s.root);
     front.dist[i] = d;
     front.m_src[i] = s;
     if(!front.label.empty())

@@ -63,6 +63,9 @@ Propagation_settings settings_from_parameters(const NamedParameters& np, double 
     throw Invalid_input_error("the number of threads must be >= 0, got " + std::to_string(threads));
   if(!(min_length >= 0.) || !(min_length < 1.))
     throw Invalid_input_error("minimum_window_length must be in [0, 1)");
+  const int per_vertex = choose_parameter(get_parameter(np, internal_np::virtual_sources_per_vertex), 1);
+  if(per_vertex != 1 && per_vertex != 2)
+    throw Invalid_input_error("virtual_sources_per_vertex must be 1 or 2, got " + std::to_string(per_vertex));
   if(!(limit >= 0.))
     throw Invalid_input_error("the maximum distance must be >= 0 (+infinity for none), got " + std::to_string(limit));
 
@@ -78,6 +81,7 @@ Propagation_settings settings_from_parameters(const NamedParameters& np, double 
   settings.record_paths = choose_parameter(get_parameter(np, internal_np::record_paths), false);
   settings.unit = length_scale;
   settings.virtual_sources = choose_parameter(get_parameter(np, internal_np::virtual_sources), false);
+  settings.second_virtual_source = settings.virtual_sources && per_vertex == 2;
   return settings;
 }
 
