@@ -48,15 +48,21 @@ namespace internal {
 //  - through its virtual source: walking around u from the face of h, clockwise and counter-clockwise,
 //    crossing one edge u-x at a time and cutting the wedge to the directions that cross the segment [u, x]
 //    (a crossing is taken only if the image lies strictly on the side of the face it leaves: the line goes
-//    forward); the third vertex y of each face reached is offered d(root) + |s - y| if y lies in the wedge.
-//    An edge u-x whose x is the root itself is crossed with the wedge of the root's corner in the next face.
+//    forward); the third vertex y of each face reached is offered d(root) + |s - y| if y lies in the wedge;
+//    and the line goes on, forward, across the edge opposite u into the face beyond, whose third vertex z
+//    (two edges from u) is offered d(root) + |s - z| if it lies in the wedge cut to that edge
+//    (reach_beyond()). An edge u-x whose x is the root itself is crossed with the wedge of the root's corner
+//    in the next face.
 // A vertex keeps the smallest offer; a vertex taken is never changed again. With a second virtual source
 // per vertex (settings.second_virtual_source), it also keeps the best offer of another root than that of the
 // smallest, and walks both: a line of another root, a little longer at this vertex, can reach vertices that
-// the first one's wedge does not see (the mean error halves on our benchmark meshes). The order is not monotone (an
-// offer through a virtual source may be smaller than the distance of the vertex making it, by at most one
-// edge), so a run with a distance limit goes on until the buckets pass the limit plus twice the longest
-// edge; a run stopped at its targets gives the full run's distances of the vertices taken.
+// the first one's wedge does not see. The offers beyond the faces around u do the same for lines that pass
+// by u on the far side of a vertex that took another line (without them, a line dies as soon as the thin
+// triangle between it and the line of the vertex that should carry it holds a vertex). The order is not
+// monotone (an offer through a virtual source may be smaller than the distance of the vertex making it, by
+// at most two edges: Virtual_source_rounds::reach), so a run with a distance limit goes on until the
+// buckets pass the limit plus twice that; a run stopped at its targets gives the full run's distances of
+// the vertices taken.
 //
 // Upper bound: every offer is the length of a path on the surface (a straight segment in an unfolding whose
 // faces it crosses, after a path to the root realised by induction), hence never below the geodesic distance.
@@ -299,6 +305,7 @@ private:
       h = o;
       s.h = o;
       reach_third_vertex(s, go, Mesh_arrays::prev(o), sigma, lab, sink);
+      reach_beyond(s, go, sigma, lab, sink);
     }
   }
 
@@ -343,6 +350,7 @@ private:
       h = hg;
       s.h = hg;
       reach_third_vertex(s, gg, Mesh_arrays::next(hg), sigma, lab, sink);
+      reach_beyond(s, gg, sigma, lab, sink);
     }
   }
 
@@ -386,6 +394,56 @@ private:
     t.h = hy;
     t.root = s.root;
     sink(y, d, t, lab);
+  }
+
+  // s is in the frame of s.h (geometry g: u at the origin, B = (length, 0), C = (cx, cy)), a face around u
+  // that the walk reached. The line goes on, forward, across the edge B-C opposite u into the face beyond
+  // (B, C and its third vertex z): z is offered d(root) + |s - z| if it lies in the wedge cut to the
+  // directions through the segment [B, C] (every point of the face beyond inside that wedge is then joined
+  // to the root by a segment through the faces, as for the faces around u).
+  template <class Sink>
+  void reach_beyond(const Vertex_source& s, const Halfedge_geometry& g, double sigma, Index lab, Sink& sink) const
+  {
+    const Mesh_arrays& m = *m_mesh;
+    const Index t = m.opposite[Mesh_arrays::next(s.h)];  // C -> B in the face beyond
+    if(t == NO_INDEX || !(g.l_next > 0.))
+      return;
+    const Index hz = Mesh_arrays::prev(t);  // z -> C
+    const Index z = m.source[hz];
+    if(m_taken[static_cast<std::size_t>(z)])
+      return;
+    const double bx = g.length, cx = g.cx, cy = g.cy;
+    const double ex = cx - bx, ey = cy;  // B -> C
+    // forward: the image strictly on u's side of B-C; the wedge cut to the points B + t (C - B), t0 <= t <= t1
+    if(!(cross(ex, ey, s.sx - bx, s.sy) > 0.))
+      return;
+    double t0 = 0., t1 = 1.;
+    if(!bound(cross(s.rx, s.ry, ex, ey), cross(s.rx, s.ry, s.sx - bx, s.sy), t0, t1)
+       || !bound(cross(ex, ey, s.lx, s.ly), cross(s.sx - bx, s.sy, s.lx, s.ly), t0, t1) || !(t0 <= t1))
+      return;
+    // (seen from the image, on the left of B -> C, the segment turns counter-clockwise from B to C)
+    const double rx = bx + t0 * ex - s.sx, ry = t0 * ey - s.sy;
+    const double lx = bx + t1 * ex - s.sx, ly = t1 * ey - s.sy;
+    // z in the frame of s.h: C + (its coordinates in the frame of t, C at the origin, B on the x axis)
+    const Halfedge_geometry gt = m.geometry[t];
+    const double ux = -ex / g.l_next, uy = -ey / g.l_next;  // C -> B
+    const double zx = cx + gt.cx * ux - gt.cy * uy, zy = cy + gt.cx * uy + gt.cy * ux;
+    const double dx = zx - s.sx, dy = zy - s.sy;
+    if(cross(rx, ry, dx, dy) < 0. || cross(dx, dy, lx, ly) < 0. || !(gt.l_prev > 0.))
+      return;
+    const double d = sigma + std::sqrt(dx * dx + dy * dy);
+    if(!wanted(z, d, sink))
+      return;
+    // the frame of hz: z at the origin, C on the x axis
+    const double vx = (cx - zx) / gt.l_prev, vy = (cy - zy) / gt.l_prev;
+    Vertex_source r;
+    const double x = s.sx - zx, y = s.sy - zy;
+    r.sx = x * vx + y * vy; r.sy = -x * vy + y * vx;
+    r.lx = lx * vx + ly * vy; r.ly = -lx * vy + ly * vx;
+    r.rx = rx * vx + ry * vy; r.ry = -rx * vy + ry * vx;
+    r.h = hz;
+    r.root = s.root;
+    sink(z, d, r, lab);
   }
 
   Virtual_source_rounds m_rounds;

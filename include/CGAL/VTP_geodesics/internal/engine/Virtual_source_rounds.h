@@ -56,9 +56,10 @@ namespace internal {
 // still the length of a path on the surface (the same walks make them), so the distances are never below
 // the exact ones.
 //
-// An offer of a vertex u is at most d(u) plus the longest edge (d(root) + |s - y| <= d(root) + |s - u| +
-// |u - y|) and at least d(u) minus the longest edge: the buckets in use span twice that length, and a ring
-// of buckets suffices. An offer below the next bucket waits in the next bucket.
+// An offer of a vertex u goes to a vertex y at most `reach` edges away (a neighbour, or the third vertex of
+// a face beyond the faces around u), so it is at most d(u) plus `reach` longest edges (d(root) + |s - y| <=
+// d(root) + |s - u| + |u - y|) and at least d(u) minus as much: the buckets in use span twice that length,
+// and a ring of buckets suffices. An offer below the next bucket waits in the next bucket.
 class Virtual_source_rounds
 {
 public:
@@ -66,6 +67,8 @@ public:
 
   // The bucket width, in short edge lengths (short_edge_length()).
   static constexpr double bucket_width = 0.5;
+  // How many edges away from a vertex its offers go (Virtual_source_front::reach_beyond()).
+  static constexpr double reach = 2.;
 
   // statistics of the last run: rounds, those run on several threads, bytes of the buckets and buffers;
   // seconds (thread 0) choosing the rounds, computing the offers (with the wait for the team; in a round of
@@ -241,12 +244,12 @@ private:
     m_width = bucket_width * short_edge_length(m);
     if(!(m_width > 0.) || !std::isfinite(m_width))
       m_width = 1.;
-    // the ring: the offers two longest edges around the current bucket, plus rounding; at most 2^16
+    // the ring: the offers 2 reach longest edges around the current bucket, plus rounding; at most 2^16
     // buckets (wider ones on meshes whose longest edge is that many times the bucket width)
-    const double max_ring = 65536.;
-    if(!(2. * m.max_edge_length / m_width < max_ring - 4.))
-      m_width = 2. * m.max_edge_length / (max_ring - 4.);
-    m_ring = static_cast<long long>(std::floor(2. * m.max_edge_length / m_width)) + 4;
+    const double max_ring = 65536., span = 2. * reach * m.max_edge_length;
+    if(!(span / m_width < max_ring - 4.))
+      m_width = span / (max_ring - 4.);
+    m_ring = static_cast<long long>(std::floor(span / m_width)) + 4;
     m_threads.resize(static_cast<std::size_t>(m_team));
     for(Thread_data& d : m_threads)
     {
@@ -263,7 +266,7 @@ private:
       push(m_threads[0], e.second, e.first);
     front.m_seeded.clear();
     m_remaining_targets = front.mark_targets(m_is_target);
-    m_cutoff = front.m_settings.limit + 2. * m.max_edge_length;
+    m_cutoff = front.m_settings.limit + span;
   }
 
   // A short edge length of the mesh (the first decile of the lengths of at most 4096 half-edges taken at
