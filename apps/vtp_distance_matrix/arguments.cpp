@@ -48,7 +48,7 @@ const vtp_support::Option_table<Arguments> options = {
     { "--method", "vtp|avtp|vsp|vsp2",
       "exact VTP (default), approximate AVTP, or virtual source propagation\n"
       "(vsp: approximate, an upper bound, the fastest; vsp2: two virtual\n"
-      "sources per vertex, half the error of vsp, 1.5x its time)",
+      "sources per vertex, half the error of vsp, 1.3-2x its time)",
       [](Arguments& a, const std::string&, const std::string& m) {
         if(m != "vtp" && m != "avtp" && m != "vsp" && m != "vsp2")
           throw Tool_error("unknown method '" + m + "' (expected vtp, avtp, vsp or vsp2)");

@@ -312,7 +312,7 @@ class Solver:
             One of ``vtp_geodesics.methods``: "vtp" (exact, one thread), "pvtp" (exact, parallel), "avtp",
             "pavtp" (approximate: window resets every ``lam`` mean edge lengths; never below the exact
             distances), "vsp", "pvsp" (one virtual source per vertex: the fastest, an upper bound, mean
-            error about 0.5-1%), "vsp2", "pvsp2" (two per vertex: about half the error, 1.5x the time).
+            error about 0.2-0.4%), "vsp2", "pvsp2" (two per vertex: about half the error, 1.3-2x the time).
         lam : float, default 8.0
             Reset step of the approximate methods (ignored by the exact ones).
         return_labels : bool, default False

@@ -134,7 +134,7 @@ typename Solver_for<TriangleMesh, NamedParameters>::type solver_for(const Triang
 ///   \cgalParamNBegin{virtual_sources}
 ///     \cgalParamDescription{if `true`, one virtual source per vertex (VSP) instead of window lists: an
 ///       approximation, much faster than the exact algorithm, whose every distance is the length of a path on
-///       the surface (never below the exact distance; mean relative error about 0.5-0.9% on our benchmark
+///       the surface (never below the exact distance; mean relative error about 0.2-0.4% on our benchmark
 ///       meshes). `lambda` is then ignored; `CGAL::Parallel_tag` runs its rounds on several threads, with the same
 ///       distances bit for bit. See
 ///       \ref VTPGeodesicsVirtualSources.}
@@ -144,7 +144,7 @@ typename Solver_for<TriangleMesh, NamedParameters>::type solver_for(const Triang
 ///   \cgalParamNBegin{virtual_sources_per_vertex}
 ///     \cgalParamDescription{with `virtual_sources(true)`: 1, or 2 to keep per vertex a second virtual source
 ///       (the best offer of another root than the first's) and propagate both: about half the mean error, for
-///       about 1.5 times the time and 64 more bytes per vertex; still an upper bound, and the same distances on
+///       1.3-2 times the time and 64 more bytes per vertex; still an upper bound, and the same distances on
 ///       any number of threads. See \ref VTPGeodesicsVirtualSources. Any other value throws
 ///       `Invalid_input_error`.}
 ///     \cgalParamType{`int`}

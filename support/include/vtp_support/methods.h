@@ -37,7 +37,7 @@ inline const Method_info* methods_begin()
     { "pavtp", true,  true,  "approximate, parallel", false, 1 },
     { "vsp",   false, false, "approximate (one virtual source per vertex, upper bound), sequential", true, 1 },
     { "pvsp",  true,  false, "as vsp, on T threads (the same distances, bit for bit)", true, 1 },
-    { "vsp2",  false, false, "as vsp with two virtual sources per vertex: half the error, 1.5x the time", true, 2 },
+    { "vsp2",  false, false, "as vsp with two virtual sources per vertex: half the error, 1.3-2x the time", true, 2 },
     { "pvsp2", true,  false, "as vsp2, on T threads (the same distances, bit for bit)", true, 2 },
   };
   return table;
