@@ -10,6 +10,7 @@
 #include "vtp_test_utils.h"
 
 #include <CGAL/VTP_geodesics.h>
+#include <CGAL/VTP_geodesics/internal/Huge_page_allocator.h>
 
 #include <boost/property_map/property_map.hpp>
 
@@ -18,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <iterator>
 #include <limits>
 #include <string>
@@ -467,6 +469,34 @@ TEST(Virtual_sources_per_vertex, two_are_more_accurate_than_one)
     EXPECT_THROW(run(solver, mesh, Vertex_index(0), VP::virtual_sources(true).virtual_sources_per_vertex(k)),
                  CGAL::VTP_geodesics::Invalid_input_error)
       << k;
+}
+
+// The allocator of the per-vertex virtual sources: large arrays (on Linux: 2 MB-aligned blocks marked for
+// huge pages) and small ones keep their values through growth, copies and release.
+TEST(Huge_page_allocator, large_and_small_arrays_keep_their_values)
+{
+  typedef CGAL::VTP_geodesics::internal::Huge_page_allocator<double> Allocator;
+  std::vector<double, Allocator> large(std::size_t(1) << 20);
+  EXPECT_EQ(Allocator::is_large(large.size()), Allocator::is_large(std::size_t(1) << 20));
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  EXPECT_TRUE(Allocator::is_large(large.size()));
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(large.data()) % Allocator::huge_page, 0u);
+#endif
+  for(std::size_t i = 0; i < large.size(); ++i)
+    large[i] = static_cast<double>(i);
+  large.resize(std::size_t(3) << 20, -1.);
+  const std::vector<double, Allocator> copy(large);
+  ASSERT_EQ(copy.size(), std::size_t(3) << 20);
+  for(std::size_t i = 0; i < copy.size(); i += 4099)
+    EXPECT_EQ(copy[i], i < (std::size_t(1) << 20) ? static_cast<double>(i) : -1.) << i;
+  std::vector<double, Allocator> small(100, 2.5);
+  EXPECT_FALSE(Allocator::is_large(small.size()));
+  small.push_back(3.5);
+  EXPECT_EQ(small.front(), 2.5);
+  EXPECT_EQ(small.back(), 3.5);
+  large.clear();
+  large.shrink_to_fit();
+  EXPECT_EQ(large.capacity(), 0u);
 }
 
 // Hard but valid input (zero-length edges, nearly collinear faces, boundaries, several components): no

@@ -15,6 +15,7 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
+#include <CGAL/VTP_geodesics/internal/Huge_page_allocator.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/engine/Path_record.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
@@ -374,8 +375,9 @@ protected:
   const Mesh_arrays* m_mesh = nullptr;
   const std::vector<Seed>* m_seeds = nullptr;
   Propagation_settings m_settings;
-  std::vector<Vertex_source> m_src;
-  std::vector<Vertex_source> m_src2;  // the second virtual sources (empty without), of distances m_dist2
+  typedef std::vector<Vertex_source, Huge_page_allocator<Vertex_source>> Source_array;
+  Source_array m_src;
+  Source_array m_src2;  // the second virtual sources (empty without), of distances m_dist2
   std::vector<double> m_dist2;
   std::vector<unsigned char> m_taken;
   std::vector<Seeded_entry> m_seeded;  // the vertices seeded, for the first round (Virtual_source_rounds.h)
