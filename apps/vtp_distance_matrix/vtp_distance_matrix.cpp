@@ -54,6 +54,14 @@ std::string number_text(double v)
   return text;
 }
 
+// The name of the method, as given to --method.
+const char* method_name(const Arguments& a)
+{
+  if(a.virtual_sources)
+    return a.per_vertex == 2 ? "vsp2" : "vsp";
+  return a.approximate ? "avtp" : "vtp";
+}
+
 // Everything that determines the bytes of the output, one "key=value" per line. A partial output is
 // resumed, and a complete one accepted by --resume, only with the same signature. The number of
 // threads and of ranks is not part of it: it does not change the result.
@@ -70,7 +78,7 @@ std::string run_signature(const Arguments& a, const Mesh_input& input, const std
   s += "sources=" + std::to_string(sources.size()) + " " + h.hex() + "\n";
   s += std::string("layout=") + (a.has_max_distance ? "csr" : "dense") + "\n";
   s += std::string("values=") + (a.float32 ? "float32" : "float64") + "\n";
-  s += std::string("method=") + (a.virtual_sources ? (a.per_vertex == 2 ? "vsp2" : "vsp") : a.approximate ? "avtp" : "vtp") + "\n";
+  s += std::string("method=") + method_name(a) + "\n";
   s += "lambda=" + (a.approximate ? number_text(a.lambda) : std::string("-")) + "\n";
   s += "max_distance=" + (a.has_max_distance ? number_text(a.max_distance) : std::string("-")) + "\n";
   return s;
@@ -129,7 +137,7 @@ int run(Job& job, int argc, char** argv)
   spec.file.columns = static_cast<std::int64_t>(input.file_vertices);
   spec.file.float32 = args.float32;
   spec.file.signature = run_signature(args, input, sources);
-  spec.file.text_attributes = { { "method", args.virtual_sources ? (args.per_vertex == 2 ? "vsp2" : "vsp") : args.approximate ? "avtp" : "vtp" },
+  spec.file.text_attributes = { { "method", method_name(args) },
                                 { "format", args.has_max_distance ? "csr" : "dense" } };
   const double infinity = std::numeric_limits<double>::infinity();
   spec.file.number_attributes = { { "lambda", args.approximate ? args.lambda : infinity },

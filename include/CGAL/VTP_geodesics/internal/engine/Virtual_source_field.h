@@ -130,7 +130,10 @@ protected:
   }
 
   // Whether vertex v has a second virtual source.
-  bool has_second(std::size_t v) const { return !m_src2.empty() && m_dist2[v] < std::numeric_limits<double>::infinity(); }
+  bool has_second(std::size_t v) const
+  {
+    return !m_src2.empty() && m_dist2[v] < std::numeric_limits<double>::infinity();
+  }
 
   // With a second virtual source per vertex, vertex v (not taken, distance d0 with source s0) is offered
   // (d, s), which is not better than (d0, s0): v keeps as its second source the best offer whose root is not
