@@ -37,20 +37,6 @@ struct Variant
 const char* const all_meshes[] = { "elephant-with-holes.off", "elephant.off", "mushroom.off", "three_peaks.off",
                                    "knot1.off", "mech-holes-shark.off", "sphere.off" };
 
-// Mean over the reached vertices (source excluded) of (d - d_exact) / d_exact.
-double mean_relative_error(const std::vector<double>& d, const std::vector<double>& exact)
-{
-  double sum = 0.;
-  std::size_t n = 0;
-  for(std::size_t i = 0; i < d.size(); ++i)
-    if(exact[i] > 0. && std::isfinite(exact[i]))
-    {
-      sum += (d[i] - exact[i]) / exact[i];
-      ++n;
-    }
-  return n > 0 ? sum / double(n) : 0.;
-}
-
 // Largest amount by which d is below the exact distance (0 if never), relative to the largest distance.
 double below_exact(const std::vector<double>& d, const std::vector<double>& exact)
 {

@@ -75,6 +75,20 @@ vtp_distances(const Surface_mesh& mesh, const Sources& source, const NamedParame
   return distances;
 }
 
+// Mean over the reached vertices (source excluded) of (d - d_exact) / d_exact.
+inline double mean_relative_error(const std::vector<double>& d, const std::vector<double>& exact)
+{
+  double sum = 0.;
+  std::size_t n = 0;
+  for(std::size_t i = 0; i < d.size(); ++i)
+    if(exact[i] > 0. && std::isfinite(exact[i]))
+    {
+      sum += (d[i] - exact[i]) / exact[i];
+      ++n;
+    }
+  return n > 0 ? sum / double(n) : 0.;
+}
+
 // Largest finite entry (0 if none).
 inline double max_finite(const std::vector<double>& values)
 {
