@@ -312,9 +312,9 @@ private:
     const Mesh_arrays& m = *m_mesh;
     const Index degree = m.corner_begin[u + 1] - m.corner_begin[u];
     Index h = s.h;
+    Halfedge_geometry g = m.geometry[h];  // u at the origin, B = (length, 0), C = (cx, cy)
     for(Index step = 0; step < 2 * degree + 2; ++step)
     {
-      const Halfedge_geometry g = m.geometry[h];  // u at the origin, B = (length, 0), C = (cx, cy)
       const Index p = Mesh_arrays::prev(h);
       const Index o = m.opposite[p];
       if(o == NO_INDEX || !(g.l_prev > 0.))
@@ -345,8 +345,9 @@ private:
       }
       h = o;
       s.h = o;
-      reach_third_vertex(s, go, Mesh_arrays::prev(o), sigma, lab, sink);
-      reach_beyond(s, go, sigma, lab, sink);
+      g = go;
+      reach_third_vertex(s, g, Mesh_arrays::prev(o), sigma, lab, sink);
+      reach_beyond(s, g, sigma, lab, sink);
     }
   }
 
