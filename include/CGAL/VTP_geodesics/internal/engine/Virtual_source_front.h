@@ -256,6 +256,8 @@ private:
     const Index begin = m.corner_begin[i], end = m.corner_begin[i + 1];
     if(stage == 1)
     {
+      if(begin == end)  // a vertex of no face
+        return;
       hint(&m.corners[static_cast<std::size_t>(begin)]);
       hint(&m.corners[static_cast<std::size_t>(end - 1)]);
       return;
