@@ -57,8 +57,9 @@ public:
 
   Halfedge_geometry operator[](Index h) const
   {
-    const Face_geometry& f = faces[static_cast<std::size_t>(h / 3)];
-    const int k = static_cast<int>(h % 3);
+    const std::uint32_t u = static_cast<std::uint32_t>(h);  // (unsigned: cheaper divisions by 3)
+    const Face_geometry& f = faces[u / 3u];
+    const int k = static_cast<int>(u % 3u);
     Halfedge_geometry g;
     g.length = f.length[k];
     g.l_next = f.length[k == 2 ? 0 : k + 1];  // |BC|
@@ -104,9 +105,10 @@ struct Mesh_arrays
   double anisotropy = 1.;         // tau, see compute_anisotropy()
   std::size_t number_of_edges = 0;
 
-  static Index next(Index h) { return (h % 3 == 2) ? h - 2 : h + 1; }
-  static Index prev(Index h) { return (h % 3 == 0) ? h + 2 : h - 1; }
-  static Index face(Index h) { return h / 3; }
+  // (h >= 0; unsigned arithmetic divides by 3 in fewer instructions)
+  static Index next(Index h) { return (static_cast<std::uint32_t>(h) % 3u == 2u) ? h - 2 : h + 1; }
+  static Index prev(Index h) { return (static_cast<std::uint32_t>(h) % 3u == 0u) ? h + 2 : h - 1; }
+  static Index face(Index h) { return static_cast<Index>(static_cast<std::uint32_t>(h) / 3u); }
   Index target(Index h) const { return source[next(h)]; }
 
   // Builds the arrays from triangles (3 vertex indices each, counterclockwise), the opposite of

@@ -201,6 +201,23 @@ private:
     const double du = dist[static_cast<std::size_t>(u)];
     const Vertex_source su = m_src[static_cast<std::size_t>(u)];
     const Index lab = label.empty() ? NO_INDEX : label[static_cast<std::size_t>(u)];
+    // the walks through the virtual sources first: their offers are most often the better ones, and an
+    // offer along an edge that is not better is then turned away by wanted() before it is written (the
+    // order changes no result: see Virtual_source_rounds::better())
+    if(su.root != u && su.h != NO_INDEX)  // (a source vertex: the edges are its straight lines)
+    {
+      const double sigma = root_distance(su.root);
+      walk_counterclockwise(u, su, sigma, lab, sink);
+      walk_clockwise(u, su, sigma, lab, sink);
+    }
+    if(has_second(static_cast<std::size_t>(u)))
+    {
+      const Vertex_source s2 = m_src2[static_cast<std::size_t>(u)];
+      const double sigma2 = root_distance(s2.root);
+      const Index lab2 = root_label(s2.root);
+      walk_counterclockwise(u, s2, sigma2, lab2, sink);
+      walk_clockwise(u, s2, sigma2, lab2, sink);
+    }
     // along the edges, u as the new root
     for(Index c = m.corner_begin[u]; c < m.corner_begin[u + 1]; ++c)
     {
@@ -220,20 +237,6 @@ private:
         offer_along_edge(m.source[p], du + gp.length, gp.length, 0., gp.cx - gp.length, gp.cy, -gp.length, 0., p, u,
                          lab, sink);
       }
-    }
-    if(su.root != u && su.h != NO_INDEX)  // (a source vertex: the edges are its straight lines)
-    {
-      const double sigma = root_distance(su.root);
-      walk_counterclockwise(u, su, sigma, lab, sink);
-      walk_clockwise(u, su, sigma, lab, sink);
-    }
-    if(has_second(static_cast<std::size_t>(u)))
-    {
-      const Vertex_source s2 = m_src2[static_cast<std::size_t>(u)];
-      const double sigma2 = root_distance(s2.root);
-      const Index lab2 = root_label(s2.root);
-      walk_counterclockwise(u, s2, sigma2, lab2, sink);
-      walk_clockwise(u, s2, sigma2, lab2, sink);
     }
   }
 
@@ -340,7 +343,7 @@ private:
         const double lx = t0 * g.cx - s.sx, ly = t0 * g.cy - s.sy;
         const double rx = t1 * g.cx - s.sx, ry = t1 * g.cy - s.sy;
         // rotate by minus the angle of C
-        const double co = g.cx / g.l_prev, si = g.cy / g.l_prev;
+        const double inv = 1. / g.l_prev, co = g.cx * inv, si = g.cy * inv;
         rotate(co, -si, s.sx, s.sy);
         s.lx = lx; s.ly = ly; rotate(co, -si, s.lx, s.ly);
         s.rx = rx; s.ry = ry; rotate(co, -si, s.rx, s.ry);
@@ -360,9 +363,9 @@ private:
     const Mesh_arrays& m = *m_mesh;
     const Index degree = m.corner_begin[u + 1] - m.corner_begin[u];
     Index h = s.h;
+    Halfedge_geometry g = m.geometry[h];  // u at the origin, B = (length, 0), C = (cx, cy)
     for(Index step = 0; step < 2 * degree + 2; ++step)
     {
-      const Halfedge_geometry g = m.geometry[h];
       const Index o = m.opposite[h];
       if(o == NO_INDEX)
         return;
@@ -386,15 +389,16 @@ private:
           return;
         const double rx = t0 * g.length - s.sx, ry = -s.sy;
         const double lx = t1 * g.length - s.sx, ly = -s.sy;
-        const double co = gg.cx / gg.l_prev, si = gg.cy / gg.l_prev;
+        const double inv = 1. / gg.l_prev, co = gg.cx * inv, si = gg.cy * inv;
         rotate(co, si, s.sx, s.sy);
         s.lx = lx; s.ly = ly; rotate(co, si, s.lx, s.ly);
         s.rx = rx; s.ry = ry; rotate(co, si, s.rx, s.ry);
       }
       h = hg;
       s.h = hg;
-      reach_third_vertex(s, gg, Mesh_arrays::next(hg), sigma, lab, sink);
-      reach_beyond(s, gg, sigma, lab, sink);
+      g = gg;
+      reach_third_vertex(s, g, Mesh_arrays::next(hg), sigma, lab, sink);
+      reach_beyond(s, g, sigma, lab, sink);
     }
   }
 
@@ -422,13 +426,15 @@ private:
     {
       if(!(g.l_prev > 0.))
         return;
-      ux = -g.cx / g.l_prev; uy = -g.cy / g.l_prev;  // direction from C to the origin
+      const double inv = 1. / g.l_prev;
+      ux = -g.cx * inv; uy = -g.cy * inv;  // direction from C to the origin
     }
     else
     {
       if(!(g.l_next > 0.))
         return;
-      ux = (g.cx - g.length) / g.l_next; uy = g.cy / g.l_next;  // direction from B to C
+      const double inv = 1. / g.l_next;
+      ux = (g.cx - g.length) * inv; uy = g.cy * inv;  // direction from B to C
     }
     Vertex_source t;
     const double x = s.sx - px, yy = s.sy - py;
@@ -468,18 +474,24 @@ private:
     // (seen from the image, on the left of B -> C, the segment turns counter-clockwise from B to C)
     const double rx = bx + t0 * ex - s.sx, ry = t0 * ey - s.sy;
     const double lx = bx + t1 * ex - s.sx, ly = t1 * ey - s.sy;
-    // z in the frame of s.h: C + (its coordinates in the frame of t, C at the origin, B on the x axis)
-    const Halfedge_geometry gt = m.geometry[t];
-    const double ux = -ex / g.l_next, uy = -ey / g.l_next;  // C -> B
-    const double zx = cx + gt.cx * ux - gt.cy * uy, zy = cy + gt.cx * uy + gt.cy * ux;
+    // z in the frame of s.h: C + a (B - C) + b (B - C) turned a quarter counter-clockwise, (a, b) the
+    // coordinates of z in the frame of t (C at the origin, B on the x axis) divided by |BC|
+    const Face_geometry& ft = m.geometry.faces[static_cast<std::size_t>(Mesh_arrays::face(t))];
+    const int kt = static_cast<int>(t - 3 * Mesh_arrays::face(t));
+    const double lt = ft.length[kt], lt_prev = ft.length[kt == 0 ? 2 : kt - 1], lt_next = ft.length[kt == 2 ? 0 : kt + 1];
+    if(!(lt > 0.) || !(lt_prev > 0.))
+      return;
+    const double inv2 = 1. / (lt * lt);
+    const double a = 0.5 * (lt * lt + lt_prev * lt_prev - lt_next * lt_next) * inv2, b = 2. * ft.area * inv2;
+    const double zx = cx - a * ex + b * ey, zy = cy - a * ey - b * ex;
     const double dx = zx - s.sx, dy = zy - s.sy;
-    if(cross(rx, ry, dx, dy) < 0. || cross(dx, dy, lx, ly) < 0. || !(gt.l_prev > 0.))
+    if(cross(rx, ry, dx, dy) < 0. || cross(dx, dy, lx, ly) < 0.)
       return;
     const double d = sigma + std::sqrt(dx * dx + dy * dy);
     if(!wanted(z, d, sink))
       return;
     // the frame of hz: z at the origin, C on the x axis
-    const double vx = (cx - zx) / gt.l_prev, vy = (cy - zy) / gt.l_prev;
+    const double inv = 1. / lt_prev, vx = (cx - zx) * inv, vy = (cy - zy) * inv;
     Vertex_source r;
     const double x = s.sx - zx, y = s.sy - zy;
     r.sx = x * vx + y * vy; r.sy = -x * vy + y * vx;
