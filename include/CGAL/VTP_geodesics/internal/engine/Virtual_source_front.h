@@ -325,9 +325,10 @@ private:
       if(o == NO_INDEX || !(g.l_prev > 0.))
         return;
       const Index c = m.source[p];
-      const Halfedge_geometry go = m.geometry[o];  // u at the origin, C = (length, 0), D = (cx, cy)
+      Halfedge_geometry go;  // u at the origin, C = (length, 0), D = (cx, cy); read once the step is sure
       if(c == s.root)
       {
+        go = m.geometry[o];
         s.sx = go.length; s.sy = 0.;
         s.rx = go.cx - go.length; s.ry = go.cy;
         s.lx = -go.length; s.ly = 0.;
@@ -347,6 +348,7 @@ private:
         rotate(co, -si, s.sx, s.sy);
         s.lx = lx; s.ly = ly; rotate(co, -si, s.lx, s.ly);
         s.rx = rx; s.ry = ry; rotate(co, -si, s.rx, s.ry);
+        go = m.geometry[o];
       }
       h = o;
       s.h = o;
@@ -370,12 +372,13 @@ private:
       if(o == NO_INDEX)
         return;
       const Index hg = Mesh_arrays::next(o);
-      const Halfedge_geometry gg = m.geometry[hg];  // u at the origin, E = (length, 0), B = (cx, cy)
-      if(!(gg.l_prev > 0.))
-        return;
+      Halfedge_geometry gg;  // u at the origin, E = (length, 0), B = (cx, cy); read once the step is sure
       const Index b = m.source[o];
       if(b == s.root)
       {
+        gg = m.geometry[hg];
+        if(!(gg.l_prev > 0.))
+          return;
         s.sx = gg.cx; s.sy = gg.cy;
         s.rx = -gg.cx; s.ry = -gg.cy;
         s.lx = gg.length - gg.cx; s.ly = -gg.cy;
@@ -389,6 +392,9 @@ private:
           return;
         const double rx = t0 * g.length - s.sx, ry = -s.sy;
         const double lx = t1 * g.length - s.sx, ly = -s.sy;
+        gg = m.geometry[hg];
+        if(!(gg.l_prev > 0.))
+          return;
         const double inv = 1. / gg.l_prev, co = gg.cx * inv, si = gg.cy * inv;
         rotate(co, si, s.sx, s.sy);
         s.lx = lx; s.ly = ly; rotate(co, si, s.lx, s.ly);
