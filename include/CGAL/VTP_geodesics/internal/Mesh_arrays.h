@@ -57,6 +57,7 @@ public:
 
   Halfedge_geometry operator[](Index h) const
   {
+    CGAL_assertion(h >= 0);
     const std::uint32_t u = static_cast<std::uint32_t>(h);  // (unsigned: cheaper divisions by 3)
     const Face_geometry& f = faces[u / 3u];
     const int k = static_cast<int>(u % 3u);
@@ -105,10 +106,22 @@ struct Mesh_arrays
   double anisotropy = 1.;         // tau, see compute_anisotropy()
   std::size_t number_of_edges = 0;
 
-  // (h >= 0; unsigned arithmetic divides by 3 in fewer instructions)
-  static Index next(Index h) { return (static_cast<std::uint32_t>(h) % 3u == 2u) ? h - 2 : h + 1; }
-  static Index prev(Index h) { return (static_cast<std::uint32_t>(h) % 3u == 0u) ? h + 2 : h - 1; }
-  static Index face(Index h) { return static_cast<Index>(static_cast<std::uint32_t>(h) / 3u); }
+  // (h is a half-edge, not NO_INDEX: unsigned arithmetic divides by 3 in fewer instructions)
+  static Index next(Index h)
+  {
+    CGAL_assertion(h >= 0);
+    return (static_cast<std::uint32_t>(h) % 3u == 2u) ? h - 2 : h + 1;
+  }
+  static Index prev(Index h)
+  {
+    CGAL_assertion(h >= 0);
+    return (static_cast<std::uint32_t>(h) % 3u == 0u) ? h + 2 : h - 1;
+  }
+  static Index face(Index h)
+  {
+    CGAL_assertion(h >= 0);
+    return static_cast<Index>(static_cast<std::uint32_t>(h) / 3u);
+  }
   Index target(Index h) const { return source[next(h)]; }
 
   // Builds the arrays from triangles (3 vertex indices each, counterclockwise), the opposite of
