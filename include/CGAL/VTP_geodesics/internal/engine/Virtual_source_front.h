@@ -325,15 +325,7 @@ private:
       if(o == NO_INDEX || !(g.l_prev > 0.))
         return;
       const Index c = m.source[p];
-      Halfedge_geometry go;  // u at the origin, C = (length, 0), D = (cx, cy); read once the step is sure
-      if(c == s.root)
-      {
-        go = m.geometry[o];
-        s.sx = go.length; s.sy = 0.;
-        s.rx = go.cx - go.length; s.ry = go.cy;
-        s.lx = -go.length; s.ly = 0.;
-      }
-      else
+      if(c != s.root)
       {
         // the line goes on across u-C only if the image is strictly on the side of the face it leaves
         if(!(cross(g.cx, g.cy, s.sx, s.sy) < 0.))
@@ -348,7 +340,13 @@ private:
         rotate(co, -si, s.sx, s.sy);
         s.lx = lx; s.ly = ly; rotate(co, -si, s.lx, s.ly);
         s.rx = rx; s.ry = ry; rotate(co, -si, s.rx, s.ry);
-        go = m.geometry[o];
+      }
+      const Halfedge_geometry go = m.geometry[o];  // u at the origin, C = (length, 0), D = (cx, cy)
+      if(c == s.root)
+      {
+        s.sx = go.length; s.sy = 0.;
+        s.rx = go.cx - go.length; s.ry = go.cy;
+        s.lx = -go.length; s.ly = 0.;
       }
       h = o;
       s.h = o;
@@ -372,29 +370,24 @@ private:
       if(o == NO_INDEX)
         return;
       const Index hg = Mesh_arrays::next(o);
-      Halfedge_geometry gg;  // u at the origin, E = (length, 0), B = (cx, cy); read once the step is sure
       const Index b = m.source[o];
+      // the line goes on across u-B only if the image is strictly above it (the side of the face it leaves)
+      double t0 = 0., t1 = 1.;
+      if(b != s.root && (!(s.sy > 0.) || !clip(s, g.length, 0., t0, t1)))
+        return;
+      const Halfedge_geometry gg = m.geometry[hg];  // u at the origin, E = (length, 0), B = (cx, cy)
+      if(!(gg.l_prev > 0.))
+        return;
       if(b == s.root)
       {
-        gg = m.geometry[hg];
-        if(!(gg.l_prev > 0.))
-          return;
         s.sx = gg.cx; s.sy = gg.cy;
         s.rx = -gg.cx; s.ry = -gg.cy;
         s.lx = gg.length - gg.cx; s.ly = -gg.cy;
       }
       else
       {
-        if(!(s.sy > 0.))
-          return;
-        double t0, t1;
-        if(!clip(s, g.length, 0., t0, t1))
-          return;
         const double rx = t0 * g.length - s.sx, ry = -s.sy;
         const double lx = t1 * g.length - s.sx, ly = -s.sy;
-        gg = m.geometry[hg];
-        if(!(gg.l_prev > 0.))
-          return;
         const double inv = 1. / gg.l_prev, co = gg.cx * inv, si = gg.cy * inv;
         rotate(co, si, s.sx, s.sy);
         s.lx = lx; s.ly = ly; rotate(co, si, s.lx, s.ly);
@@ -482,8 +475,9 @@ private:
     const double lx = bx + t1 * ex - s.sx, ly = t1 * ey - s.sy;
     // z in the frame of s.h: C + a (B - C) + b (B - C) turned a quarter counter-clockwise, (a, b) the
     // coordinates of z in the frame of t (C at the origin, B on the x axis) divided by |BC|
-    const Face_geometry& ft = m.geometry.faces[static_cast<std::size_t>(Mesh_arrays::face(t))];
-    const int kt = static_cast<int>(t - 3 * Mesh_arrays::face(t));
+    const Index face_t = Mesh_arrays::face(t);
+    const Face_geometry& ft = m.geometry.faces[static_cast<std::size_t>(face_t)];
+    const int kt = static_cast<int>(t - 3 * face_t);
     const double lt = ft.length[kt], lt_prev = ft.length[kt == 0 ? 2 : kt - 1], lt_next = ft.length[kt == 2 ? 0 : kt + 1];
     if(!(lt > 0.) || !(lt_prev > 0.))
       return;
