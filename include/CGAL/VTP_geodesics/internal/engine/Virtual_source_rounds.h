@@ -468,9 +468,9 @@ private:
   }
 
   // the vertices a thread owns come in blocks of 2^owner_bits; the least round the team runs (smaller
-  // ones cost less than the barriers: with 2 threads, 64 against 256 took the fastest of five alternated
-  // first runs of pvsp from 0.569 to 0.500 s on a 1M-vertex remeshing and from 0.366 to 0.309 s on a 1M
-  // Loop subdivision, 0.079 to 0.069 s at 173K, the same at 156K; 32 was no better)
+  // ones cost less than the barriers: with 2 threads, 64 against 256 took the fastest of alternated first
+  // runs of pvsp from 0.569 to 0.500 s (then 0.431 to 0.417 s) on a 1M-vertex remeshing and from 0.079 to
+  // 0.069 s at 173K; no change beyond noise on a 1M Loop subdivision and at 156K; 32 was no better)
   static constexpr int owner_bits = 9;
   static constexpr std::size_t min_parallel = 64;
 
