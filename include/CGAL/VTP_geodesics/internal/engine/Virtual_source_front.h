@@ -60,9 +60,15 @@ namespace internal {
 // by u on the far side of a vertex that took another line (without them, a line dies as soon as the thin
 // triangle between it and the line of the vertex that should carry it holds a vertex). The order is not
 // monotone (an offer through a virtual source may be smaller than the distance of the vertex making it, by
-// at most two edges: Virtual_source_rounds::reach), so a run with a distance limit goes on until the
-// buckets pass the limit plus twice that; a run stopped at its targets gives the full run's distances of
-// the vertices taken.
+// at most two edges: Virtual_source_rounds::reach), and since such offers can follow each other, a vertex
+// can be taken rounds after the buckets passed its distance. So a run with a distance limit R takes, once
+// the buckets pass R plus four longest edges, only the vertices offered at most that much (the others wait
+// no more, and an offer that low brings them back): what it gives within R is always the length of a path,
+// and most often the full run's distance, but not always (a vertex left out may have lowered others in the
+// full run, and a vertex that the full run takes early at a large distance may get a smaller one here). A
+// run stopped at its targets gives the full run's distances of the vertices taken. Lines never cross a face
+// of (almost) zero area (Mesh_arrays::is_degenerate_face): the trace-back of a path could not follow them
+// there.
 //
 // Upper bound: every offer is the length of a path on the surface (a straight segment in an unfolding whose
 // faces it crosses, after a path to the root realised by induction), hence never below the geodesic distance.
@@ -341,6 +347,8 @@ private:
         s.lx = lx; s.ly = ly; rotate(co, -si, s.lx, s.ly);
         s.rx = rx; s.ry = ry; rotate(co, -si, s.rx, s.ry);
       }
+      if(m.is_degenerate_face[static_cast<std::size_t>(Mesh_arrays::face(o))])
+        return;  // (a line never enters a face of zero area)
       const Halfedge_geometry go = m.geometry[o];  // u at the origin, C = (length, 0), D = (cx, cy)
       if(c == s.root)
       {
@@ -375,6 +383,8 @@ private:
       double t0 = 0., t1 = 1.;
       if(b != s.root && (!(s.sy > 0.) || !clip(s, g.length, 0., t0, t1)))
         return;
+      if(m.is_degenerate_face[static_cast<std::size_t>(Mesh_arrays::face(o))])
+        return;  // (a line never enters a face of zero area)
       const Halfedge_geometry gg = m.geometry[hg];  // u at the origin, E = (length, 0), B = (cx, cy)
       if(!(gg.l_prev > 0.))
         return;
@@ -466,6 +476,8 @@ private:
     // forward: the image strictly on u's side of B-C; the wedge cut to the points B + t (C - B), t0 <= t <= t1
     if(!(cross(ex, ey, s.sx - bx, s.sy) > 0.))
       return;
+    if(m.is_degenerate_face[static_cast<std::size_t>(Mesh_arrays::face(t))])
+      return;  // (a line never enters a face of zero area)
     double t0 = 0., t1 = 1.;
     if(!bound(cross(s.rx, s.ry, ex, ey), cross(s.rx, s.ry, s.sx - bx, s.sy), t0, t1)
        || !bound(cross(ex, ey, s.lx, s.ly), cross(s.sx - bx, s.sy, s.lx, s.ly), t0, t1) || !(t0 <= t1))

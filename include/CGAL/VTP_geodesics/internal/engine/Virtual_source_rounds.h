@@ -338,12 +338,12 @@ private:
           const std::size_t v = static_cast<std::size_t>(e.second);
           if(front.m_taken[v] || front.dist[v] != e.first)
             continue;
-          if(beyond)
+          if(beyond && e.first > m_cutoff)
           {
-            // no offer can be within the limit any more (see Virtual_source_front.h)
+            // past the limit (see Virtual_source_front.h): a vertex this far is not taken; it waits no more
+            // (a later offer within the cutoff puts it back)
             front.m_stopped = true;
-            m_done = true;
-            return;
+            continue;
           }
           front.m_taken[v] = 1;
           m_batch.push_back(e.second);
