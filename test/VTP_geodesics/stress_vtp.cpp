@@ -1,7 +1,8 @@
-// vtp_stress: randomized cross-check of VTP (and PVTP) against CGAL::Surface_mesh_shortest_path.
+// vtp_stress: randomized cross-check of VTP (and PVTP) against CGAL::Surface_mesh_shortest_path, and of
+// virtual source propagation (VSP, PVSP) against VTP.
 //
 //   vtp_stress [--seed S] [--cases N] [--case K] [--min-vertices v] [--max-vertices V]
-//              [--sources P] [--methods vtp,pvtp] [--timeout T] [--dump DIR] [--verbose]
+//              [--sources P] [--methods vtp,pvtp,vsp,pvsp] [--timeout T] [--dump DIR] [--verbose]
 //
 // Case k of a run seeded with S draws its own mesh and sources from case_seed(S, k), so any case can be
 // replayed alone with `--seed S --case k`. The meshes (see vtp_random_meshes.h) are closed surfaces
@@ -20,6 +21,13 @@
 // no NaN, no negative value, and 0 at the source; PVTP must also equal VTP within the same tolerance.
 // The queries are checked against the VTP run from the same source (check_queries()): a distance limit,
 // paths (length = distance), two sources (minimum of single runs, labels).
+// VSP (one and two virtual sources per vertex) is approximate: it must never be below the VTP distances by
+// more than the same tolerance, reach the same vertices, give 0 at the source and no NaN; PVSP on 2 and 3
+// threads must give the very same bits as VSP; and its own queries must hold (check_virtual_sources()): a
+// distance limit gives distances within it that are never below the exact ones (most often those of the full
+// run: the runs where they are not are counted), targets stop the run with the full run's distances, paths
+// have the length of the distance, and two sources are never below the exact distance to the source of each
+// vertex's label.
 // Any failure is printed with its seed and case (and whether CGAL, run on the midpoint subdivision of the
 // mesh, agrees with the method: CGAL itself errs on some meshes); the exit code is then 1. A case that runs longer than
 // --timeout seconds (default 120) is reported and ends the program with exit code 3. A crash prints the
@@ -74,6 +82,8 @@ struct Settings
   std::size_t sources = 2;
   bool vtp = true;
   bool pvtp = false;
+  bool vsp = true;
+  bool pvsp = false;
   unsigned timeout = 120;
   std::string dump;
   bool verbose = false;
@@ -344,8 +354,11 @@ void dump_mesh(const Settings& settings, std::size_t index, const Surface_mesh& 
 struct Totals
 {
   std::size_t cases = 0, sources = 0, comparisons = 0, failures = 0, vertices = 0, query_checks = 0;
+  std::size_t vsp_runs = 0, vsp_limit_runs_differing = 0, vsp_limit_differences = 0;
   double worst_vs_cgal = 0., worst_parallel = 0.;
-  double cgal_seconds = 0., vtp_seconds = 0., pvtp_seconds = 0.;
+  double vsp_worst_below = 0., vsp_worst_relative = 0.;  // (d_vtp - d_vsp) and |d_vsp - d_vtp| / d_vtp, largest
+  std::string vsp_worst_relative_where;                  // the case, source and vertex of the latter
+  double cgal_seconds = 0., vtp_seconds = 0., pvtp_seconds = 0., vsp_seconds = 0.;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t0)
@@ -443,6 +456,169 @@ std::string check_queries(const Surface_mesh& mesh, Geodesic_distance_solver<Sur
   return std::string();
 }
 
+// Virtual source propagation from s against the VTP run `exact` from s (see the header comment); `second`
+// is the VTP run from s2, the second source of the two-source check. Returns a description of the first
+// failure, or an empty string.
+std::string check_virtual_sources(const Settings& settings, const std::string& where, const Surface_mesh& mesh,
+                                  Geodesic_distance_solver<Surface_mesh>& solver, Vertex_index s,
+                                  const std::vector<double>& exact, Vertex_index s2,
+                                  const std::vector<double>& second, Totals& totals)
+{
+  namespace VP = CGAL::VTP_geodesics::parameters;
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::size_t n = exact.size();
+  double max_d = 0.;
+  for(double x : exact)
+    if(std::isfinite(x))
+      max_d = (std::max)(max_d, x);
+  const double tolerance = TOLERANCE * (max_d > 0. ? max_d : 1.);
+  std::ostringstream failure;
+  failure.precision(17);
+  for(int per_vertex = 1; per_vertex <= 2; ++per_vertex)
+  {
+    const std::string name = per_vertex == 1 ? "vsp" : "vsp2";
+    const auto vsp = VP::virtual_sources(true).virtual_sources_per_vertex(per_vertex);
+    auto t0 = std::chrono::steady_clock::now();
+    solver.compute(vtp_test::Discard_map(), s, vsp);
+    totals.vsp_seconds += seconds_since(t0);
+    ++totals.vsp_runs;
+    const std::vector<double> d = solver.distances();
+    if(!(d[std::size_t(s)] == 0.))
+      failure << name << ": the source is at " << d[std::size_t(s)];
+    for(std::size_t i = 0; i < n && failure.str().empty(); ++i)
+    {
+      if(std::isnan(d[i]) || d[i] < 0.)
+        failure << name << ": vertex " << i << " at " << d[i];
+      else if(std::isfinite(d[i]) != std::isfinite(exact[i]))
+        failure << name << ": vertex " << i << " at " << d[i] << ", vtp " << exact[i] << " (reachability)";
+      else if(std::isfinite(d[i]))
+      {
+        totals.vsp_worst_below = (std::max)(totals.vsp_worst_below, (exact[i] - d[i]) / (max_d > 0. ? max_d : 1.));
+        if(exact[i] > 0. && std::abs(d[i] - exact[i]) / exact[i] > totals.vsp_worst_relative)
+        {
+          totals.vsp_worst_relative = std::abs(d[i] - exact[i]) / exact[i];
+          totals.vsp_worst_relative_where = where + ", " + name + ", vertex " + std::to_string(i) + " at "
+                                            + std::to_string(d[i]) + ", vtp " + std::to_string(exact[i]);
+        }
+        if(d[i] < exact[i] - tolerance)
+          failure << name << ": vertex " << i << " at " << d[i] << ", below the exact distance " << exact[i];
+      }
+    }
+    if(!failure.str().empty())
+      return failure.str();
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+    if(settings.pvsp)
+      for(int threads : { 2, 3 })
+      {
+        t0 = std::chrono::steady_clock::now();
+        solver.compute<CGAL::Parallel_tag>(vtp_test::Discard_map(), s, vsp.number_of_threads(threads));
+        totals.vsp_seconds += seconds_since(t0);
+        ++totals.vsp_runs;
+        const std::vector<double>& dp = solver.distances();
+        for(std::size_t i = 0; i < n; ++i)
+          if(!(dp[i] == d[i]))
+          {
+            failure << "p" << name << " on " << threads << " threads: vertex " << i << " at " << dp[i] << ", " << name
+                    << " " << d[i] << " (not the same bits)";
+            return failure.str();
+          }
+      }
+#else
+    (void)settings;
+#endif
+    if(per_vertex == 2)
+      break;
+    // a distance limit: within it, never below the exact distance; +infinity beyond. Most often the full
+    // run's distances within the limit, but not always (the order of a run is not monotone: see the manual,
+    // "Virtual source propagation"): the vertices where the two differ are counted, not failed
+    ++totals.query_checks;
+    double max_vsp = 0.;
+    for(double x : d)
+      if(std::isfinite(x))
+        max_vsp = (std::max)(max_vsp, x);
+    const double R = 0.37 * max_vsp;
+    solver.compute(vtp_test::Discard_map(), s, vsp.maximum_distance(R));
+    const std::vector<double> limited = solver.distances();
+    bool differs = false;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      if(!(limited[i] == inf || (limited[i] <= R && limited[i] >= exact[i] - tolerance)))
+      {
+        failure << name << " limit " << R << ": vertex " << i << " at " << limited[i] << ", exact " << exact[i];
+        return failure.str();
+      }
+      if(d[i] <= R ? !(limited[i] == d[i]) : !(limited[i] == inf))
+      {
+        ++totals.vsp_limit_differences;
+        differs = true;
+      }
+    }
+    totals.vsp_limit_runs_differing += differs ? 1 : 0;
+    // two vertex targets: the full run's distances
+    ++totals.query_checks;
+    std::vector<Vertex_index> targets;
+    for(std::size_t j = 0; j < 2; ++j)
+      targets.push_back(Vertex_index(static_cast<Surface_mesh::size_type>((std::size_t(s) + 1 + j * (n / 2)) % n)));
+    solver.compute(vtp_test::Discard_map(), s, vsp.targets(targets));
+    for(std::size_t j = 0; j < targets.size(); ++j)
+      if(!(solver.target_distance(j) == d[std::size_t(targets[j])]))
+      {
+        failure << name << " target vertex " << std::size_t(targets[j]) << " at " << solver.target_distance(j)
+                << ", full run " << d[std::size_t(targets[j])];
+        return failure.str();
+      }
+    // paths of a few vertices: from the vertex to the source, of the length of the distance
+    ++totals.query_checks;
+    solver.compute(vtp_test::Discard_map(), s, vsp.record_paths(true));
+    for(std::size_t j = 0; j < 5; ++j)
+    {
+      const Vertex_index v(static_cast<Surface_mesh::size_type>((std::size_t(s) + 1 + j * (n / 5 + 1)) % n));
+      if(!std::isfinite(d[v]))
+        continue;
+      std::vector<vtp_test::Point_3> path;
+      try { solver.shortest_path_points(v, std::back_inserter(path)); }
+      catch(const std::exception& e) { return name + " path from vertex " + std::to_string(std::size_t(v)) + ": " + e.what(); }
+      double length = 0.;
+      for(std::size_t k = 1; k < path.size(); ++k)
+        length += std::sqrt(CGAL::squared_distance(path[k - 1], path[k]));
+      if(path.empty() || path.front() != mesh.point(v) || path.back() != mesh.point(s) || !(std::abs(length - d[v]) <= tolerance))
+      {
+        failure << name << " path from vertex " << std::size_t(v) << ": " << path.size() << " points, length " << length
+                << ", distance " << d[v];
+        return failure.str();
+      }
+    }
+    // two sources: labels in range, sources at 0 with their own label, never below the exact distance to
+    // the labelled source, and reached where one of the sources reaches
+    ++totals.query_checks;
+    std::vector<std::size_t> labels(n);
+    solver.compute(vtp_test::Discard_map(), std::vector<Vertex_index>{ s, s2 },
+                   vsp.nearest_source_map(boost::make_iterator_property_map(labels.begin(), get(boost::vertex_index, mesh))));
+    const std::vector<double>& both = solver.distances();
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const bool reached = std::isfinite(exact[i]) || std::isfinite(second[i]);
+      if(reached != std::isfinite(both[i]))
+        failure << name << " two sources: vertex " << i << " at " << both[i] << ", vtp " << exact[i] << " and " << second[i];
+      else if(reached && !(labels[i] < 2 && both[i] >= (labels[i] == 0 ? exact[i] : second[i]) - tolerance))
+        failure << name << " two sources: vertex " << i << " at " << both[i] << " labelled " << labels[i] << ", vtp "
+                << exact[i] << " and " << second[i];
+      else if(!reached && labels[i] != CGAL::VTP_geodesics::no_source)
+        failure << name << " two sources: unreached vertex " << i << " labelled " << labels[i];
+      if(!failure.str().empty())
+        return failure.str();
+    }
+    if(!(both[std::size_t(s)] == 0.) || !(both[std::size_t(s2)] == 0.) || labels[std::size_t(s)] != 0
+       || (s2 != s && labels[std::size_t(s2)] != 1))
+    {
+      failure << name << " two sources: the sources at " << both[std::size_t(s)] << " and " << both[std::size_t(s2)]
+              << ", labelled " << labels[std::size_t(s)] << " and " << labels[std::size_t(s2)];
+      return failure.str();
+    }
+  }
+  return std::string();
+}
+
 // Runs one case; returns false on a failure (printed).
 bool run_case(const Settings& settings, std::size_t index, Totals& totals)
 {
@@ -524,6 +700,20 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
         std::cout << "vtp_stress: MISMATCH " << where << ": " << failure << "; " << reproduce << std::endl;
       }
     }
+    if(settings.vsp)
+    {
+      set_current_case(where + ", vsp; " + reproduce);
+      const std::size_t n = sequential.size();
+      const Vertex_index s2(static_cast<Surface_mesh::size_type>((std::size_t(s) * 7 + 3) % n));
+      solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), s2);
+      const std::vector<double> second = solver.distances();
+      const std::string failure = check_virtual_sources(settings, where, c.mesh, solver, s, sequential, s2, second, totals);
+      if(!failure.empty())
+      {
+        ok = false;
+        std::cout << "vtp_stress: MISMATCH " << where << ": " << failure << "; " << reproduce << std::endl;
+      }
+    }
 #ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
     if(settings.pvtp)
     {
@@ -555,16 +745,18 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
 void usage(std::ostream& os)
 {
   os << "usage: vtp_stress [--seed S] [--cases N] [--case K] [--min-vertices v] [--max-vertices V]\n"
-        "                  [--sources P] [--methods vtp,pvtp] [--timeout T] [--dump DIR] [--verbose]\n"
+        "                  [--sources P] [--methods vtp,pvtp,vsp,pvsp] [--timeout T] [--dump DIR] [--verbose]\n"
         "\n"
-        "Compares VTP (and PVTP) with CGAL::Surface_mesh_shortest_path on random meshes.\n"
+        "Compares VTP (and PVTP) with CGAL::Surface_mesh_shortest_path on random meshes, and checks\n"
+        "virtual source propagation against VTP (never below it; PVSP on 2 and 3 threads = VSP, bit for bit).\n"
         "  --seed S          seed of the run (default 1)\n"
         "  --cases N         number of cases, 0 .. N-1 (default 100)\n"
         "  --case K          run case K only (to replay a failure)\n"
         "  --min-vertices v  smallest number of vertices drawn (default 4)\n"
         "  --max-vertices V  largest number of vertices drawn (default 200)\n"
         "  --sources P       at most P sources per mesh (default 2)\n"
-        "  --methods M       comma-separated among vtp, pvtp (default: vtp, and pvtp if built with OpenMP)\n"
+        "  --methods M       comma-separated among vtp, pvtp, vsp, pvsp (default: vtp and vsp, and pvtp and\n"
+        "                    pvsp if built with OpenMP; pvsp needs vsp)\n"
         "  --timeout T       seconds allowed per case (default 120; 0: none)\n"
         "  --dump DIR        write the mesh of each failing case to DIR/vtp_stress_<seed>_<case>.off\n"
         "  --verbose         print every case\n"
@@ -591,21 +783,24 @@ const vtp_support::Option_table<Settings>& option_table()
     { "--verbose", nullptr, nullptr, [](Settings& s, S, S) { s.verbose = true; } },
     { "--methods", "M", nullptr,
       [](Settings& s, S, S v) {
-        s.vtp = s.pvtp = false;
+        s.vtp = s.pvtp = s.vsp = s.pvsp = false;
         for(const std::string& m : vtp_support::split(v, ','))
         {
           if(m == "vtp") s.vtp = true;
-          else if(m == "pvtp")
+          else if(m == "vsp") s.vsp = true;
+          else if(m == "pvtp" || m == "pvsp")
           {
 #ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
-            s.pvtp = true;
+            (m == "pvtp" ? s.pvtp : s.pvsp) = true;
 #else
-            throw vtp_support::Tool_error("pvtp needs OpenMP, and this program was built without it");
+            throw vtp_support::Tool_error(m + " needs OpenMP, and this program was built without it");
 #endif
           }
           else
-            throw vtp_support::Tool_error("unknown method '" + m + "' (expected vtp or pvtp)");
+            throw vtp_support::Tool_error("unknown method '" + m + "' (expected vtp, pvtp, vsp or pvsp)");
         }
+        if(s.pvsp && !s.vsp)
+          throw vtp_support::Tool_error("pvsp is checked against vsp: list vsp too");
       } },
   };
   return table;
@@ -615,7 +810,7 @@ Settings parse(int argc, char** argv)
 {
   Settings s;
 #ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
-  s.pvtp = true;
+  s.pvtp = s.pvsp = true;
 #endif
   vtp_support::parse_command_line(argc, argv, option_table(), s, [](Settings&, const std::string& a) {
     throw vtp_support::Tool_error("unknown argument '" + a + "' (see --help)");
@@ -629,7 +824,7 @@ Settings parse(int argc, char** argv)
     s.min_vertices = 4;
   if(s.max_vertices < s.min_vertices)
     throw vtp_support::Tool_error("--max-vertices must be >= --min-vertices (and >= 4)");
-  if(!s.vtp && !s.pvtp)
+  if(!s.vtp && !s.pvtp && !s.vsp)
     throw vtp_support::Tool_error("no method selected");
   return s;
 }
@@ -676,14 +871,25 @@ int main(int argc, char** argv)
 
   std::cout << "vtp_stress: seed " << settings.seed << ", " << totals.cases << " cases (" << totals.vertices
             << " vertices), " << totals.sources << " sources, " << totals.comparisons << " comparisons, "
-            << totals.query_checks << " query checks (limit, paths, two sources), methods"
-            << (settings.vtp ? " vtp" : "") << (settings.pvtp ? " pvtp" : "") << ": " << totals.failures
+            << totals.query_checks << " query checks (limit, targets, paths, two sources), methods"
+            << (settings.vtp ? " vtp" : "") << (settings.pvtp ? " pvtp" : "")
+            << (settings.vsp ? " vsp" : "") << (settings.pvsp ? " pvsp" : "") << ": " << totals.failures
             << " failing cases; largest |d - d_cgal| / max distance " << totals.worst_vs_cgal;
   if(settings.pvtp)
     std::cout << ", largest |d_pvtp - d_vtp| / max distance " << totals.worst_parallel;
+  if(settings.vsp)
+    std::cout << "; vsp" << (settings.pvsp ? ", pvsp" : "") << ": " << totals.vsp_runs
+              << " runs, largest (d_vtp - d) / max distance " << totals.vsp_worst_below
+              << " (below exact if positive), largest |d - d_vtp| / d_vtp " << totals.vsp_worst_relative
+              << ", limited runs not equal to the full run within the limit: " << totals.vsp_limit_runs_differing
+              << " (" << totals.vsp_limit_differences << " vertices)";
   std::cout << "; " << seconds << " s (CGAL " << totals.cgal_seconds << " s, vtp " << totals.vtp_seconds << " s";
   if(settings.pvtp)
     std::cout << ", pvtp " << totals.pvtp_seconds << " s";
+  if(settings.vsp)
+    std::cout << ", vsp " << totals.vsp_seconds << " s";
   std::cout << ")" << std::endl;
+  if(settings.vsp && !totals.vsp_worst_relative_where.empty())
+    std::cout << "vtp_stress: the largest relative error of vsp: " << totals.vsp_worst_relative_where << std::endl;
   return totals.failures == 0 ? 0 : 1;
 }
