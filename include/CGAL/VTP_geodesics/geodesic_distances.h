@@ -160,7 +160,10 @@ typename Solver_for<TriangleMesh, NamedParameters>::type solver_for(const Triang
 ///       included) gets it, exactly as without a limit; every other vertex gets `+infinity` (and `no_source`
 ///       in `nearest_source_map`), as if unreachable. The propagation stops once no distance `<= R` can
 ///       change, so its work is that of the region within `R`. A vertex at exactly `R` is inside; one whose
-///       true distance is `R` may be computed one rounding error above or below it}
+///       true distance is `R` may be computed one rounding error above or below it. With `virtual_sources(true)`
+///       the order of the propagation is not monotone: the distances within `R` are never below the exact ones,
+///       and those of a run without a limit on all but rare meshes of very stretched triangles, where some
+///       may differ (see \ref VTPGeodesicsVirtualSources)}
 ///     \cgalParamType{`double`, `>= 0` (`+infinity`: no limit)}
 ///     \cgalParamDefault{`+infinity`}
 ///   \cgalParamNEnd
