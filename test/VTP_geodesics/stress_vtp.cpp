@@ -309,12 +309,20 @@ struct Difference
   }
 };
 
+// The largest finite entry (0 if none).
+double largest_finite(const std::vector<double>& values)
+{
+  double m = 0.;
+  for(double x : values)
+    if(std::isfinite(x))
+      m = (std::max)(m, x);
+  return m;
+}
+
 Difference compare(const std::vector<double>& d, const std::vector<double>& expected, std::size_t source)
 {
   Difference r;
-  for(double x : expected)
-    if(std::isfinite(x))
-      r.scale = (std::max)(r.scale, x);
+  r.scale = largest_finite(expected);
   for(std::size_t i = 0; i < d.size(); ++i)
   {
     if(std::isnan(d[i]) || d[i] < 0.)
@@ -380,19 +388,48 @@ std::string size_options(const Settings& settings)
   return s;
 }
 
+// The paths of a few vertices, after a run from s recording them that gave the distances d: from the vertex to
+// the source, of the length of its distance within `tolerance`. Returns a description (prefixed by `name`) of
+// the first failure, or an empty string.
+std::string check_paths(const std::string& name, const Surface_mesh& mesh,
+                        Geodesic_distance_solver<Surface_mesh>& solver, Vertex_index s,
+                        const std::vector<double>& d, double tolerance)
+{
+  const std::size_t n = d.size();
+  for(std::size_t j = 0; j < 5; ++j)
+  {
+    const Vertex_index v(static_cast<Surface_mesh::size_type>((std::size_t(s) + 1 + j * (n / 5 + 1)) % n));
+    if(!std::isfinite(d[v]))
+      continue;
+    std::vector<vtp_test::Point_3> path;
+    try { solver.shortest_path_points(v, std::back_inserter(path)); }
+    catch(const std::exception& e) { return name + "path from vertex " + std::to_string(std::size_t(v)) + ": " + e.what(); }
+    double length = 0.;
+    for(std::size_t k = 1; k < path.size(); ++k)
+      length += std::sqrt(CGAL::squared_distance(path[k - 1], path[k]));
+    if(path.empty() || path.front() != mesh.point(v) || path.back() != mesh.point(s) || !(std::abs(length - d[v]) <= tolerance))
+    {
+      std::ostringstream failure;
+      failure.precision(17);
+      failure << name << "path from vertex " << std::size_t(v) << ": " << path.size() << " points, length " << length
+              << ", distance " << d[v];
+      return failure.str();
+    }
+  }
+  return std::string();
+}
+
 // The queries beyond one field, checked against the full run `full` from s (no reference needed): a distance
 // limit (the full run inside, +infinity outside), paths (length = distance, from the vertex to the source),
-// and two sources (the minimum of the single runs, labels achieving it). Returns a description of the first
-// failure, or an empty string.
+// and two sources, s and s2 (the minimum of the single runs `full` and `second`, labels achieving it). Returns a
+// description of the first failure, or an empty string.
 std::string check_queries(const Surface_mesh& mesh, Geodesic_distance_solver<Surface_mesh>& solver, Vertex_index s,
-                          const std::vector<double>& full, Totals& totals)
+                          const std::vector<double>& full, Vertex_index s2, const std::vector<double>& second,
+                          Totals& totals)
 {
   namespace VP = CGAL::VTP_geodesics::parameters;
   const std::size_t n = full.size();
-  double max_d = 0.;
-  for(double x : full)
-    if(std::isfinite(x))
-      max_d = (std::max)(max_d, x);
+  const double max_d = largest_finite(full);
   const double tolerance = TOLERANCE * (max_d > 0. ? max_d : 1.);
   std::ostringstream failure;
   failure.precision(17);
@@ -413,29 +450,11 @@ std::string check_queries(const Surface_mesh& mesh, Geodesic_distance_solver<Sur
   // paths of a few vertices
   ++totals.query_checks;
   solver.compute(vtp_test::Discard_map(), s, VP::record_paths(true));
-  for(std::size_t j = 0; j < 5; ++j)
-  {
-    const Vertex_index v(static_cast<Surface_mesh::size_type>((std::size_t(s) + 1 + j * (n / 5 + 1)) % n));
-    if(!std::isfinite(full[v]))
-      continue;
-    std::vector<vtp_test::Point_3> path;
-    try { solver.shortest_path_points(v, std::back_inserter(path)); }
-    catch(const std::exception& e) { return "path from vertex " + std::to_string(std::size_t(v)) + ": " + e.what(); }
-    double length = 0.;
-    for(std::size_t k = 1; k < path.size(); ++k)
-      length += std::sqrt(CGAL::squared_distance(path[k - 1], path[k]));
-    if(path.empty() || path.front() != mesh.point(v) || path.back() != mesh.point(s) || !(std::abs(length - full[v]) <= tolerance))
-    {
-      failure << "path from vertex " << std::size_t(v) << ": " << path.size() << " points, length " << length
-              << ", distance " << full[v];
-      return failure.str();
-    }
-  }
+  const std::string path_failure = check_paths("", mesh, solver, s, full, tolerance);
+  if(!path_failure.empty())
+    return path_failure;
   // two sources
   ++totals.query_checks;
-  const Vertex_index s2(static_cast<Surface_mesh::size_type>((std::size_t(s) * 7 + 3) % n));
-  solver.compute(vtp_test::Discard_map(), s2);
-  const std::vector<double> second = solver.distances();
   std::vector<std::size_t> labels(n);
   solver.compute(vtp_test::Discard_map(), std::vector<Vertex_index>{ s, s2 },
                  VP::nearest_source_map(boost::make_iterator_property_map(labels.begin(), get(boost::vertex_index, mesh))));
@@ -467,10 +486,7 @@ std::string check_virtual_sources(const Settings& settings, const std::string& w
   namespace VP = CGAL::VTP_geodesics::parameters;
   const double inf = std::numeric_limits<double>::infinity();
   const std::size_t n = exact.size();
-  double max_d = 0.;
-  for(double x : exact)
-    if(std::isfinite(x))
-      max_d = (std::max)(max_d, x);
+  const double max_d = largest_finite(exact);
   const double tolerance = TOLERANCE * (max_d > 0. ? max_d : 1.);
   std::ostringstream failure;
   failure.precision(17);
@@ -532,11 +548,7 @@ std::string check_virtual_sources(const Settings& settings, const std::string& w
     // run's distances within the limit, but not always (the order of a run is not monotone: see the manual,
     // "Virtual source propagation"): the vertices where the two differ are counted, not failed
     ++totals.query_checks;
-    double max_vsp = 0.;
-    for(double x : d)
-      if(std::isfinite(x))
-        max_vsp = (std::max)(max_vsp, x);
-    const double R = 0.37 * max_vsp;
+    const double R = 0.37 * largest_finite(d);
     solver.compute(vtp_test::Discard_map(), s, vsp.maximum_distance(R));
     const std::vector<double> limited = solver.distances();
     bool differs = false;
@@ -570,24 +582,9 @@ std::string check_virtual_sources(const Settings& settings, const std::string& w
     // paths of a few vertices: from the vertex to the source, of the length of the distance
     ++totals.query_checks;
     solver.compute(vtp_test::Discard_map(), s, vsp.record_paths(true));
-    for(std::size_t j = 0; j < 5; ++j)
-    {
-      const Vertex_index v(static_cast<Surface_mesh::size_type>((std::size_t(s) + 1 + j * (n / 5 + 1)) % n));
-      if(!std::isfinite(d[v]))
-        continue;
-      std::vector<vtp_test::Point_3> path;
-      try { solver.shortest_path_points(v, std::back_inserter(path)); }
-      catch(const std::exception& e) { return name + " path from vertex " + std::to_string(std::size_t(v)) + ": " + e.what(); }
-      double length = 0.;
-      for(std::size_t k = 1; k < path.size(); ++k)
-        length += std::sqrt(CGAL::squared_distance(path[k - 1], path[k]));
-      if(path.empty() || path.front() != mesh.point(v) || path.back() != mesh.point(s) || !(std::abs(length - d[v]) <= tolerance))
-      {
-        failure << name << " path from vertex " << std::size_t(v) << ": " << path.size() << " points, length " << length
-                << ", distance " << d[v];
-        return failure.str();
-      }
-    }
+    const std::string path_failure = check_paths(name + " ", mesh, solver, s, d, tolerance);
+    if(!path_failure.empty())
+      return path_failure;
     // two sources: labels in range, sources at 0 with their own label, never below the exact distance to
     // the labelled source, and reached where one of the sources reaches
     ++totals.query_checks;
@@ -689,11 +686,20 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
     solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), s);
     totals.vtp_seconds += seconds_since(t0);
     sequential = solver.distances();
+    // the second source of the two-source checks, and its VTP run
+    const Vertex_index s2(static_cast<Surface_mesh::size_type>((std::size_t(s) * 7 + 3) % sequential.size()));
+    std::vector<double> second;
+    if(settings.vtp || settings.vsp)
+    {
+      set_current_case(where + ", vtp from the second source; " + reproduce);
+      solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), s2);
+      second = solver.distances();
+    }
     if(settings.vtp)
     {
       check("vtp", sequential, reference, "CGAL");
       set_current_case(where + ", queries; " + reproduce);
-      const std::string failure = check_queries(c.mesh, solver, s, sequential, totals);
+      const std::string failure = check_queries(c.mesh, solver, s, sequential, s2, second, totals);
       if(!failure.empty())
       {
         ok = false;
@@ -703,10 +709,6 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
     if(settings.vsp)
     {
       set_current_case(where + ", vsp; " + reproduce);
-      const std::size_t n = sequential.size();
-      const Vertex_index s2(static_cast<Surface_mesh::size_type>((std::size_t(s) * 7 + 3) % n));
-      solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), s2);
-      const std::vector<double> second = solver.distances();
       const std::string failure = check_virtual_sources(settings, where, c.mesh, solver, s, sequential, s2, second, totals);
       if(!failure.empty())
       {
