@@ -121,11 +121,12 @@ const vtp_support::Option_table<Arguments>& option_table()
       [](Arguments& a, const std::string& n, const std::string& v) { a.path_output = file_name(n, v); } },
     { "--farthest-points", "K",
       "farthest-point sampling: takes K sample vertices, each the vertex\n"
-      "farthest from the samples before it (exact geodesic distances;\n"
+      "farthest from the samples before it (the distances of --method:\n"
+      "exact with vtp / pvtp, upper bounds with avtp / pavtp, vsp / pvsp;\n"
       "ties: the lowest index), which then are the sources of --output,\n"
       "--labels (the geodesic Voronoi cells), --picture and --stats-json.\n"
       "Not with --source, --source-point, targets, paths, --max-distance\n"
-      "nor --method vsp / pvsp / vsp2 / pvsp2",
+      "nor --method vsp2 / pvsp2",
       [](Arguments& a, const std::string& n, const std::string& v) {
         a.farthest_points = parse_index(n, v);
         if(a.farthest_points == 0)
@@ -243,8 +244,9 @@ void check_sampling_arguments(const Arguments& a, const vtp_support::Method_info
   if(a.has_targets() || a.has_paths() || a.has_max_distance)
     throw Tool_error("--farthest-points takes no --target, --target-point, --path-to, --path-to-point nor "
                      "--max-distance");
-  if(m.virtual_sources)
-    throw Tool_error("--farthest-points needs --method vtp, pvtp, avtp or pavtp (not " + std::string(m.name) + ")");
+  if(m.virtual_sources && m.per_vertex != 1)
+    throw Tool_error("--farthest-points needs --method vtp, pvtp, avtp, pavtp, vsp or pvsp (not " + std::string(m.name)
+                     + ")");
   if(a.check_cgal)
     throw Tool_error("--farthest-points takes no --check-cgal");
 }

@@ -413,11 +413,13 @@ class Solver:
         radius : float, default 0.0
             Stop once the covering radius is at most ``radius``.
         method : str, default "vtp"
-            "vtp" or "pvtp" (exact), "avtp" or "pavtp" (approximate, with ``lam``).
+            "vtp" or "pvtp" (exact), "avtp" or "pavtp" (approximate, with ``lam``), "vsp" or "pvsp"
+            (one virtual source per vertex: the fastest; the samples are then the farthest by these
+            distances, upper bounds of the exact ones).
         lam : float, default 8.0
             Reset step of the approximate methods.
         threads : int, default 0
-            Threads of "pvtp" / "pavtp" (0: the solver's ``threads``).
+            Threads of "pvtp" / "pavtp" / "pvsp" (0: the solver's ``threads``).
 
         Returns
         -------

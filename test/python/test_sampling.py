@@ -46,6 +46,23 @@ def test_invariants(method):
     assert np.all(r.cell_area_uncertainty > 0)
 
 
+def test_virtual_sources():
+    # one virtual source per vertex: the first sample is the farthest from vertex 0 by VSP, the field is never
+    # below the exact distance to the samples, PVSP gives the same bits, radii non-increasing
+    V, F = vtp_geodesics.read_mesh(data_file("elephant.off"))
+    solver = vtp_geodesics.Solver(V, F)
+    r = solver.farthest_point_sampling(15, method="vsp")
+    assert len(set(r.samples.tolist())) == 15 and np.all(np.diff(r.radii) <= 0)
+    assert r.samples[0] == int(np.argmax(solver.distances(0, method="vsp")))
+    exact = solver.distances(r.samples)
+    assert np.all(r.distances >= exact - 1e-12 * exact.max())
+    assert np.all(r.distances[r.samples] == 0) and np.array_equal(r.labels[r.samples], np.arange(15))
+    assert r.radii[-1] == r.distances.max()
+    p = solver.farthest_point_sampling(15, method="pvsp", threads=2)
+    assert np.array_equal(p.samples, r.samples) and np.array_equal(p.distances, r.distances)
+    assert np.array_equal(p.labels, r.labels)
+
+
 def test_radius_first_and_plane():
     V, F = plane_grid(30, 30)
     solver = vtp_geodesics.Solver(V, F)
@@ -116,6 +133,6 @@ def test_bad_input():
     with pytest.raises(ValueError):
         solver.farthest_point_sampling(3, radius=math.nan)
     with pytest.raises(ValueError):
-        solver.farthest_point_sampling(3, method="vsp")
+        solver.farthest_point_sampling(3, method="vsp2")
     with pytest.raises(TypeError):
         solver.farthest_point_sampling(2.5)

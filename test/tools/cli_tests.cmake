@@ -361,10 +361,19 @@ vtp_cli_test(fps_components_one 0 "${fps}.cc1.txt" "" LINES 7 SOURCE_LINE 3
              --output "${fps}.cc1.txt" --labels "${fps}.cc1.labels")
 vtp_cli_check(fps_components_one_samples AFTER fps_components_one
               ARGS samples "${fps}.cc1.samples" "${fps}.cc1.txt" "${fps}.cc1.labels" 1 3)
+# With virtual sources (VSP): the same checks of the samples file; PVSP writes the same bits.
+vtp_cli_test(fps_vsp 0 "${fps}.v.txt" "" SOURCE_LINE none --method vsp --farthest-points 12 --first 1000
+             --samples-output "${fps}.v.samples" --output "${fps}.v.txt" --labels "${fps}.v.labels")
+vtp_cli_check(fps_vsp_samples AFTER fps_vsp ARGS samples "${fps}.v.samples" "${fps}.v.txt" "${fps}.v.labels" 12 1000)
 if(TARGET CGAL::VTP_geodesics_OpenMP_support)
   vtp_cli_test(fps_pvtp 0 "${fps}.p.txt" "" SOURCE_LINE none --method pvtp --threads 2 --farthest-points 12
                --first 1000 --samples-output "${fps}.p.samples" --output "${fps}.p.txt" --labels "${fps}.p.labels")
   vtp_cli_check(fps_pvtp_equals_vtp AFTER fps fps_pvtp ARGS values "${fps}.p.txt" all "${fps}.txt" all 1e-12)
+  vtp_cli_test(fps_pvsp 0 "${fps}.pv.txt" "" SOURCE_LINE none --method pvsp --threads 2 --farthest-points 12
+               --first 1000 --samples-output "${fps}.pv.samples" --output "${fps}.pv.txt" --labels "${fps}.pv.labels")
+  vtp_cli_check(fps_pvsp_equals_vsp AFTER fps_vsp fps_pvsp ARGS values "${fps}.pv.txt" all "${fps}.v.txt" all 0)
+  vtp_cli_check(fps_pvsp_same_samples AFTER fps_vsp fps_pvsp
+                ARGS values "${fps}.pv.samples" all "${fps}.v.samples" all 0)
 endif()
 set(fps_bad_sets
   "fps_zero|--farthest-points|0"
@@ -373,7 +382,7 @@ set(fps_bad_sets
   "fps_with_source_point|--farthest-points|3|--source-point|0.1,0.2,0.3"
   "fps_with_limit|--farthest-points|3|--max-distance|1"
   "fps_with_target|--farthest-points|3|--target|5|--target-output|${bad_output}.fps.t"
-  "fps_vsp|--farthest-points|3|--method|vsp"
+  "fps_vsp2|--farthest-points|3|--method|vsp2"
   "fps_first_out_of_range|--farthest-points|3|--first|99999999"
   "fps_radius_negative|--farthest-points|3|--radius|-1"
   "fps_radius_nan|--farthest-points|3|--radius|nan"

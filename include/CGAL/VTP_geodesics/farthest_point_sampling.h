@@ -78,8 +78,17 @@ void write_radii(const Samples& r, OutputIterator out)
 /// the samples so far at every step (to rounding: two vertices whose distances differ by about 1e-12 of
 /// the largest distance may be taken in either order).
 ///
-/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (VTP) or `CGAL::Parallel_tag` (PVTP, each computation on
-///   `number_of_threads` threads).
+/// With `virtual_sources(true)` (one virtual source per vertex, VSP / PVSP), the distances are those of
+/// virtual source propagation, each the length of a path from the sample of its label, so never below the
+/// exact distance: each sample is then the vertex farthest by these distances. Each new sample's run takes
+/// only the vertices it lowers and keeps the virtual sources of the others, so the field is not that of
+/// a full VSP computation from all the samples (both are upper bounds); the same on any number of threads,
+/// bit for bit. On the isotropic remeshing of camel (173K vertices), 1,000 samples: 1.7 s against 14.2 s
+/// for VTP, the field 0.14% above the exact distances to its samples on average, and the exact covering
+/// radius of its samples within 0.2% of that of the exact sampling (here below it).
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (VTP, VSP) or `CGAL::Parallel_tag` (PVTP, PVSP, each
+///   computation on `number_of_threads` threads).
 /// \param tm the triangle mesh
 /// \param k the number of samples wanted
 /// \param samples an output iterator receiving the samples (`vertex_descriptor`), in order
@@ -90,12 +99,13 @@ void write_radii(const Samples& r, OutputIterator out)
 ///   `WritablePropertyMap` receiving, per vertex, the distance to the nearest sample), `nearest_source_map`
 ///   (receiving the index of the nearest sample in the order taken, i.e. the geodesic Voronoi cell of the
 ///   vertex, `no_source` if none), `statistics` (summed over the computations), `lambda` and `lambda_g`
-///   (approximate distances: AVTP / PAVTP, each still an upper bound), `minimum_window_length`,
+///   (approximate distances: AVTP / PAVTP, each still an upper bound), `virtual_sources` (VSP / PVSP, see
+///   above), `minimum_window_length`,
 ///   `number_of_threads`, `vertex_point_map` and `geom_traits`, as in `compute_geodesic_distances()`.
 /// \returns the output iterator after the last sample.
 /// \throws Invalid_input_error if `tm` is not a valid triangle mesh, `first_sample` is not one of its vertices,
-/// or a parameter is invalid (`virtual_sources`, `maximum_distance`, `targets`, `record_paths` and
-/// `initial_distances` are not taken).
+/// or a parameter is invalid (`maximum_distance`, `targets`, `record_paths`, `initial_distances` and two
+/// virtual sources per vertex are not taken).
 template <class ConcurrencyTag = CGAL::Sequential_tag,
           class TriangleMesh,
           class OutputIterator,

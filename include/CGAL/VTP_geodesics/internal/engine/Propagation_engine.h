@@ -137,16 +137,31 @@ public:
 
   // Adds `seed` to the field of the previous run (a run from known distances, or the first such run on
   // an empty field), in the engine's unit: the work and the resetting are those of the region the seed
-  // wins (Propagation_data::start_again()). No limit, targets, paths, nor virtual sources. The vertices
-  // whose distance changed are those of touched() with the LOWERED flag. Statistics: windows, vertices
-  // and time of this run only (not the reached vertices nor the largest distance, which would cost O(V)).
+  // wins (Propagation_data::start_again()). No limit, targets, paths, nor a second virtual source per
+  // vertex. With settings.virtual_sources, the same with one virtual source per vertex
+  // (Virtual_source_front::run_again()); the field must then be that of the previous run_again() with
+  // virtual sources (or that of none). The vertices whose distance changed are those of touched() with
+  // the LOWERED flag. Statistics: windows, vertices and time of this run only (not the reached vertices nor
+  // the largest distance, which would cost O(V)).
   template <class ConcurrencyTag>
   void run_again(const Mesh_arrays& m, const Seed& seed, const Propagation_settings& settings,
                  int requested_threads, Propagation_statistics& statistics)
   {
-    CGAL_precondition(settings.known_distances && !settings.virtual_sources && settings.unit == 1.);
+    CGAL_precondition(settings.known_distances && settings.unit == 1.);
     const bool parallel = is_parallel<ConcurrencyTag>();
     const auto t0 = std::chrono::steady_clock::now();
+    if(settings.virtual_sources)
+    {
+      m_virtual_sources = true;
+      m_seeds.assign(1, seed);
+      statistics = Propagation_statistics();
+      const int threads = m_vsp.run_again(m, m_seeds, settings, statistics,
+                                          parallel ? number_of_threads(requested_threads) : 0);
+      statistics.method = parallel ? "pvsp" : "vsp";
+      statistics.threads = threads;
+      statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      return;
+    }
     m_virtual_sources = false;
     int threads = parallel ? (std::min)(number_of_threads(requested_threads), 126) : 1;
     if(m_state.mesh != &m || !m_state.known.active() || !m_state.settings.known_distances)
@@ -166,8 +181,9 @@ public:
   }
   // the vertices lowered or woken by the last run from known distances, and their flags (not listed after the
   // first run_again() on an empty field: every reached vertex was lowered then)
-  const std::vector<Index>& touched() const { return m_state.known.touched(); }
-  bool was_lowered(Index v) const { return m_state.known.lowered(v); }
+  // (with virtual sources: the vertices the last run took, each lowered)
+  const std::vector<Index>& touched() const { return m_virtual_sources ? m_vsp.touched() : m_state.known.touched(); }
+  bool was_lowered(Index v) const { return m_virtual_sources || m_state.known.lowered(v); }
 
   // the distances of the last run (per vertex, in the unit of the output: Propagation_settings::unit)
   std::vector<double>& distances() { return m_virtual_sources ? m_vsp.dist : m_state.dist; }

@@ -390,6 +390,10 @@ protected:
   std::size_t m_taken_count = 0;
   std::size_t m_peak_seeded = 0;
   bool m_stopped = false;
+  // runs from known distances that add one seed each (Virtual_source_front::run_again()): the vertices
+  // taken by the last one
+  bool m_incremental = false;
+  std::vector<Index> m_touched;
 };
 
 } // namespace internal

@@ -88,6 +88,8 @@ public:
     m_mesh = &m;
     m_seeds = &seeds;
     m_settings = settings;
+    m_incremental = false;
+    m_touched.clear();
     const std::size_t nv = static_cast<std::size_t>(m.nv);
     dist.assign(nv, std::numeric_limits<double>::infinity());
     m_taken.assign(nv, 0);
@@ -159,6 +161,66 @@ public:
     st.merge_seconds = m_rounds.merge_seconds;
     return threads;
   }
+
+  // Adds `seed` (label: its seed label) to the field of the previous run_again() (the first one, or the
+  // first after run(), starts from an empty field): farthest-point sampling (Farthest_point_sampler.h). A
+  // vertex is taken only if the new seed lowers it, and the arrays are not set up again, so a run costs
+  // what the region the seed wins costs; the vertices it lowered are then those of touched(). The
+  // vertices not lowered keep their distance, label and virtual source (still the line of a real path:
+  // its root's distance can only have decreased since). Labels are kept; no limit, targets, paths, nor
+  // second virtual source (settings.known_distances must be set). Returns the number of threads of the team.
+  int run_again(const Mesh_arrays& m, const std::vector<Seed>& seeds, const Propagation_settings& settings,
+                Propagation_statistics& st, int threads)
+  {
+    CGAL_precondition(settings.known_distances && settings.want_labels && !settings.second_virtual_source
+                      && !settings.record_paths && !settings.stop_at_targets && settings.unit == 1.
+                      && !(settings.limit < std::numeric_limits<double>::infinity()));
+    const std::size_t nv = static_cast<std::size_t>(m.nv);
+    if(!m_incremental || m_mesh != &m || dist.size() != nv || label.size() != nv)
+    {
+      dist.assign(nv, std::numeric_limits<double>::infinity());
+      label.assign(nv, NO_INDEX);
+      m_taken.assign(nv, 0);
+      m_src.resize(nv);
+      m_incremental = true;
+    }
+    else
+      for(Index v : m_touched)
+        m_taken[static_cast<std::size_t>(v)] = 0;
+    m_touched.clear();
+    m_mesh = &m;
+    m_seeds = &seeds;
+    m_settings = settings;
+    m_src2.clear();
+    m_dist2.clear();
+    m_seeded.clear();
+    m_targets.clear();
+    m_target_value.clear();
+    m_target_offer.clear();
+    m_taken_count = 0;
+    m_stopped = false;
+    m_peak_seeded = 0;
+    record.start(false, nv, 0);
+
+    seed(seeds);
+    threads = m_rounds.propagate(*this, threads);
+
+    st.vertices_processed = m_taken_count;
+    st.stopped_early = false;
+    st.peak_live_windows = 0;
+    st.peak_window_bytes = nv * (sizeof(Vertex_source) + sizeof(double) + 1 + sizeof(Index))
+                           + m_touched.capacity() * sizeof(Index)
+                           + (std::max)(m_rounds.peak_bytes, m_peak_seeded * sizeof(Seeded_entry));
+    st.rounds = m_rounds.rounds;
+    st.parallel_rounds = m_rounds.parallel_rounds;
+    st.selection_seconds = m_rounds.selection_seconds;
+    st.propagation_seconds = m_rounds.propagation_seconds;
+    st.merge_seconds = m_rounds.merge_seconds;
+    return threads;
+  }
+
+  // the vertices lowered (and taken) by the last run_again()
+  const std::vector<Index>& touched() const { return m_touched; }
 
 private:
   friend class Virtual_source_rounds;

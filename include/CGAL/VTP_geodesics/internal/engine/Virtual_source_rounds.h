@@ -363,6 +363,8 @@ private:
     if(m_team > 1 && m_batch.size() >= min_parallel)
       ++parallel_rounds;
     front.m_taken_count += m_batch.size();
+    if(front.m_incremental)
+      front.m_touched.insert(front.m_touched.end(), m_batch.begin(), m_batch.end());
     if(m_remaining_targets > 0)
     {
       for(Index v : m_batch)

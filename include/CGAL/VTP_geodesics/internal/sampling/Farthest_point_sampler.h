@@ -76,7 +76,6 @@ public:
     settings.unit = 1.;
     if(first == NO_INDEX)
       first = farthest_from_first_vertex<ConcurrencyTag>(m, rank, settings, threads);
-    const std::vector<double>& dist = m_engine->distances();
     Index next = first;
     for(;;)
     {
@@ -105,7 +104,7 @@ public:
           sift_down(i);
       }
       const Index top = m_heap.front();
-      const double farthest = dist[static_cast<std::size_t>(top)];
+      const double farthest = m_engine->distances()[static_cast<std::size_t>(top)];
       radii.push_back(farthest);
       if(samples.size() >= k || !(farthest > radius))
         break;
@@ -116,7 +115,7 @@ public:
     statistics.faces = static_cast<std::size_t>(m.nf);
     statistics.max_distance = radii.back();
     statistics.reached_vertices = 0;
-    for(double d : dist)
+    for(double d : m_engine->distances())  // (the field of the runs: taken after them, see Propagation_engine)
       statistics.reached_vertices += d < std::numeric_limits<double>::infinity() ? 1 : 0;
     statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
@@ -235,8 +234,8 @@ farthest_point_samples_of(const MeshIndex& mesh, std::size_t k, const NamedParam
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
   typedef typename MeshIndex::vertex_descriptor vertex_descriptor;
-  if(settings.virtual_sources)
-    throw Invalid_input_error("farthest_point_sampling() does not take virtual_sources");
+  if(settings.virtual_sources && settings.second_virtual_source)
+    throw Invalid_input_error("farthest_point_sampling() takes one virtual source per vertex, not 2");
   if(settings.limit < std::numeric_limits<double>::infinity() || settings.record_paths
      || !is_default_parameter<NamedParameters, internal_np::targets_t>::value
      || !is_default_parameter<NamedParameters, internal_np::initial_distances_t>::value)
