@@ -167,13 +167,14 @@ public:
   // vertex is taken only if the new seed lowers it, and the arrays are not set up again, so a run costs
   // what the region the seed wins costs; the vertices it lowered are then those of touched(). The
   // vertices not lowered keep their distance, label and virtual source (still the line of a real path:
-  // its root's distance can only have decreased since). Labels are kept; no limit, targets, paths, nor
-  // second virtual source (settings.known_distances must be set). Returns the number of threads of the team.
+  // its root's distance can only have decreased since). Labels are kept; no limit, targets (there are
+  // none to stop at), paths, nor second virtual source (settings.known_distances must be set). Returns the
+  // number of threads of the team.
   int run_again(const Mesh_arrays& m, const std::vector<Seed>& seeds, const Propagation_settings& settings,
                 Propagation_statistics& st, int threads)
   {
     CGAL_precondition(settings.known_distances && settings.want_labels && !settings.second_virtual_source
-                      && !settings.record_paths && !settings.stop_at_targets && settings.unit == 1.
+                      && !settings.record_paths && settings.unit == 1.
                       && !(settings.limit < std::numeric_limits<double>::infinity()));
     const std::size_t nv = static_cast<std::size_t>(m.nv);
     if(!m_incremental || m_mesh != &m || dist.size() != nv || label.size() != nv)
