@@ -1,7 +1,7 @@
 // vtp_query_benchmark: the cost of the queries beyond a full distance field, side by side in one run:
 // a distance limit, one near target, and path recording, against the full run from the same source.
 //
-//   vtp_query_benchmark [--repeat R] [--threads T] [--limit F] [--fps K1,K2,...] [--naive K] MESH...
+//   vtp_query_benchmark [--repeat R] [--threads T] [--limit F] [--fps K1,K2,...] [--naive K] [--vsp] MESH...
 //
 // For each mesh (source: vertex 0), in this order and R times, interleaved, each run in a forked child (so
 // that its peak resident memory, ru_maxrss from wait4, is its own; the mesh is read by the parent):
@@ -13,6 +13,10 @@
 //   fps k     with --fps K1,K2,...: farthest-point sampling of k samples (exact VTP, first sample vertex 0)
 //   naive k   with --naive K: the naive sampling of the same first K samples, a full run from all the
 //             samples so far at every step (the samples come from an untimed sampling in the same child)
+//   vsp full, vsp fps k   with --vsp: a full run and the samplings of --fps with one virtual source per
+//             vertex (virtual_sources(true))
+// After the table, for each sampling: its covering radius (by its own distances) and the exact covering
+// radius of its samples (an untimed exact run from them in the same child).
 // It prints the fastest time of each (wall-clock seconds of the computation, and processor seconds of the
 // process during it: on a shared machine, compare the latter), its ratio to the full run of the same
 // scheduling, the vertices processed and windows propagated, and the peak RSS and its ratio to the full run.
@@ -55,8 +59,8 @@ namespace VP = CGAL::VTP_geodesics::parameters;
 
 namespace {
 
-enum class Query { FULL, LIMIT, TARGET, RECORD, FPS, NAIVE };
-const char* const query_names[] = { "full", "limit", "target", "record", "fps", "naive" };
+enum class Query { FULL, LIMIT, TARGET, RECORD, FPS, NAIVE, FULL_VSP, FPS_VSP };
+const char* const query_names[] = { "full", "limit", "target", "record", "fps", "naive", "vsp full", "vsp fps" };
 
 struct Result
 {
@@ -64,7 +68,7 @@ struct Result
   double cpu_seconds = 0.;  // processor time of this process (all its threads) during the computation
   double max_distance = 0.;
   unsigned long long processed = 0, propagated = 0;
-  double target_distance = 0.;
+  double target_distance = 0.;  // (a sampling: the exact covering radius of its samples)
   int ok = 0;
 };
 
@@ -75,19 +79,26 @@ double cpu_now()
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-// Farthest-point sampling of k samples from vertex 0 (Query::FPS), or the naive method for the same
-// samples (Query::NAIVE): the seconds of the propagations.
+// Farthest-point sampling of k samples from vertex 0 (Query::FPS, Query::FPS_VSP), or the naive method for
+// the same samples (Query::NAIVE): the seconds of the propagations.
 Result run_sampling(const Mesh& mesh, Query q, std::size_t k)
 {
   Solver solver(mesh);
   const double c0 = cpu_now();
-  const auto samples = solver.farthest_point_sampling(k, VP::first_sample(Vertex_index(0)));
+  const auto samples = solver.farthest_point_sampling(
+    k, VP::first_sample(Vertex_index(0)).virtual_sources(q == Query::FPS_VSP));
   Result r;
   r.cpu_seconds = cpu_now() - c0;
   r.seconds = samples.statistics.seconds;
   r.max_distance = samples.radii.back();
   r.processed = samples.statistics.vertices_processed;
   r.propagated = samples.statistics.windows_propagated;
+  if(q != Query::NAIVE)
+  {
+    // untimed: the exact covering radius of the samples
+    solver.compute(CGAL::Constant_property_map<Vertex_index, double>(), samples.samples);
+    r.target_distance = solver.statistics().max_distance;
+  }
   if(q == Query::NAIVE)
   {
     r.seconds = r.cpu_seconds = 0.;
@@ -111,13 +122,13 @@ Result run_sampling(const Mesh& mesh, Query q, std::size_t k)
 Result run_query(const Mesh& mesh, Query q, bool parallel, int threads, double limit, Vertex_index target,
                  std::size_t k)
 {
-  if(q == Query::FPS || q == Query::NAIVE)
+  if(q == Query::FPS || q == Query::NAIVE || q == Query::FPS_VSP)
     return run_sampling(mesh, q, k);
   Solver solver(mesh);
   const CGAL::Constant_property_map<Vertex_index, double> no_map;
   const Vertex_index source(0);
   auto np = VP::number_of_threads(threads).maximum_distance(q == Query::LIMIT ? limit : std::numeric_limits<double>::infinity())
-              .record_paths(q == Query::RECORD);
+              .record_paths(q == Query::RECORD).virtual_sources(q == Query::FULL_VSP);
   std::vector<Vertex_index> targets;
   if(q == Query::TARGET)
     targets.push_back(target);
@@ -202,6 +213,7 @@ struct Arguments
   double fraction = 0.1;
   std::vector<std::size_t> fps;
   std::size_t naive = 0;
+  bool vsp = false;
   std::vector<std::string> files;
   bool help = false;
 };
@@ -225,6 +237,7 @@ Arguments parse_arguments(int argc, char** argv)
           a.fps.push_back(i);
       } },
     { "--naive", "K", nullptr, [](Arguments& a, S n, S v) { a.naive = static_cast<std::size_t>(parse_integer(n, v, 1, 100000)); } },
+    { "--vsp", nullptr, nullptr, [](Arguments& a, S, S) { a.vsp = true; } },
     { "--help", nullptr, nullptr, [](Arguments& a, S, S) { a.help = true; } },
   };
   Arguments a;
@@ -244,7 +257,7 @@ int main(int argc, char** argv)
     if(args.help)
     {
       std::cout << "usage: vtp_query_benchmark [--repeat R] [--threads T] [--limit F] [--fps K1,K2,...] [--naive K] "
-                   "MESH...\n";
+                   "[--vsp] MESH...\n";
       return 0;
     }
     const int repeat = args.repeat, threads = args.threads;
@@ -287,6 +300,12 @@ int main(int argc, char** argv)
         cases.push_back({ Query::FPS, false, k });
       if(args.naive > 0)
         cases.push_back({ Query::NAIVE, false, args.naive });
+      if(args.vsp)
+      {
+        cases.push_back({ Query::FULL_VSP, false, 0 });
+        for(std::size_t k : args.fps)
+          cases.push_back({ Query::FPS_VSP, false, k });
+      }
       std::vector<Result> best(cases.size());
       std::vector<double> rss(cases.size(), 0.);
       for(int r = 0; r < repeat; ++r)
@@ -314,6 +333,11 @@ int main(int argc, char** argv)
       }
       std::cout << "| | | (limit " << limit << " = " << fraction << " x max distance " << best[0].max_distance
                 << "; target at distance " << best[2].target_distance << ") | | | | | | |" << std::endl;
+      for(std::size_t c = 0; c < cases.size(); ++c)
+        if(cases[c].q == Query::FPS || cases[c].q == Query::FPS_VSP)
+          std::cout << "| | | (" << query_names[static_cast<int>(cases[c].q)] << " k=" << cases[c].k
+                    << ": covering radius " << best[c].max_distance << ", exact covering radius of its samples "
+                    << best[c].target_distance << ") | | | | | | |" << std::endl;
     }
   }
   catch(const std::exception& e)

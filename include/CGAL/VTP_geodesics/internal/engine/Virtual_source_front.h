@@ -90,6 +90,7 @@ public:
     m_settings = settings;
     m_incremental = false;
     m_touched.clear();
+    m_rounds.keep_width = false;
     const std::size_t nv = static_cast<std::size_t>(m.nv);
     dist.assign(nv, std::numeric_limits<double>::infinity());
     m_taken.assign(nv, 0);
@@ -184,10 +185,14 @@ public:
       m_taken.assign(nv, 0);
       m_src.resize(nv);
       m_incremental = true;
+      m_rounds.keep_width = false;
     }
     else
+    {
       for(Index v : m_touched)
         m_taken[static_cast<std::size_t>(v)] = 0;
+      m_rounds.keep_width = true;
+    }
     m_touched.clear();
     m_mesh = &m;
     m_seeds = &seeds;

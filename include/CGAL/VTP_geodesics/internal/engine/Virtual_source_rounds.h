@@ -75,6 +75,9 @@ public:
   // thread 0 alone, applying them too), applying them (rounds of the team)
   std::size_t rounds = 0, parallel_rounds = 0, peak_bytes = 0;
   double selection_seconds = 0., propagation_seconds = 0., merge_seconds = 0.;
+  // whether the next run is on the mesh of the last one (its short edge length is then not measured again:
+  // a farthest-point sampling runs once per sample)
+  bool keep_width = false;
 
   // Runs the propagation of `front` (seeded: m_seeded holds the seeds) on `threads` threads; returns the
   // number of threads of the team.
@@ -246,7 +249,9 @@ private:
   void setup(Front& front)
   {
     const Mesh_arrays& m = *front.m_mesh;
-    m_width = bucket_width * short_edge_length(m);
+    if(!keep_width || !(m_short_edge > 0.))
+      m_short_edge = short_edge_length(m);
+    m_width = bucket_width * m_short_edge;
     if(!(m_width > 0.) || !std::isfinite(m_width))
       m_width = 1.;
     // the ring: the offers 2 reach longest edges around the current bucket, plus rounding; at most 2^16
@@ -481,7 +486,7 @@ private:
   std::vector<unsigned char> m_is_target;
   std::size_t m_remaining_targets = 0;
   long long m_current = 0, m_ring = 1;
-  double m_width = 1., m_cutoff = 0.;
+  double m_width = 1., m_cutoff = 0., m_short_edge = 0.;
   int m_team = 1;
   Index m_team_mask = 0;  // m_team - 1 if m_team is a power of two, otherwise -1
   bool m_done = false;
