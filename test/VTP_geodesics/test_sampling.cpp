@@ -97,6 +97,16 @@ std::vector<Method_kind> exact_kinds()
 #endif
 }
 
+// The vertex of the largest value (ties: the lowest index), as the sampling chooses.
+std::size_t farthest_vertex(const std::vector<double>& d)
+{
+  std::size_t best = 0;
+  for(std::size_t v = 1; v < d.size(); ++v)
+    if(d[v] > d[best])
+      best = v;
+  return best;
+}
+
 // Two components: the elephant and a sphere beside it.
 Surface_mesh two_components()
 {
@@ -267,12 +277,7 @@ TEST(Farthest_point_sampling, equals_the_naive_method)
       ASSERT_EQ(r.samples.size(), k);
       ASSERT_EQ(r.radii.size(), k);
       // the first sample: the vertex farthest from vertex 0
-      const Field from0 = plain(mesh, Vertex_index(0), method);
-      std::size_t first = 0;
-      for(std::size_t v = 1; v < n; ++v)
-        if(from0.d[v] > from0.d[first])
-          first = v;
-      EXPECT_EQ(std::size_t(r.samples[0]), first);
+      EXPECT_EQ(std::size_t(r.samples[0]), farthest_vertex(plain(mesh, Vertex_index(0), method).d));
       std::vector<Vertex_index> so_far;
       Field naive;
       for(std::size_t i = 0; i < k; ++i)
@@ -280,10 +285,7 @@ TEST(Farthest_point_sampling, equals_the_naive_method)
         if(i > 0)
         {
           // the naive choice
-          std::size_t best = 0;
-          for(std::size_t v = 1; v < n; ++v)
-            if(naive.d[v] > naive.d[best])
-              best = v;
+          const std::size_t best = farthest_vertex(naive.d);
           const double scale = max_finite(naive.d);
           const double taken = naive.d[std::size_t(r.samples[i])];
           if(std::size_t(r.samples[i]) != best)
@@ -393,12 +395,7 @@ TEST(Farthest_point_sampling, with_virtual_sources)
     const auto r = solver.farthest_point_sampling(k, VP::virtual_sources(true));
     ASSERT_EQ(r.samples.size(), k);
     ASSERT_EQ(r.radii.size(), k);
-    const Field from0 = plain(mesh, Vertex_index(0), VSP);
-    std::size_t first = 0;
-    for(std::size_t v = 1; v < n; ++v)
-      if(from0.d[v] > from0.d[first])
-        first = v;
-    EXPECT_EQ(std::size_t(r.samples[0]), first);
+    EXPECT_EQ(std::size_t(r.samples[0]), farthest_vertex(plain(mesh, Vertex_index(0), VSP).d));
     for(std::size_t i = 1; i < k; ++i)
       EXPECT_LE(r.radii[i], r.radii[i - 1]) << "radius " << i;
     EXPECT_EQ(r.radii.back(), *std::max_element(r.distances.begin(), r.distances.end()));

@@ -155,11 +155,7 @@ public:
     st.peak_window_bytes = nv * (sizeof(Vertex_source) + sizeof(double) + 1 + (label.empty() ? 0 : sizeof(Index)))
                            + m_src2.size() * (sizeof(Vertex_source) + sizeof(double))
                            + (std::max)(m_rounds.peak_bytes, m_peak_seeded * sizeof(Seeded_entry));
-    st.rounds = m_rounds.rounds;
-    st.parallel_rounds = m_rounds.parallel_rounds;
-    st.selection_seconds = m_rounds.selection_seconds;
-    st.propagation_seconds = m_rounds.propagation_seconds;
-    st.merge_seconds = m_rounds.merge_seconds;
+    copy_round_statistics(st);
     return threads;
   }
 
@@ -217,11 +213,7 @@ public:
     st.peak_window_bytes = nv * (sizeof(Vertex_source) + sizeof(double) + 1 + sizeof(Index))
                            + m_touched.capacity() * sizeof(Index)
                            + (std::max)(m_rounds.peak_bytes, m_peak_seeded * sizeof(Seeded_entry));
-    st.rounds = m_rounds.rounds;
-    st.parallel_rounds = m_rounds.parallel_rounds;
-    st.selection_seconds = m_rounds.selection_seconds;
-    st.propagation_seconds = m_rounds.propagation_seconds;
-    st.merge_seconds = m_rounds.merge_seconds;
+    copy_round_statistics(st);
     return threads;
   }
 
@@ -230,6 +222,16 @@ public:
 
 private:
   friend class Virtual_source_rounds;
+
+  // the rounds and stage times of the last run (Virtual_source_rounds)
+  void copy_round_statistics(Propagation_statistics& st) const
+  {
+    st.rounds = m_rounds.rounds;
+    st.parallel_rounds = m_rounds.parallel_rounds;
+    st.selection_seconds = m_rounds.selection_seconds;
+    st.propagation_seconds = m_rounds.propagation_seconds;
+    st.merge_seconds = m_rounds.merge_seconds;
+  }
 
   // ------------------------------------------------------------------------------------------
   // propagation
