@@ -47,7 +47,7 @@ void expect_fields(const std::vector<std::string>& fields, std::size_t n, const 
     throw Tool_error("invalid method '" + fields[0] + "...' (expected " + syntax + ")");
 }
 
-// The VTP family (vtp, pvtp:T, avtp:lambda, pavtp:T:lambda) comes from the table of methods shared with the
+// The VTP family (vtp, pvtp:T, avtp:lambda, pavtp:T:lambda, vsp, pvsp:T, vsp2, pvsp2:T) comes from the table of methods shared with the
 // command-line tools (vtp_support/methods.h): the name, then ":T" for a parallel method and ":lambda" for an
 // approximate one. Returns false if `fields[0]` is not one of them.
 bool parse_vtp_method(const std::vector<std::string>& fields, Method& m)
@@ -116,7 +116,9 @@ Method parse_method(const std::string& spec)
     }
     return m;
   }
-  std::string known = "vtp, pvtp:T, avtp:lambda, pavtp:T:lambda";
+  std::string known;
+  for(const vtp_support::Method_info* i = vtp_support::methods_begin(); i != vtp_support::methods_end(); ++i)
+    known += (known.empty() ? "" : ", ") + std::string(i->name) + (i->parallel ? ":T" : "") + (i->approximate ? ":lambda" : "");
   for(const Method_parser& p : method_parsers)
     known += (known.empty() ? "" : ", ") + std::string(p.syntax);
   throw Tool_error("unknown method '" + spec + "' (known: " + known + ")");
