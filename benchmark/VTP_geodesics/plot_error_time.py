@@ -2,7 +2,8 @@
 """Error versus time of every method of a vtp_benchmark CSV: one panel per mesh, one point per method and
 parameter (x: processor seconds of the per-source computation, wall-clock seconds for the heat method, log scale; y: mean relative error against
 exact VTP, in percent, log scale; exact VTP is drawn at the bottom edge). Methods whose distances go below
-the exact ones by more than 1e-12 of the largest distance are drawn hollow.
+the exact ones by more than 1e-12 of the largest distance are drawn hollow; a method with an infinite mean error
+is left out.
 
     /usr/bin/python3 plot_error_time.py results.csv error_time.png
 """
@@ -51,6 +52,8 @@ def main():
                       for r in runs) / len(runs)
             err = [number(r["mean_pointwise_rel_err_vs_vtp"]) for r in runs]
             err = 100. * sum(e for e in err if not math.isnan(e)) / max(1, len(err))
+            if not math.isfinite(err) or not math.isfinite(cpu):
+                continue  # (no finite error to draw: e.g. the heat method giving 1.8e308 somewhere)
             below = max(number(r.get("max_below_vtp", "nan")) for r in runs)
             family = method.split(":")[0]
             colour = colours.setdefault(family, palette(len(colours) % 10))
