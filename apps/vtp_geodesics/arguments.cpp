@@ -122,11 +122,11 @@ const vtp_support::Option_table<Arguments>& option_table()
     { "--farthest-points", "K",
       "farthest-point sampling: takes K sample vertices, each the vertex\n"
       "farthest from the samples before it (the distances of --method:\n"
-      "exact with vtp / pvtp, upper bounds with avtp / pavtp, vsp / pvsp;\n"
-      "ties: the lowest index), which then are the sources of --output,\n"
-      "--labels (the geodesic Voronoi cells), --picture and --stats-json.\n"
-      "Not with --source, --source-point, targets, paths, --max-distance\n"
-      "nor --method vsp2 / pvsp2",
+      "exact with vtp / pvtp, upper bounds with avtp / pavtp and the vsp\n"
+      "family; ties: the lowest index), which then are the sources of\n"
+      "--output, --labels (the geodesic Voronoi cells), --picture and\n"
+      "--stats-json. Not with --source, --source-point, targets, paths\n"
+      "nor --max-distance",
       [](Arguments& a, const std::string& n, const std::string& v) {
         a.farthest_points = parse_index(n, v);
         if(a.farthest_points == 0)
@@ -231,7 +231,7 @@ const vtp_support::Option_table<Arguments>& option_table()
 
 namespace {
 
-void check_sampling_arguments(const Arguments& a, const vtp_support::Method_info& m)
+void check_sampling_arguments(const Arguments& a)
 {
   if(a.farthest_points == 0)
   {
@@ -244,9 +244,6 @@ void check_sampling_arguments(const Arguments& a, const vtp_support::Method_info
   if(a.has_targets() || a.has_paths() || a.has_max_distance)
     throw Tool_error("--farthest-points takes no --target, --target-point, --path-to, --path-to-point nor "
                      "--max-distance");
-  if(m.virtual_sources && m.per_vertex != 1)
-    throw Tool_error("--farthest-points needs --method vtp, pvtp, avtp, pavtp, vsp or pvsp (not " + std::string(m.name)
-                     + ")");
   if(a.check_cgal)
     throw Tool_error("--farthest-points takes no --check-cgal");
 }
@@ -256,7 +253,7 @@ void check_arguments(const Arguments& a)
   const vtp_support::Method_info* m = vtp_support::find_method(a.method);
   if(m == nullptr)
     throw Tool_error("unknown method '" + a.method + "' (expected " + vtp_support::method_names() + ")");
-  check_sampling_arguments(a, *m);
+  check_sampling_arguments(a);
   if((a.has_lambda || a.has_lambda_g) && !m->approximate)
     throw Tool_error("--lambda and --lambda-g need --method avtp or pavtp");
   if(!a.target_output.empty() && !a.has_targets())

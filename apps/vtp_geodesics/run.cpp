@@ -99,13 +99,13 @@ void copy_statistics(const VTP::Propagation_statistics& st, Run_result& r)
   r.stopped_early = st.stopped_early;
 }
 
-// Farthest-point sampling with `method` (VTP, PVTP, AVTP, PAVTP, VSP or PVSP), then the areas of the Voronoi
-// cells.
+// Farthest-point sampling with `method` (any of the table), then the areas of the Voronoi cells.
 void run_sampling(const vtp_support::Method_info& method, Solver& solver, const vtp_support::Mesh& mesh,
                   const Run_request& request, double lambda, Run_result& r)
 {
   const auto options = VTP::parameters::number_of_threads(request.threads).lambda(lambda).lambda_g(request.lambda_g)
-                                       .sampling_radius(request.radius).virtual_sources(method.virtual_sources);
+                                       .sampling_radius(request.radius).virtual_sources(method.virtual_sources)
+                                       .virtual_sources_per_vertex(method.per_vertex);
   VTP::Farthest_point_samples<vtp_support::Vertex_index> fps;
   if(method.parallel)
   {

@@ -380,8 +380,6 @@ public:
                                     double lam, int threads)
   {
     const vtp_support::Method_info& method = method_named(method_name);
-    if(method.virtual_sources && method.per_vertex != 1)
-      value_error("farthest_point_sampling takes method vtp, pvtp, avtp, pavtp, vsp or pvsp, not " + method_name);
     check_threads(threads);
     if(k < 0)
       value_error("k must be >= 0, got " + std::to_string(k));
@@ -401,7 +399,8 @@ public:
       const auto np = VTP::parameters::number_of_threads(threads_or_default(threads))
                         .lambda(method.approximate ? lam : infinity)
                         .sampling_radius(radius)
-                        .virtual_sources(method.virtual_sources);
+                        .virtual_sources(method.virtual_sources)
+                        .virtual_sources_per_vertex(method.per_vertex);
       with_method_tag(method, [&](auto tag) {
         typedef decltype(tag) Tag;
         r = has_first ? m_solver->template farthest_point_sampling<Tag>(static_cast<std::size_t>(k),

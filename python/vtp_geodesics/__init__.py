@@ -415,11 +415,12 @@ class Solver:
         method : str, default "vtp"
             "vtp" or "pvtp" (exact), "avtp" or "pavtp" (approximate, with ``lam``), "vsp" or "pvsp"
             (one virtual source per vertex: the fastest; the samples are then the farthest by these
-            distances, upper bounds of the exact ones).
+            distances, upper bounds of the exact ones), "vsp2" or "pvsp2" (two per vertex: closer to the
+            exact distances, slower).
         lam : float, default 8.0
             Reset step of the approximate methods.
         threads : int, default 0
-            Threads of "pvtp" / "pavtp" / "pvsp" (0: the solver's ``threads``).
+            Threads of "pvtp" / "pavtp" / "pvsp" / "pvsp2" (0: the solver's ``threads``).
 
         Returns
         -------
@@ -429,8 +430,7 @@ class Solver:
         Raises
         ------
         ValueError
-            A negative ``k`` or ``radius``, ``first`` out of range, an unknown method (or a virtual source
-            method: "vsp", "pvsp", "vsp2", "pvsp2").
+            A negative ``k`` or ``radius``, ``first`` out of range, an unknown method.
         """
         if isinstance(k, (bool, _np.bool_)) or not isinstance(k, (int, _np.integer)):
             raise TypeError("k must be an integer, got %r" % (k,))

@@ -372,30 +372,30 @@ TEST(Farthest_point_sampling, radius_first_sample_and_every_vertex)
   // bad input
   EXPECT_THROW(solver.farthest_point_sampling(3, VP::first_sample(Vertex_index(100000))), Invalid_input_error);
   EXPECT_THROW(solver.farthest_point_sampling(3, VP::sampling_radius(-1.)), Invalid_input_error);
-  EXPECT_THROW(solver.farthest_point_sampling(3, VP::virtual_sources(true).virtual_sources_per_vertex(2)),
-               Invalid_input_error);
   EXPECT_THROW(solver.farthest_point_sampling(3, VP::maximum_distance(1.)), Invalid_input_error);
 }
 
-// With one virtual source per vertex (VSP): each run adds a sample to the field of those before (a run from
-// known distances that takes only the vertices the sample lowers). Expected: the first sample is the vertex
-// farthest from vertex 0 in a VSP run; the field is never below the exact distance to the nearest sample, nor
+// With one and with two virtual sources per vertex (VSP, VSP2): each run adds a sample to the field of those
+// before (a run from known distances that takes only the vertices the sample lowers). Expected: the first
+// sample is the vertex farthest from vertex 0 in a run of the same method; the field is never below the exact distance to the nearest sample, nor
 // to the sample of its label (it is the length of a path from it); 0 and its own label at each sample; the
 // covering radii do not increase and the last is the largest distance; PVSP gives the same bits on 2 and 3
 // threads; unreachable vertices stay +infinity; the field stays close to the exact one.
 TEST(Farthest_point_sampling, with_virtual_sources)
 {
+  for(int per_vertex : { 1, 2 })
   for(const auto& named : test_meshes())
   {
-    SCOPED_TRACE(named.first);
+    SCOPED_TRACE(named.first + (per_vertex == 1 ? " vsp" : " vsp2"));
     const Surface_mesh& mesh = named.second;
     const std::size_t n = num_vertices(mesh);
     const std::size_t k = 12;
     Solver solver(mesh);
-    const auto r = solver.farthest_point_sampling(k, VP::virtual_sources(true));
+    const auto r = solver.farthest_point_sampling(k, VP::virtual_sources(true).virtual_sources_per_vertex(per_vertex));
     ASSERT_EQ(r.samples.size(), k);
     ASSERT_EQ(r.radii.size(), k);
-    EXPECT_EQ(std::size_t(r.samples[0]), farthest_vertex(plain(mesh, Vertex_index(0), VSP).d));
+    EXPECT_EQ(r.statistics.method, per_vertex == 1 ? "vsp" : "vsp2");
+    EXPECT_EQ(std::size_t(r.samples[0]), farthest_vertex(plain(mesh, Vertex_index(0), per_vertex == 1 ? VSP : VSP2).d));
     for(std::size_t i = 1; i < k; ++i)
       EXPECT_LE(r.radii[i], r.radii[i - 1]) << "radius " << i;
     EXPECT_EQ(r.radii.back(), *std::max_element(r.distances.begin(), r.distances.end()));
@@ -432,19 +432,20 @@ TEST(Farthest_point_sampling, with_virtual_sources)
       EXPECT_EQ(r.distances[std::size_t(r.samples[i])], 0.) << "sample " << i;
       EXPECT_EQ(r.labels[std::size_t(r.samples[i])], i) << "sample " << i;
     }
-    // (mean relative error, measured: 0.21-1.19% on these meshes, the most with zero-length edges)
+    // (mean relative error, measured: vsp 0.21-1.19% on these meshes, the most with zero-length edges; vsp2
+    // 0.02-1.08%)
     EXPECT_LT(error / double(counted), 0.02);
 #ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
     for(int threads : { 2, 3 })
     {
       SCOPED_TRACE(threads);
       const auto p = solver.farthest_point_sampling<CGAL::Parallel_tag>(
-        k, VP::virtual_sources(true).number_of_threads(threads));
+        k, VP::virtual_sources(true).virtual_sources_per_vertex(per_vertex).number_of_threads(threads));
       EXPECT_TRUE(p.samples == r.samples);
       EXPECT_TRUE(p.radii == r.radii);
       EXPECT_TRUE(identical(p.distances, r.distances));
       EXPECT_TRUE(p.labels == r.labels);
-      EXPECT_EQ(p.statistics.method, "pvsp");
+      EXPECT_EQ(p.statistics.method, per_vertex == 1 ? "pvsp" : "pvsp2");
     }
 #endif
     // the solver runs an exact sampling again as before
@@ -488,6 +489,10 @@ TEST(Farthest_point_sampling, free_function_and_work)
   EXPECT_EQ(v.statistics.method, "vsp");
   const Field vsp = plain(mesh, Vertex_index(0), VSP);
   EXPECT_LT(v.statistics.vertices_processed, 12 * vsp.statistics.vertices_processed);
+  const auto v2 = solver.farthest_point_sampling(100, VP::virtual_sources(true).virtual_sources_per_vertex(2));
+  EXPECT_EQ(v2.statistics.method, "vsp2");
+  const Field vsp2 = plain(mesh, Vertex_index(0), VSP2);
+  EXPECT_LT(v2.statistics.vertices_processed, 12 * vsp2.statistics.vertices_processed);
 }
 
 // Voronoi cells: the areas add up to the area of the mesh, and on a plane with two sources the cells are

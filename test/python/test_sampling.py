@@ -61,6 +61,17 @@ def test_virtual_sources():
     p = solver.farthest_point_sampling(15, method="pvsp", threads=2)
     assert np.array_equal(p.samples, r.samples) and np.array_equal(p.distances, r.distances)
     assert np.array_equal(p.labels, r.labels)
+    # two per vertex: the same checks, PVSP2 the same bits
+    r2 = solver.farthest_point_sampling(15, method="vsp2")
+    assert solver.statistics["method"] == "vsp2"
+    assert len(set(r2.samples.tolist())) == 15 and np.all(np.diff(r2.radii) <= 0)
+    assert r2.samples[0] == int(np.argmax(solver.distances(0, method="vsp2")))
+    exact2 = solver.distances(r2.samples)
+    assert np.all(r2.distances >= exact2 - 1e-12 * exact2.max())
+    assert np.all(r2.distances[r2.samples] == 0) and np.array_equal(r2.labels[r2.samples], np.arange(15))
+    p2 = solver.farthest_point_sampling(15, method="pvsp2", threads=2)
+    assert np.array_equal(p2.samples, r2.samples) and np.array_equal(p2.distances, r2.distances)
+    assert np.array_equal(p2.labels, r2.labels)
 
 
 def test_radius_first_and_plane():
@@ -133,6 +144,6 @@ def test_bad_input():
     with pytest.raises(ValueError):
         solver.farthest_point_sampling(3, radius=math.nan)
     with pytest.raises(ValueError):
-        solver.farthest_point_sampling(3, method="vsp2")
+        solver.farthest_point_sampling(3, method="vsp3")
     with pytest.raises(TypeError):
         solver.farthest_point_sampling(2.5)

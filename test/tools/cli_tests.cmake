@@ -365,6 +365,11 @@ vtp_cli_check(fps_components_one_samples AFTER fps_components_one
 vtp_cli_test(fps_vsp 0 "${fps}.v.txt" "" SOURCE_LINE none --method vsp --farthest-points 12 --first 1000
              --samples-output "${fps}.v.samples" --output "${fps}.v.txt" --labels "${fps}.v.labels")
 vtp_cli_check(fps_vsp_samples AFTER fps_vsp ARGS samples "${fps}.v.samples" "${fps}.v.txt" "${fps}.v.labels" 12 1000)
+# With two virtual sources per vertex (VSP2): the same checks; PVSP2 writes the same bits.
+vtp_cli_test(fps_vsp2 0 "${fps}.v2.txt" "" SOURCE_LINE none --method vsp2 --farthest-points 12 --first 1000
+             --samples-output "${fps}.v2.samples" --output "${fps}.v2.txt" --labels "${fps}.v2.labels")
+vtp_cli_check(fps_vsp2_samples AFTER fps_vsp2
+              ARGS samples "${fps}.v2.samples" "${fps}.v2.txt" "${fps}.v2.labels" 12 1000)
 if(TARGET CGAL::VTP_geodesics_OpenMP_support)
   vtp_cli_test(fps_pvtp 0 "${fps}.p.txt" "" SOURCE_LINE none --method pvtp --threads 2 --farthest-points 12
                --first 1000 --samples-output "${fps}.p.samples" --output "${fps}.p.txt" --labels "${fps}.p.labels")
@@ -374,6 +379,11 @@ if(TARGET CGAL::VTP_geodesics_OpenMP_support)
   vtp_cli_check(fps_pvsp_equals_vsp AFTER fps_vsp fps_pvsp ARGS values "${fps}.pv.txt" all "${fps}.v.txt" all 0)
   vtp_cli_check(fps_pvsp_same_samples AFTER fps_vsp fps_pvsp
                 ARGS values "${fps}.pv.samples" all "${fps}.v.samples" all 0)
+  vtp_cli_test(fps_pvsp2 0 "${fps}.pv2.txt" "" SOURCE_LINE none --method pvsp2 --threads 2 --farthest-points 12
+               --first 1000 --samples-output "${fps}.pv2.samples" --output "${fps}.pv2.txt")
+  vtp_cli_check(fps_pvsp2_equals_vsp2 AFTER fps_vsp2 fps_pvsp2 ARGS values "${fps}.pv2.txt" all "${fps}.v2.txt" all 0)
+  vtp_cli_check(fps_pvsp2_same_samples AFTER fps_vsp2 fps_pvsp2
+                ARGS values "${fps}.pv2.samples" all "${fps}.v2.samples" all 0)
 endif()
 set(fps_bad_sets
   "fps_zero|--farthest-points|0"
@@ -382,7 +392,6 @@ set(fps_bad_sets
   "fps_with_source_point|--farthest-points|3|--source-point|0.1,0.2,0.3"
   "fps_with_limit|--farthest-points|3|--max-distance|1"
   "fps_with_target|--farthest-points|3|--target|5|--target-output|${bad_output}.fps.t"
-  "fps_vsp2|--farthest-points|3|--method|vsp2"
   "fps_first_out_of_range|--farthest-points|3|--first|99999999"
   "fps_radius_negative|--farthest-points|3|--radius|-1"
   "fps_radius_nan|--farthest-points|3|--radius|nan"

@@ -86,7 +86,9 @@ void write_radii(const Samples& r, OutputIterator out)
 /// bit for bit. On the isotropic remeshing of camel (173K vertices), 1,000 samples: 0.90 s against 7.62 s
 /// for VTP (`vtp_query_benchmark --fps 1000 --vsp`), the field 0.14% above the exact distances to its
 /// samples on average, and the exact covering radius of its samples within 1% of that of the exact
-/// sampling.
+/// sampling. With `virtual_sources_per_vertex(2)` (VSP2 / PVSP2), the same with two virtual sources per
+/// vertex (a vertex that a new sample does not lower may still get a better second one, which it walks only
+/// if a later sample lowers it).
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` (VTP, VSP) or `CGAL::Parallel_tag` (PVTP, PVSP, each
 ///   computation on `number_of_threads` threads).
@@ -100,13 +102,13 @@ void write_radii(const Samples& r, OutputIterator out)
 ///   `WritablePropertyMap` receiving, per vertex, the distance to the nearest sample), `nearest_source_map`
 ///   (receiving the index of the nearest sample in the order taken, i.e. the geodesic Voronoi cell of the
 ///   vertex, `no_source` if none), `statistics` (summed over the computations), `lambda` and `lambda_g`
-///   (approximate distances: AVTP / PAVTP, each still an upper bound), `virtual_sources` (VSP / PVSP, see
-///   above), `minimum_window_length`,
+///   (approximate distances: AVTP / PAVTP, each still an upper bound), `virtual_sources` and
+///   `virtual_sources_per_vertex` (VSP / PVSP, VSP2 / PVSP2, see above), `minimum_window_length`,
 ///   `number_of_threads`, `vertex_point_map` and `geom_traits`, as in `compute_geodesic_distances()`.
 /// \returns the output iterator after the last sample.
 /// \throws Invalid_input_error if `tm` is not a valid triangle mesh, `first_sample` is not one of its vertices,
-/// or a parameter is invalid (`maximum_distance`, `targets`, `record_paths`, `initial_distances` and two
-/// virtual sources per vertex are not taken).
+/// or a parameter is invalid (`maximum_distance`, `targets`, `record_paths` and `initial_distances` are not
+/// taken).
 template <class ConcurrencyTag = CGAL::Sequential_tag,
           class TriangleMesh,
           class OutputIterator,

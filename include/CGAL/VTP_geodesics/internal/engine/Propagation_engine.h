@@ -137,8 +137,8 @@ public:
 
   // Adds `seed` to the field of the previous run (a run from known distances, or the first such run on
   // an empty field), in the engine's unit: the work and the resetting are those of the region the seed
-  // wins (Propagation_data::start_again()). No limit, targets, paths, nor a second virtual source per
-  // vertex. With settings.virtual_sources, the same with one virtual source per vertex
+  // wins (Propagation_data::start_again()). No limit, targets nor paths. With settings.virtual_sources,
+  // the same with one or two virtual sources per vertex
   // (Virtual_source_front::run_again()); the field must then be that of the previous run_again() with
   // virtual sources (or that of none). The vertices whose distance changed are those of touched() with
   // the LOWERED flag. Statistics: windows, vertices and time of this run only (not the reached vertices nor
@@ -157,7 +157,7 @@ public:
       statistics = Propagation_statistics();
       const int threads = m_vsp.run_again(m, m_seeds, settings, statistics,
                                           parallel ? number_of_threads(requested_threads) : 0);
-      statistics.method = parallel ? "pvsp" : "vsp";
+      statistics.method = std::string(parallel ? "pvsp" : "vsp") + (settings.second_virtual_source ? "2" : "");
       statistics.threads = threads;
       statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       return;

@@ -96,14 +96,7 @@ public:
     m_taken.assign(nv, 0);
     m_src.resize(nv);
     if(settings.second_virtual_source)
-    {
-      Vertex_source none;
-      none.sx = none.sy = none.lx = none.ly = none.rx = none.ry = 0.;
-      none.h = NO_INDEX;
-      none.root = NO_INDEX;
-      m_src2.assign(nv, none);
-      m_dist2.assign(nv, std::numeric_limits<double>::infinity());
-    }
+      clear_second_sources(nv);
     else
     {
       m_src2.clear();
@@ -164,22 +157,31 @@ public:
   // vertex is taken only if the new seed lowers it, and the arrays are not set up again, so a run costs
   // what the region the seed wins costs; the vertices it lowered are then those of touched(). The
   // vertices not lowered keep their distance, label and virtual source (still the line of a real path:
-  // its root's distance can only have decreased since). Labels are kept; no limit, targets (there are
-  // none to stop at), paths, nor second virtual source (settings.known_distances must be set). Returns the
+  // its root's distance can only have decreased since). With a second virtual source per vertex, a vertex
+  // lowered keeps its former source as its second if the roots differ (demote_first()), and one not lowered
+  // may still get a better second source, which it walks only if a later run takes it. Labels are kept; no
+  // limit, targets (there are none to stop at) nor paths (settings.known_distances must be set). Returns the
   // number of threads of the team.
   int run_again(const Mesh_arrays& m, const std::vector<Seed>& seeds, const Propagation_settings& settings,
                 Propagation_statistics& st, int threads)
   {
-    CGAL_precondition(settings.known_distances && settings.want_labels && !settings.second_virtual_source
-                      && !settings.record_paths && settings.unit == 1.
-                      && !(settings.limit < std::numeric_limits<double>::infinity()));
+    CGAL_precondition(settings.known_distances && settings.want_labels && !settings.record_paths
+                      && settings.unit == 1. && !(settings.limit < std::numeric_limits<double>::infinity()));
     const std::size_t nv = static_cast<std::size_t>(m.nv);
-    if(!m_incremental || m_mesh != &m || dist.size() != nv || label.size() != nv)
+    if(!m_incremental || m_mesh != &m || dist.size() != nv || label.size() != nv
+       || m_src2.empty() == settings.second_virtual_source)
     {
       dist.assign(nv, std::numeric_limits<double>::infinity());
       label.assign(nv, NO_INDEX);
       m_taken.assign(nv, 0);
       m_src.resize(nv);
+      if(settings.second_virtual_source)
+        clear_second_sources(nv);
+      else
+      {
+        m_src2.clear();
+        m_dist2.clear();
+      }
       m_incremental = true;
       m_rounds.keep_width = false;
     }
@@ -193,8 +195,6 @@ public:
     m_mesh = &m;
     m_seeds = &seeds;
     m_settings = settings;
-    m_src2.clear();
-    m_dist2.clear();
     m_seeded.clear();
     m_targets.clear();
     m_target_value.clear();
@@ -211,6 +211,7 @@ public:
     st.stopped_early = false;
     st.peak_live_windows = 0;
     st.peak_window_bytes = nv * (sizeof(Vertex_source) + sizeof(double) + 1 + sizeof(Index))
+                           + m_src2.size() * (sizeof(Vertex_source) + sizeof(double))
                            + m_touched.capacity() * sizeof(Index)
                            + (std::max)(m_rounds.peak_bytes, m_peak_seeded * sizeof(Seeded_entry));
     copy_round_statistics(st);
@@ -222,6 +223,17 @@ public:
 
 private:
   friend class Virtual_source_rounds;
+
+  // no vertex has a second virtual source
+  void clear_second_sources(std::size_t nv)
+  {
+    Vertex_source none;
+    none.sx = none.sy = none.lx = none.ly = none.rx = none.ry = 0.;
+    none.h = NO_INDEX;
+    none.root = NO_INDEX;
+    m_src2.assign(nv, none);
+    m_dist2.assign(nv, std::numeric_limits<double>::infinity());
+  }
 
   // the rounds and stage times of the last run (Virtual_source_rounds)
   void copy_round_statistics(Propagation_statistics& st) const

@@ -234,8 +234,6 @@ farthest_point_samples_of(const MeshIndex& mesh, std::size_t k, const NamedParam
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
   typedef typename MeshIndex::vertex_descriptor vertex_descriptor;
-  if(settings.virtual_sources && settings.second_virtual_source)
-    throw Invalid_input_error("farthest_point_sampling() takes one virtual source per vertex, not 2");
   if(settings.limit < std::numeric_limits<double>::infinity() || settings.record_paths
      || !is_default_parameter<NamedParameters, internal_np::targets_t>::value
      || !is_default_parameter<NamedParameters, internal_np::initial_distances_t>::value)
