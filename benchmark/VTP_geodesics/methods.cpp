@@ -47,15 +47,22 @@ void expect_fields(const std::vector<std::string>& fields, std::size_t n, const 
     throw Tool_error("invalid method '" + fields[0] + "...' (expected " + syntax + ")");
 }
 
-// The VTP family (vtp, pvtp:T, avtp:lambda, pavtp:T:lambda, vsp, pvsp:T, vsp2, pvsp2:T) comes from the table of methods shared with the
-// command-line tools (vtp_support/methods.h): the name, then ":T" for a parallel method and ":lambda" for an
-// approximate one. Returns false if `fields[0]` is not one of them.
+// How a method of the table is written: the name, then ":T" for a parallel method and ":lambda" for an
+// approximate one.
+std::string vtp_method_syntax(const vtp_support::Method_info& info)
+{
+  return std::string(info.name) + (info.parallel ? ":T" : "") + (info.approximate ? ":lambda" : "");
+}
+
+// The VTP family (vtp, pvtp:T, avtp:lambda, pavtp:T:lambda, vsp, pvsp:T, vsp2, pvsp2:T) comes from the table
+// of methods shared with the command-line tools (vtp_support/methods.h), written as vtp_method_syntax() says.
+// Returns false if `fields[0]` is not one of them.
 bool parse_vtp_method(const std::vector<std::string>& fields, Method& m)
 {
   const vtp_support::Method_info* info = vtp_support::find_method(fields[0]);
   if(info == nullptr)
     return false;
-  const std::string syntax = std::string(info->name) + (info->parallel ? ":T" : "") + (info->approximate ? ":lambda" : "");
+  const std::string syntax = vtp_method_syntax(*info);
   expect_fields(fields, 1 + (info->parallel ? 1 : 0) + (info->approximate ? 1 : 0), syntax.c_str());
   m.kind = info->parallel ? (info->approximate ? Method_kind::PAVTP : Method_kind::PVTP)
                           : (info->approximate ? Method_kind::AVTP : Method_kind::VTP);
@@ -118,7 +125,7 @@ Method parse_method(const std::string& spec)
   }
   std::string known;
   for(const vtp_support::Method_info* i = vtp_support::methods_begin(); i != vtp_support::methods_end(); ++i)
-    known += (known.empty() ? "" : ", ") + std::string(i->name) + (i->parallel ? ":T" : "") + (i->approximate ? ":lambda" : "");
+    known += (known.empty() ? "" : ", ") + vtp_method_syntax(*i);
   for(const Method_parser& p : method_parsers)
     known += (known.empty() ? "" : ", ") + std::string(p.syntax);
   throw Tool_error("unknown method '" + spec + "' (known: " + known + ")");

@@ -95,13 +95,7 @@ public:
     dist.assign(nv, std::numeric_limits<double>::infinity());
     m_taken.assign(nv, 0);
     m_src.resize(nv);
-    if(settings.second_virtual_source)
-      clear_second_sources(nv);
-    else
-    {
-      m_src2.clear();
-      m_dist2.clear();
-    }
+    reset_second_sources(settings.second_virtual_source ? nv : 0);
     if(settings.want_labels)
       label.assign(nv, NO_INDEX);
     else
@@ -175,13 +169,7 @@ public:
       label.assign(nv, NO_INDEX);
       m_taken.assign(nv, 0);
       m_src.resize(nv);
-      if(settings.second_virtual_source)
-        clear_second_sources(nv);
-      else
-      {
-        m_src2.clear();
-        m_dist2.clear();
-      }
+      reset_second_sources(settings.second_virtual_source ? nv : 0);
       m_incremental = true;
       m_rounds.keep_width = false;
     }
@@ -224,15 +212,15 @@ public:
 private:
   friend class Virtual_source_rounds;
 
-  // no vertex has a second virtual source
-  void clear_second_sources(std::size_t nv)
+  // room for a second virtual source for each of n vertices (n = 0: none), none set
+  void reset_second_sources(std::size_t n)
   {
     Vertex_source none;
     none.sx = none.sy = none.lx = none.ly = none.rx = none.ry = 0.;
     none.h = NO_INDEX;
     none.root = NO_INDEX;
-    m_src2.assign(nv, none);
-    m_dist2.assign(nv, std::numeric_limits<double>::infinity());
+    m_src2.assign(n, none);
+    m_dist2.assign(n, std::numeric_limits<double>::infinity());
   }
 
   // the rounds and stage times of the last run (Virtual_source_rounds)
