@@ -49,8 +49,9 @@ struct Trace_point
 // leaves through the edge on its side of the third vertex; the image is re-expressed in the frame of the
 // half-edge across that edge. It ends in the face whose third vertex is the origin (or that holds the
 // source point). A line that crosses an edge at one of its ends (within rounding, or a zero-length edge)
-// goes through that vertex, and on from there along the vertex's own path (see through_vertex()). The
-// length of the polyline is the distance, up to rounding.
+// goes through that vertex, and on from there along the vertex's own path if that path has the length left
+// of the line (always, with exact distances), else straight on through the vertex (see through_vertex()).
+// The length of the polyline is the distance, up to rounding.
 class Path_trace
 {
 public:
@@ -62,6 +63,7 @@ public:
   // would be a defect: then `out` holds what was followed).
   bool from_vertex(Index v, std::vector<Trace_point>& out) const
   {
+    m_straight_attempts = 0;
     out.clear();
     push(out, vertex_point(v));
     return from_vertex_on(v, out);
@@ -70,6 +72,7 @@ public:
   // The path from target t (first) to its source (last).
   bool from_target(const Target& target, const Offer& offer, std::vector<Trace_point>& out) const
   {
+    m_straight_attempts = 0;
     out.clear();
     if(target.vertex != NO_INDEX)
       return from_vertex(target.vertex, out);
@@ -159,7 +162,11 @@ private:
 
   // Follows the straight path from the point (px, py) of the face of offer.halfedge (in its frame) to
   // the image of offer.origin; appends the edge points and the origin; sets `origin`.
-  bool follow(const Offer& offer, double px, double py, std::vector<Trace_point>& out, Index& origin) const
+  // With `strict` (the line goes on straight through a vertex, see through_vertex()), it is not followed if
+  // it goes through another vertex whose own path has not the length left of the line and that it cannot
+  // go on straight through either.
+  bool follow(const Offer& offer, double px, double py, std::vector<Trace_point>& out, Index& origin,
+              bool strict = false) const
   {
     const Mesh_arrays& m = m_mesh;
     origin = offer.origin;
@@ -171,8 +178,13 @@ private:
       x = ray_crossing(offer.sx, offer.sy, px, py, px);
     x = (std::min)((std::max)(x, 0.), m.geometry[h].length);
     double sx = offer.sx, sy = offer.sy;
-    if(through_vertex(h, x, sx, sy, out, origin))
-      return true;
+    // the distance of the origin: the offer's less the straight parts from the point to the edge and on to
+    // the image
+    const double sigma = offer.distance - std::sqrt((px - x) * (px - x) + py * py)
+                         - std::sqrt((x - sx) * (x - sx) + sy * sy);
+    const int through = through_vertex(h, x, sx, sy, sigma, strict, out, origin);
+    if(through != 0)
+      return through > 0;
     Trace_point p;
     p.kind = Trace_point::ON_EDGE;
     p.element = h;
@@ -189,7 +201,7 @@ private:
       sx = g.length - sx;
       sy = -sy;
       const Index f = Mesh_arrays::face(o);
-      if(ends_in_face(f, o, sx, sy, origin, out))
+      if(ends_in_face(f, o, sx, sy, origin, strict, out))
         return true;
       if(!(sy > 0.))
         return false;
@@ -243,8 +255,9 @@ private:
       x = (std::min)((std::max)(position * (m.geometry[e].length / w), 0.), m.geometry[e].length);
       sx = ex;
       sy = ey;
-      if(through_vertex(h, x, sx, sy, out, origin))
-        return true;
+      const int through_end = through_vertex(h, x, sx, sy, sigma, strict, out, origin);
+      if(through_end != 0)
+        return through_end > 0;
       p.element = e;
       p.x = x;
       push(out, p);
@@ -252,14 +265,21 @@ private:
     return false;
   }
 
-  // Whether the straight part towards the image (sx, sy) (frame of h) of the origin crosses half-edge h at
-  // one of its ends (abscissa x within rounding of 0 or of its length, or h of zero length): then the path
-  // goes through that vertex w, and from there it is w's own path, of length d(w) <= |w - image| (+ the
-  // distance of the origin), the geodesic distance being exact: appends w and sets `origin` to w, from which
-  // the caller goes on. The line through a vertex leaves it into any face of its fan, which the walk face by
+  // Whether the straight part towards the image (sx, sy) (frame of h, below h) of the origin, at the
+  // distance `sigma` of the origin, crosses half-edge h at one of its ends (abscissa x within rounding of 0 or
+  // of its length, or h of zero length): then the path goes through that vertex w, appended. If the path of w
+  // has the length left of the line (sigma + |w - image|, always so with exact distances: the line is a
+  // geodesic), it goes on along that path: `origin` is set to w, from which the caller goes on. Otherwise (an
+  // approximation, VSP or AVTP: w may have a longer path, or a shorter one than the line through it), the line
+  // goes on straight through w to the origin (straight_through(), on either side of the line), so that the
+  // length of the path is the distance; if neither side can be followed, along w's own path (not if
+  // `strict`: a line that already goes straight through a vertex on one side of it, which may be the wrong
+  // one, then fails). The line through a vertex leaves it into any face of its fan, which the walk face by
   // face cannot decide within rounding (nor can it cross a zero-length edge). Only a vertex that was reached
-  // (or is a source) and is not already on the path (no cycle through coincident vertices).
-  bool through_vertex(Index h, double x, double sx, double sy, std::vector<Trace_point>& out, Index& origin) const
+  // (or is a source) and is not already on the path (no cycle through coincident vertices). Returns 1 if the
+  // line went through a vertex, 0 if not (the walk goes on across h), -1 if it cannot be followed.
+  int through_vertex(Index h, double x, double sx, double sy, double sigma, bool strict,
+                     std::vector<Trace_point>& out, Index& origin) const
   {
     const Mesh_arrays& m = m_mesh;
     const double length = m.geometry[h].length;
@@ -270,13 +290,156 @@ private:
     else if(length - x <= tolerance)
       w = m.source[Mesh_arrays::next(h)];
     if(w == NO_INDEX || !is_reached(w))
-      return false;
+      return 0;
     for(const Trace_point& q : out)
       if(q.kind == Trace_point::AT_VERTEX && q.element == w)
-        return false;
+        return 0;
     push(out, vertex_point(w));
+    const std::size_t size = out.size();
+    const bool at_source = w == m.source[h];
+    const double wx = at_source ? 0. : length;
+    const double line = sigma + std::sqrt((sx - wx) * (sx - wx) + sy * sy);
+    if(!(std::abs(recorded_distance(w) - line) <= 1e-11 * line))
+    {
+      for(int side = 0; side < 2 && m_straight_attempts < max_straight_attempts; ++side)
+      {
+        ++m_straight_attempts;  // (a line through many such vertices could try 2^n ways)
+        Index end = origin;
+        if(straight_through(h, at_source, side == 1, sx, sy, sigma, out, end))
+        {
+          origin = end;
+          return 1;
+        }
+        out.resize(size);
+      }
+      if(strict)
+        return -1;
+    }
     origin = w;
-    return true;
+    return 1;
+  }
+
+  // The line towards the image (sx, sy) (frame of h, below h) of `origin`, at the distance `sigma` of the
+  // origin, goes straight on through the vertex w at an end of h (its source if `at_source`): the faces
+  // around w are unfolded one by one, from the face across h (or, on the other side of the line, from the
+  // face of h), away from the face the line comes from, until one holds the direction of the image; the
+  // line is followed from w across that face's edge opposite w (it ends only where its image is at the
+  // origin, see reaches_origin(): on the wrong side of a vertex whose angles do not add up to 2 pi, it misses
+  // the origin and cannot be followed).
+  bool straight_through(Index h, bool at_source, bool other_side, double sx, double sy, double sigma,
+                        std::vector<Trace_point>& out, Index& origin) const
+  {
+    const Mesh_arrays& m = m_mesh;
+    // k: a half-edge whose source is w (w at the origin of its frame), and (ix, iy) the image in its frame
+    Index k;
+    double ix = sx, iy = sy;
+    bool counterclockwise;
+    if(!other_side)
+    {
+      const Index o = m.opposite[h];  // the face across h, entered first
+      if(o == NO_INDEX)
+        return false;
+      ix = m.geometry[o].length - sx;
+      iy = -sy;
+      k = o;
+      if(at_source)
+        k = to_next_frame(o, ix, iy);  // w is the target of o
+      counterclockwise = at_source ? false : true;
+    }
+    else
+    {
+      k = h;  // the face of h, which does not hold the direction (the image is below h): turned away at once
+      if(!at_source)
+        k = to_next_frame(h, ix, iy);
+      counterclockwise = at_source;
+    }
+    if(k == NO_INDEX)
+      return false;
+    const Index w = m.source[k];
+    const Index degree = m.corner_begin[w + 1] - m.corner_begin[w];
+    for(Index step = 0; step <= degree; ++step)
+    {
+      const Halfedge_geometry& g = m.geometry[k];
+      if(!m.is_degenerate_face[Mesh_arrays::face(k)] && iy >= 0. && ix * g.cy - iy * g.cx >= 0.)
+      {
+        // the direction of the image is in this face: the line leaves it across e = B -> C
+        const Index e = Mesh_arrays::next(k);
+        double ex = ix, ey = iy;
+        if(to_next_frame(k, ex, ey) == NO_INDEX)
+          return false;
+        const Halfedge_geometry& ge = m.geometry[e];
+        if(!(ey < 0.))
+        {
+          // the image is in this face: at the origin, one of its vertices or a source point in it
+          const double tolerance = 1e-12 * (ix * ix + iy * iy + g.length * g.length);  // (squared)
+          const bool at_origin =
+              origin >= m.nv ? image_at_seed(Mesh_arrays::face(k), k, ix, iy, origin)
+              : origin == m.source[e] ? (ix - g.length) * (ix - g.length) + iy * iy <= tolerance
+              : origin == m.source[Mesh_arrays::next(e)] && (ix - g.cx) * (ix - g.cx) + (iy - g.cy) * (iy - g.cy) <= tolerance;
+          if(!at_origin)
+            return false;
+          straight_to(origin, out);
+          return true;
+        }
+        Offer offer;
+        offer.distance = sigma + std::sqrt(ix * ix + iy * iy);
+        offer.origin = origin;
+        offer.halfedge = e;
+        offer.sx = ex;
+        offer.sy = ey;
+        return follow(offer, ge.cx, ge.cy, out, origin, true);
+      }
+      if(counterclockwise)
+      {
+        // into the face across C -> w, in whose frame C is on the x axis
+        const Index o = m.opposite[Mesh_arrays::prev(k)];
+        if(o == NO_INDEX || !(g.l_prev > 0.))
+          return false;
+        const double co = g.cx / g.l_prev, si = g.cy / g.l_prev;
+        const double nx = ix * co + iy * si, ny = -ix * si + iy * co;
+        ix = nx;
+        iy = ny;
+        k = o;
+      }
+      else
+      {
+        // into the face across w -> B, in whose frame B is its third vertex
+        const Index o = m.opposite[k];
+        if(o == NO_INDEX)
+          return false;
+        const Index n = Mesh_arrays::next(o);
+        const Halfedge_geometry& gn = m.geometry[n];
+        if(!(gn.l_prev > 0.))
+          return false;
+        const double co = gn.cx / gn.l_prev, si = gn.cy / gn.l_prev;
+        const double nx = ix * co - iy * si, ny = ix * si + iy * co;
+        ix = nx;
+        iy = ny;
+        k = n;
+      }
+    }
+    return false;
+  }
+
+  // The point (x, y) of the frame of h in the frame of next(h) (its source, the target of h, at the origin,
+  // its target on the x axis); returns next(h), or NO_INDEX if that edge has no length.
+  Index to_next_frame(Index h, double& x, double& y) const
+  {
+    const Halfedge_geometry& g = m_mesh.geometry[h];
+    if(!(g.l_next > 0.))
+      return NO_INDEX;
+    const double ux = (g.cx - g.length) / g.l_next, uy = g.cy / g.l_next;
+    const double rx = x - g.length, ry = y;
+    x = rx * ux + ry * uy;
+    y = -rx * uy + ry * ux;
+    return Mesh_arrays::next(h);
+  }
+
+  // the distance recorded for reached vertex v (0 for a source)
+  double recorded_distance(Index v) const
+  {
+    const Offer& offer = m_record.vertex[static_cast<std::size_t>(v)];
+    return offer.origin != NO_INDEX ? offer.distance : 0.;
   }
 
   // Whether vertex v has a distance: it was offered one, or it is a source.
@@ -294,13 +457,15 @@ private:
   // Whether the straight part towards the image (sx, sy) (frame of o) of `origin` ends in face f, entered
   // through o: the origin is the third vertex of f, or the source point lies in f, or the image itself lies
   // in f (an image on an edge: a pseudo-source seen through a face of zero area, which it reaches straight).
-  // Appends the end of the path so far.
-  bool ends_in_face(Index f, Index o, double sx, double sy, Index origin, std::vector<Trace_point>& out) const
+  // Appends the end of the path so far. The image in f ends it only if not `strict` (a line gone straight
+  // through a vertex on the wrong side of it can have its image in any face).
+  bool ends_in_face(Index f, Index o, double sx, double sy, Index origin, bool strict,
+                    std::vector<Trace_point>& out) const
   {
-    if(reaches_origin(f, o, origin, out))
+    if(reaches_origin(f, o, sx, sy, origin, out))
       return true;
     const Mesh_arrays& m = m_mesh;
-    if(m.is_degenerate_face[f])
+    if(strict || m.is_degenerate_face[f])
       return false;
     const Halfedge_geometry& g = m.geometry[o];
     const double scale = (std::max)(g.length, (std::max)(g.l_next, g.l_prev));
@@ -330,31 +495,76 @@ private:
     return true;
   }
 
-  // Whether face f (entered through o) ends the straight part towards `origin`; appends its point.
-  bool reaches_origin(Index f, Index o, Index origin, std::vector<Trace_point>& out) const
+  // Whether face f (entered through o) ends the straight part towards the image (sx, sy) (frame of o) of
+  // `origin`: the origin is the third vertex of f, or the source point lies in f, and the image is at it (to
+  // 1e-6 of the image's distance, far above rounding); appends its point. (A line of an approximation can
+  // cross a face of its origin before it ends there: VSP's lines can turn around a vertex whose angles add
+  // up to less than pi, and the line that a source point's face sees again is not the line that ends there.)
+  bool reaches_origin(Index f, Index o, double sx, double sy, Index origin, std::vector<Trace_point>& out) const
   {
     const Mesh_arrays& m = m_mesh;
+    const Halfedge_geometry& g = m.geometry[o];
+    const double tolerance = 1e-12 * (sx * sx + sy * sy + g.length * g.length);  // (squared)
     if(origin < m.nv)
     {
       if(m.source[Mesh_arrays::prev(o)] != origin)
         return false;
+      if(!((sx - g.cx) * (sx - g.cx) + (sy - g.cy) * (sy - g.cy) <= tolerance))
+        return false;
       push(out, vertex_point(origin));
       return true;
     }
-    const Seed& s = m_seeds[static_cast<std::size_t>(origin - m.nv)];
-    const bool in_this_face = (s.kind == Seed::IN_FACE && s.element == f)
-                              || (s.kind == Seed::ON_EDGE
-                                  && (Mesh_arrays::face(s.element) == f
-                                      || (m.opposite[s.element] != NO_INDEX && Mesh_arrays::face(m.opposite[s.element]) == f)));
-    if(!in_this_face)
+    if(!image_at_seed(f, o, sx, sy, origin))
       return false;
     straight_to(origin, out);
     return true;
   }
 
+  // Whether the source point `origin` (nv + its index) lies in face f and the image (sx, sy) (frame of o, a
+  // half-edge of f) is at it (as in reaches_origin()).
+  bool image_at_seed(Index f, Index o, double sx, double sy, Index origin) const
+  {
+    if(!seed_in_face(origin, f))
+      return false;
+    const Mesh_arrays& m = m_mesh;
+    const Halfedge_geometry& g = m.geometry[o];
+    const double tolerance = 1e-12 * (sx * sx + sy * sy + g.length * g.length);  // (squared)
+    // the source point and the image in the frame of the face
+    const Seed& s = m_seeds[static_cast<std::size_t>(origin - m.nv)];
+    const Face_frame frame(m, f);
+    double px = s.x, py = s.y;
+    if(s.kind == Seed::ON_EDGE)
+    {
+      if(Mesh_arrays::face(s.element) == f)
+        frame.from_edge_frame(static_cast<int>(s.element % 3), s.x, 0., px, py);
+      else
+      {
+        const Index e = m.opposite[s.element];
+        frame.from_edge_frame(static_cast<int>(e % 3), m.geometry[e].length - s.x, 0., px, py);
+      }
+    }
+    double ix, iy;
+    frame.from_edge_frame(static_cast<int>(o % 3), sx, sy, ix, iy);
+    return (ix - px) * (ix - px) + (iy - py) * (iy - py) <= tolerance;
+  }
+
+  // whether the source point `origin` (nv + its index) lies in face f (inside, or on one of its edges)
+  bool seed_in_face(Index origin, Index f) const
+  {
+    const Mesh_arrays& m = m_mesh;
+    const Seed& s = m_seeds[static_cast<std::size_t>(origin - m.nv)];
+    return (s.kind == Seed::IN_FACE && s.element == f)
+           || (s.kind == Seed::ON_EDGE
+               && (Mesh_arrays::face(s.element) == f
+                   || (m.opposite[s.element] != NO_INDEX && Mesh_arrays::face(m.opposite[s.element]) == f)));
+  }
+
   const Mesh_arrays& m_mesh;
   const Path_record& m_record;
   const std::vector<Seed>& m_seeds;
+  // the ways tried through vertices (straight_through()) by the current path, at most max_straight_attempts
+  static constexpr int max_straight_attempts = 256;
+  mutable int m_straight_attempts = 0;
 };
 
 } // namespace internal

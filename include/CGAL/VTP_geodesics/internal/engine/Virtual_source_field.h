@@ -226,18 +226,24 @@ protected:
     for(int k = 0; k < 3; ++k)
     {
       const double d = std::sqrt(px * px + py * py);
+      Vertex_source s;
+      s.h = h;
       if(d > 0.)
       {
-        Vertex_source s;
         s.sx = px; s.sy = py;
         // the half-plane of directions towards the vertex (any wedge will do: the whole face is seen)
         const double dx = -px, dy = -py;
         s.lx = -dy; s.ly = dx;
         s.rx = dy; s.ry = -dx;
-        s.h = h;
         s.root = origin;
-        offer(m.source[h], d, s, lab);
       }
+      else
+      {
+        // the vertex is at the point: it is its own root, as a source vertex (its edges are its lines)
+        s.sx = s.sy = s.lx = s.ly = s.rx = s.ry = 0.;
+        s.root = m.source[h];
+      }
+      offer(m.source[h], d, s, lab);
       // the point in the frame of next(h)
       const Halfedge_geometry g = m.geometry[h];
       const double ln = g.l_next;
