@@ -27,6 +27,12 @@
 //   where CGAL disagrees, CGAL run on the mesh subdivided once or twice (the same surface) must agree,
 //   unless VTP gives the length of a straight segment that lies on the surface (CGAL itself errs on some
 //   meshes; such cases are printed as notes).
+// - the approximations, virtual source propagation (VSP, one and two virtual sources per vertex) and AVTP
+//   (windows reset every half mean edge): 0 at the source, no NaN, finite exactly where VTP is, never
+//   below VTP's distance by more than 1e-12 * scale (the upper bound), a recorded path from every reached
+//   vertex to the source whose length is the distance (1e-9 * scale; checked for VTP too), and for VSP
+//   with OpenMP the same bits on 2 and 3 threads (PVSP); from a point inside a face chosen by the input
+//   too, against VTP from that point.
 // With the environment variable VTP_FUZZ_SKIP_DEGENERATE=1, meshes with a degenerate triangle (zero area
 // or zero-length edge) are skipped.
 //
@@ -349,6 +355,85 @@ double length(const Surface_mesh& mesh, Vertex_index u, Vertex_index v)
   return std::sqrt(CGAL::squared_distance(mesh.point(u), mesh.point(v)));
 }
 
+typedef CGAL::VTP_geodesics::Geodesic_distance_solver<Surface_mesh> Solver;
+namespace VP = CGAL::VTP_geodesics::parameters;
+
+// The distances of a run of `solver` from `source` (a vertex or a face location) with the named parameters np.
+template <class Source, class NamedParameters>
+std::vector<double> run(Solver& solver, const Source& source, const NamedParameters& np)
+{
+  solver.compute(vtp_test::Discard_map(), source, np);
+  return solver.distances();
+}
+
+// The checks of the approximations, VSP and AVTP (see the comment at the top), from `source`, whose exact
+// distances (VTP) are `exact`.
+template <class Source>
+void check_approximations(const Surface_mesh& mesh, Vertex_index s, const Source& source,
+                           const std::vector<double>& exact, double tolerance, const std::string& from)
+{
+  double scale = 0.;
+  for(double x : exact)
+    if(std::isfinite(x))
+      scale = (std::max)(scale, x);
+  // 1 and 2: VSP with one or two virtual sources per vertex; 0: AVTP with windows reset every half mean
+  // edge; -1: VTP itself (its paths)
+  for(int per_vertex : {1, 2, 0, -1})
+  {
+    const std::string what = from + ", "
+                             + (per_vertex == 0  ? std::string("AVTP (lambda 0.5)")
+                                : per_vertex < 0 ? std::string("VTP")
+                                                 : std::to_string(per_vertex) + " virtual source(s) per vertex")
+                             + ": ";
+    Solver solver(mesh);
+    const std::vector<double> d =
+        per_vertex == 0  ? run(solver, source, VP::lambda(0.5).record_paths(true))
+        : per_vertex < 0 ? run(solver, source, VP::record_paths(true))
+                         : run(solver, source, VP::virtual_sources(true).virtual_sources_per_vertex(per_vertex).record_paths(true));
+    if(d.size() != exact.size())
+      fail(mesh, s, d, &exact, what + "not one distance per vertex");
+    for(std::size_t i = 0; i < d.size(); ++i)
+    {
+      const std::string at = " at vertex " + std::to_string(i) + " (VTP in the second list)";
+      if(std::isnan(d[i]) || d[i] < 0.)
+        fail(mesh, s, d, &exact, what + "NaN or negative distance" + at);
+      if(std::isfinite(d[i]) != std::isfinite(exact[i]))
+        fail(mesh, s, d, &exact, what + "finite where VTP is not, or the other way" + at);
+      if(std::isfinite(d[i]) && d[i] < exact[i] - tolerance)
+        fail(mesh, s, d, &exact, what + "below the exact distance" + at);
+      if(std::isfinite(d[i]) && exact[i] == 0. && d[i] != 0.)
+        fail(mesh, s, d, &exact, what + "not 0 at the source" + at);
+      if(!std::isfinite(d[i]))
+        continue;
+      const Vertex_index v(static_cast<Surface_mesh::size_type>(i));
+      std::vector<Point_3> path;
+      solver.shortest_path_points(v, std::back_inserter(path));
+      double path_length = 0.;
+      for(std::size_t k = 1; k < path.size(); ++k)
+        path_length += std::sqrt(CGAL::squared_distance(path[k - 1], path[k]));
+      if(path.empty() || path.front() != mesh.point(v) || std::abs(path_length - d[i]) > 1e-9 * (std::max)(scale, 1e-300))
+        fail(mesh, s, d, &exact, what + "the path does not start at the vertex or its length " + std::to_string(path_length)
+                                     + " is not the distance" + at);
+    }
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+    for(int threads : {2, 3})
+    {
+      if(per_vertex <= 0)
+        break;
+      std::vector<double> dp(d.size());
+      solver.compute<CGAL::Parallel_tag>(vtp_test::Discard_map(), source,
+                                         VP::virtual_sources(true).virtual_sources_per_vertex(per_vertex)
+                                           .number_of_threads(threads));
+      dp = solver.distances();
+      for(std::size_t i = 0; i < d.size(); ++i)
+        if(!(dp[i] == d[i]) && !(std::isinf(dp[i]) && std::isinf(d[i])))
+          fail(mesh, s, dp, &d, what + "PVSP on " + std::to_string(threads)
+                                  + " threads (first list) differs from VSP (second) at vertex " + std::to_string(i));
+    }
+#endif
+  }
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
@@ -468,6 +553,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         std::cerr << "vtp_fuzz: note: VTP differs from CGAL at vertex " << i << " (" << d[i] << " vs "
                   << reference[i] << "): " << why << std::endl;
     }
+  }
+
+  // the approximations, from the source vertex and from a point inside a face
+  check_approximations(mesh, s, s, d, tolerance, "from the vertex");
+  if(num_faces(mesh) > 0)
+  {
+    const unsigned a = 1u + bytes.next() % 8u, b = 1u + bytes.next() % 8u, f = bytes.next() % num_faces(mesh);
+    const Solver::Face_location point(Surface_mesh::Face_index(static_cast<Surface_mesh::size_type>(f)),
+                                      {{a / 18., b / 18., 1. - (a + b) / 18.}});
+    Solver solver(mesh);
+    solver.compute(vtp_test::Discard_map(), point);
+    const std::vector<double> exact = solver.distances();
+    double point_scale = 0.;
+    for(double x : exact)
+      if(std::isfinite(x))
+        point_scale = (std::max)(point_scale, x);
+    check_approximations(mesh, s, point, exact, TOLERANCE * (std::max)(point_scale, 1e-300),
+                          "from a point in face " + std::to_string(f));
   }
   return 0;
 }
