@@ -407,7 +407,14 @@ void check_approximations(const Surface_mesh& mesh, Vertex_index s, const Source
         continue;
       const Vertex_index v(static_cast<Surface_mesh::size_type>(i));
       std::vector<Point_3> path;
-      solver.shortest_path_points(v, std::back_inserter(path));
+      try
+      {
+        solver.shortest_path_points(v, std::back_inserter(path));
+      }
+      catch(const std::exception& e)
+      {
+        fail(mesh, s, d, &exact, what + "no path: " + e.what() + at);
+      }
       double path_length = 0.;
       for(std::size_t k = 1; k < path.size(); ++k)
         path_length += std::sqrt(CGAL::squared_distance(path[k - 1], path[k]));
