@@ -396,11 +396,10 @@ private:
         if(!(ey < 0.))
         {
           // the image is in this face: at the origin, one of its vertices or a source point in it
-          const double tolerance = 1e-12 * (ix * ix + iy * iy + g.length * g.length);  // (squared)
           const bool at_origin =
               origin >= m.nv ? image_at_seed(Mesh_arrays::face(k), k, ix, iy, origin)
-              : origin == m.source[e] ? (ix - g.length) * (ix - g.length) + iy * iy <= tolerance
-              : origin == m.source[Mesh_arrays::next(e)] && (ix - g.cx) * (ix - g.cx) + (iy - g.cy) * (iy - g.cy) <= tolerance;
+              : origin == m.source[e] ? image_at(ix, iy, g.length, 0., g.length)
+              : origin == m.source[Mesh_arrays::next(e)] && image_at(ix, iy, g.cx, g.cy, g.length);
           if(!at_origin)
             return false;
           straight_to(origin, out);
@@ -453,11 +452,16 @@ private:
     const Halfedge_geometry& g = m_mesh.geometry[h];
     if(!(g.l_next > 0.))
       return NO_INDEX;
-    const double ux = (g.cx - g.length) / g.l_next, uy = g.cy / g.l_next;
-    const double rx = x - g.length, ry = y;
-    x = rx * ux + ry * uy;
-    y = -rx * uy + ry * ux;
+    rotate_into(x - g.length, y, (g.cx - g.length) / g.l_next, g.cy / g.l_next, x, y);
     return Mesh_arrays::next(h);
+  }
+
+  // Whether the image (ix, iy) is at the point (px, py) of the same frame, to 1e-6 of the image's distance
+  // from the frame's origin (and of the length of its edge): far above rounding, far below the miss of a line
+  // unfolded on the wrong side of a vertex or turned around one (see reaches_origin()).
+  static bool image_at(double ix, double iy, double px, double py, double edge_length)
+  {
+    return (ix - px) * (ix - px) + (iy - py) * (iy - py) <= 1e-12 * (ix * ix + iy * iy + edge_length * edge_length);
   }
 
   // the distance recorded for reached vertex v (0 for a source)
@@ -528,13 +532,10 @@ private:
   bool reaches_origin(Index f, Index o, double sx, double sy, Index origin, std::vector<Trace_point>& out) const
   {
     const Mesh_arrays& m = m_mesh;
-    const Halfedge_geometry& g = m.geometry[o];
-    const double tolerance = 1e-12 * (sx * sx + sy * sy + g.length * g.length);  // (squared)
     if(origin < m.nv)
     {
-      if(m.source[Mesh_arrays::prev(o)] != origin)
-        return false;
-      if(!m_plain && !((sx - g.cx) * (sx - g.cx) + (sy - g.cy) * (sy - g.cy) <= tolerance))
+      const Halfedge_geometry& g = m.geometry[o];
+      if(m.source[Mesh_arrays::prev(o)] != origin || !(m_plain || image_at(sx, sy, g.cx, g.cy, g.length)))
         return false;
       push(out, vertex_point(origin));
       return true;
@@ -552,8 +553,6 @@ private:
     if(!seed_in_face(origin, f))
       return false;
     const Mesh_arrays& m = m_mesh;
-    const Halfedge_geometry& g = m.geometry[o];
-    const double tolerance = 1e-12 * (sx * sx + sy * sy + g.length * g.length);  // (squared)
     // the source point and the image in the frame of the face
     const Seed& s = m_seeds[static_cast<std::size_t>(origin - m.nv)];
     const Face_frame frame(m, f);
@@ -570,7 +569,7 @@ private:
     }
     double ix, iy;
     frame.from_edge_frame(static_cast<int>(o % 3), sx, sy, ix, iy);
-    return (ix - px) * (ix - px) + (iy - py) * (iy - py) <= tolerance;
+    return image_at(ix, iy, px, py, m.geometry[o].length);
   }
 
   // whether the source point `origin` (nv + its index) lies in face f (inside, or on one of its edges)
