@@ -10,11 +10,21 @@
 #ifndef VTP_SUPPORT_METHODS_H
 #define VTP_SUPPORT_METHODS_H
 
-// The table of the package's methods, shared by the command-line tools and the benchmark: each method
-// is one choice of scheduling (sequential or parallel) and of window resets (exact or approximate).
+// The table of the package's methods, shared by the command-line tools, the benchmark and the Python module:
+// each method is one choice of scheduling (sequential or parallel), of front (windows, or virtual sources per
+// vertex) and of window resets (exact or approximate). It is also the one dispatch from a method to a call of
+// the library: with_method() turns a method, its lambda and its threads into the concurrency tag and the named
+// parameters of the call (a new method is one more row of the table, and nothing else).
+
+#include <CGAL/VTP_geodesics/parameters.h>
+
+#include <CGAL/tags.h>
 
 #include <cstddef>
+#include <limits>
+#include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace vtp_support {
 
@@ -78,6 +88,47 @@ inline bool parallel_methods_available()
 }
 
 inline bool method_available(const Method_info& m) { return !m.parallel || parallel_methods_available(); }
+
+// The reset period of the approximate methods when none is given (the library's recommendation).
+constexpr double default_lambda = CGAL::VTP_geodesics::recommended_lambda;
+
+// The named parameters that make the library run `m`: `lambda` (used by the approximate methods only, +inf for
+// the others), `threads` (number_of_threads: the team of a parallel method, the preprocessing's and the batches'
+// threads; 0: OpenMP's default), and the front (virtual sources, and how many per vertex). A call adds its own
+// parameters to the chain (maximum_distance, targets, ...).
+inline auto method_parameters(const Method_info& m, double lambda, int threads)
+{
+  return CGAL::VTP_geodesics::parameters::number_of_threads(threads)
+    .lambda(m.approximate ? lambda : std::numeric_limits<double>::infinity())
+    .virtual_sources(m.virtual_sources)
+    .virtual_sources_per_vertex(m.per_vertex);
+}
+
+// Thrown by with_method() for a parallel method in a program built without OpenMP (clients check
+// method_available() first and say so in their own words; this is the safety net).
+struct Method_unavailable : std::invalid_argument
+{
+  explicit Method_unavailable(const Method_info& m)
+    : std::invalid_argument(std::string("method ") + m.name + " needs OpenMP, and this program was built without it")
+  {}
+};
+
+// The one dispatch: returns call(tag, np), with `tag` the concurrency tag of `m` (CGAL::Sequential_tag or
+// CGAL::Parallel_tag) and `np` its named parameters (method_parameters()). For example
+//   with_method(m, lambda, threads, [&](auto tag, const auto& np) {
+//     solver.template compute<decltype(tag)>(distance_map, np.maximum_distance(r)); });
+template <class Call>
+decltype(auto) with_method(const Method_info& m, double lambda, int threads, Call&& call)
+{
+  const auto np = method_parameters(m, lambda, threads);
+  if(!m.parallel)
+    return std::forward<Call>(call)(CGAL::Sequential_tag(), np);
+#ifdef _OPENMP
+  return std::forward<Call>(call)(CGAL::Parallel_tag(), np);
+#else
+  throw Method_unavailable(m);
+#endif
+}
 
 } // namespace vtp_support
 
