@@ -2,7 +2,8 @@
 # Installs everything needed to build, test and benchmark VTP_geodesics on a fresh Debian 12
 # machine: compiler, CMake, CGAL 5.5 (header-only) and its dependencies, GoogleTest, Python with
 # matplotlib (benchmark plots, and the colour map of the tools, sampled at configure time), cairo, libpng and a
-# font for the tools' pictures, Doxygen for the manual (`doc` target), and for vtp_distance_matrix: HDF5 (the
+# font for the tools' pictures, Doxygen for the manual (`doc` target) and MathJax for its formulas (read offline from
+# /usr/share/javascript/mathjax), and for vtp_distance_matrix: HDF5 (the
 # serial C library: all MPI ranks write the one file through MPI-IO, see apps/vtp_distance_matrix/matrix_store.h),
 # Open MPI, and h5py and SciPy to read its files back in the tests; for the Python module vtp_geodesics: the
 # Python headers, pybind11, pytest, and setuptools, wheel, pip and venv for `pip install --no-build-isolation .`.
@@ -25,6 +26,7 @@ PACKAGES=(
   libcairo2-dev
   fonts-dejavu-core
   doxygen
+  libjs-mathjax
   libhdf5-dev
   libopenmpi-dev
   openmpi-bin
