@@ -9,16 +9,16 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef CGAL_VTP_GEODESICS_INTERNAL_ENGINE_VIRTUAL_SOURCE_FRONT_H
-#define CGAL_VTP_GEODESICS_INTERNAL_ENGINE_VIRTUAL_SOURCE_FRONT_H
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_VIRTUAL_SOURCES_VIRTUAL_SOURCE_FRONT_H
+#define CGAL_VTP_GEODESICS_INTERNAL_VIRTUAL_SOURCES_VIRTUAL_SOURCE_FRONT_H
 
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
-#include <CGAL/VTP_geodesics/internal/engine/Virtual_source_field.h>
-#include <CGAL/VTP_geodesics/internal/engine/Virtual_source_rounds.h>
+#include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_field.h>
+#include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_rounds.h>
 
 #include <CGAL/assertions.h>
 
@@ -147,15 +147,15 @@ public:
   }
 
   // Adds `seed` (label: its seed label) to the field of the previous run_again() (the first one, or the
-  // first after run(), starts from an empty field): farthest-point sampling (Farthest_point_sampler.h). A
-  // vertex is taken only if the new seed lowers it, and the arrays are not set up again, so a run costs
-  // what the region the seed wins costs; the vertices it lowered are then those of touched(). The
-  // vertices not lowered keep their distance, label and virtual source (still the line of a real path:
-  // its root's distance can only have decreased since). With a second virtual source per vertex, a vertex
-  // lowered keeps its former source as its second if the roots differ (demote_first()), and one not lowered
-  // may still get a better second source, which it walks only if a later run takes it. Labels are kept; no
-  // limit, targets (there are none to stop at) nor paths (settings.known_distances must be set). Returns the
-  // number of threads of the team.
+  // first after run(), starts from an empty field): farthest-point sampling
+  // (sampling/Farthest_point_sampler.h). A vertex is taken only if the new seed lowers it, and the arrays
+  // are not set up again, so a run costs what the region the seed wins costs; the vertices it lowered are
+  // then those of touched(). The vertices not lowered keep their distance, label and virtual source (still
+  // the line of a real path: its root's distance can only have decreased since). With a second virtual
+  // source per vertex, a vertex lowered keeps its former source as its second if the roots differ
+  // (demote_first()), and one not lowered may still get a better second source, which it walks only if a
+  // later run takes it. Labels are kept; no limit, targets (there are none to stop at) nor paths
+  // (settings.known_distances must be set). Returns the number of threads of the team.
   int run_again(const Mesh_arrays& m, const std::vector<Seed>& seeds, const Propagation_settings& settings,
                 Propagation_statistics& st, int threads)
   {
@@ -591,4 +591,4 @@ private:
 } // namespace VTP_geodesics
 } // namespace CGAL
 
-#endif // CGAL_VTP_GEODESICS_INTERNAL_ENGINE_VIRTUAL_SOURCE_FRONT_H
+#endif // CGAL_VTP_GEODESICS_INTERNAL_VIRTUAL_SOURCES_VIRTUAL_SOURCE_FRONT_H

@@ -9,13 +9,13 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef CGAL_VTP_GEODESICS_INTERNAL_ENGINE_VIRTUAL_SOURCE_ROUNDS_H
-#define CGAL_VTP_GEODESICS_INTERNAL_ENGINE_VIRTUAL_SOURCE_ROUNDS_H
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_VIRTUAL_SOURCES_VIRTUAL_SOURCE_ROUNDS_H
+#define CGAL_VTP_GEODESICS_INTERNAL_VIRTUAL_SOURCES_VIRTUAL_SOURCE_ROUNDS_H
 
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
-#include <CGAL/VTP_geodesics/internal/engine/Virtual_source_field.h>
+#include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_field.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
 
 #include <algorithm>
@@ -497,4 +497,4 @@ private:
 } // namespace VTP_geodesics
 } // namespace CGAL
 
-#endif // CGAL_VTP_GEODESICS_INTERNAL_ENGINE_VIRTUAL_SOURCE_ROUNDS_H
+#endif // CGAL_VTP_GEODESICS_INTERNAL_VIRTUAL_SOURCES_VIRTUAL_SOURCE_ROUNDS_H
