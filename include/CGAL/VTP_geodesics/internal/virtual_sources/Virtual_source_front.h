@@ -53,7 +53,7 @@ namespace internal {
 // by u on the far side of a vertex that took another line (without them, a line dies as soon as the thin
 // triangle between it and the line of the vertex that should carry it holds a vertex). The order is not
 // monotone (an offer through a virtual source may be smaller than the distance of the vertex making it, by
-// at most two edges: Virtual_source_rounds::reach), and since such offers can follow each other, a vertex
+// at most two edges: Virtual_source_buckets::reach), and since such offers can follow each other, a vertex
 // can be taken rounds after the buckets passed its distance. So a run with a distance limit R takes, once
 // the buckets pass R plus four longest edges, only the vertices offered at most that much (the others wait
 // no more, and an offer that low brings them back): what it gives within R is always the length of a path,
