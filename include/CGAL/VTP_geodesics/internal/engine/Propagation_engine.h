@@ -16,13 +16,14 @@
 
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/engine/Known_vertices.h>
 #include <CGAL/VTP_geodesics/internal/engine/Parallel_loop.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
 #include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
 #include <CGAL/VTP_geodesics/internal/engine/Sequential_loop.h>
 #include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
-#include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_front.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
+#include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_front.h>
 
 #include <CGAL/tags.h>
 
@@ -31,6 +32,7 @@
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -54,12 +56,12 @@ namespace internal {
 class Propagation_engine
 {
 public:
-  // With settings.known_distances, the run starts from `initial` (per vertex, in the engine's unit) and
-  // `initial_labels` (if labels are wanted), see Known_vertices.h.
+  // With settings.known_distances, the run starts from the field `known` (which it takes over), see
+  // Known_vertices.h.
   template <class ConcurrencyTag>
   void run(const Mesh_arrays& m, const std::vector<Seed>& seeds, std::vector<Target>&& targets,
            const Propagation_settings& settings, int requested_threads, Propagation_statistics& statistics,
-           const std::vector<double>* initial = nullptr, const std::vector<Index>* initial_labels = nullptr)
+           Known_field known = Known_field())
   {
     const bool parallel = is_parallel<ConcurrencyTag>();
     const auto t0 = std::chrono::steady_clock::now();
@@ -71,7 +73,7 @@ public:
       m_seeds = seeds;
       statistics = Propagation_statistics();
       const int threads = m_vsp.run(m, m_seeds, std::move(targets), settings, statistics,
-                                    parallel ? number_of_threads(requested_threads) : 0, initial, initial_labels);
+                                    parallel ? number_of_threads(requested_threads) : 0, std::move(known));
       statistics.method = std::string(parallel ? "pvsp" : "vsp") + (settings.second_virtual_source ? "2" : "");
       statistics.threads = threads;
       statistics.vertices = static_cast<std::size_t>(m.nv);
@@ -90,12 +92,7 @@ public:
     m_seeds = seeds;
     m_state.start(m, settings, static_cast<std::size_t>(threads), std::move(targets));
     if(settings.known_distances)
-    {
-      CGAL_precondition(initial != nullptr && initial->size() == m_state.dist.size());
-      m_state.dist = *initial;
-      if(settings.want_labels && initial_labels != nullptr)
-        m_state.label = *initial_labels;
-    }
+      known.move_into(m_state.dist, m_state.label, settings.want_labels);
     threads = propagate(parallel, threads);
     apply_cutoff();
     if(settings.unit != 1.)

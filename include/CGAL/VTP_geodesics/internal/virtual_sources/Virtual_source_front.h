@@ -16,6 +16,7 @@
 
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/engine/Known_vertices.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
 #include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_field.h>
 #include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_rounds.h>
@@ -69,13 +70,12 @@ namespace internal {
 class Virtual_source_front : public Virtual_source_walks
 {
 public:
-  // With settings.known_distances, `initial` (and `initial_labels`) give the starting field (see
-  // Propagation_state): a known vertex is not taken unless the new sources lower it.
+  // With settings.known_distances, the run starts from the field `known` (which it takes over, see
+  // Known_vertices.h): a known vertex is not taken unless the new sources lower it.
   // On `threads` threads (VSP: 1; PVSP: any number, the same distances, see Virtual_source_rounds.h).
   // Returns the number of threads of the team.
   int run(const Mesh_arrays& m, const std::vector<Seed>& seeds, std::vector<Target>&& targets,
-          const Propagation_settings& settings, Propagation_statistics& st, int threads,
-          const std::vector<double>* initial = nullptr, const std::vector<Index>* initial_labels = nullptr)
+          const Propagation_settings& settings, Propagation_statistics& st, int threads, Known_field&& known)
   {
     m_mesh = &m;
     m_seeds = &seeds;
@@ -94,10 +94,7 @@ public:
       label.clear();
     if(settings.known_distances)
     {
-      CGAL_precondition(initial != nullptr && initial->size() == nv);
-      dist = *initial;
-      if(settings.want_labels && initial_labels != nullptr)
-        label = *initial_labels;
+      known.move_into(dist, label, settings.want_labels);
       if(settings.second_virtual_source)
         for(std::size_t v = 0; v < nv; ++v)
           m_src[v].h = NO_INDEX;  // a known distance is not a virtual source (demote_first())
