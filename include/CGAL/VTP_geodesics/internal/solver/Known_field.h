@@ -39,10 +39,11 @@ namespace internal {
 // first_source_label), read from the maps of the user into the engine's unit (Known_field, per vertex index:
 // engine/Known_vertices.h) and validated.
 
+// (without initial_nearest_sources, the known distances have no label)
 template <class MeshIndex>
-void read_known_labels(const MeshIndex&, CGAL::internal_np::Param_not_found, std::vector<Index>& labels)
+void read_known_labels(const MeshIndex& mesh, CGAL::internal_np::Param_not_found, std::vector<Index>& labels)
 {
-  labels.clear();
+  labels.assign(mesh.vertices.size(), NO_INDEX);
 }
 
 // (read in the order of vertices(tm), so that an error names the first bad vertex in that order)
@@ -120,11 +121,7 @@ Known_field known_field_of(const NamedParameters& np, const MeshIndex& mesh, dou
                               "record_paths");
   settings.known_distances = true;
   if(settings.want_labels)
-  {
     read_known_labels(mesh, get_parameter(np, internal_np::initial_nearest_sources), field.labels);
-    if(field.labels.empty())
-      field.labels.assign(mesh.vertices.size(), NO_INDEX);
-  }
   return field;
 }
 
