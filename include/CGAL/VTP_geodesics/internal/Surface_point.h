@@ -22,7 +22,7 @@ namespace internal {
 
 // A point of the surface, in the terms of the mesh arrays: a vertex, a point of an edge, or a point inside a
 // face. The sources of a propagation (Seed, engine/Seeding.h) and the points of a path (Trace_point,
-// engine/Path_trace.h) are such points.
+// engine/Path_trace_ends.h) are such points.
 struct Surface_point
 {
   enum Kind { AT_VERTEX, ON_EDGE, IN_FACE };
