@@ -171,37 +171,36 @@ protected:
   {
     const Mesh_arrays& m = *m_mesh;
     const Index degree = m.corner_begin[u + 1] - m.corner_begin[u];
-    Index h = s.h;
-    Halfedge_geometry g = m.geometry[h];  // u at the origin, B = (length, 0), C = (cx, cy)
+    Halfedge_geometry g = m.geometry[s.h];  // u at the origin, B = (length, 0), C = (cx, cy)
     for(Index step = 0; step < 2 * degree + 2; ++step)
     {
-      h = counterclockwise ? cross_counterclockwise(h, s, g) : cross_clockwise(h, s, g);
-      if(h == NO_INDEX)
+      if(!(counterclockwise ? cross_counterclockwise(s, g) : cross_clockwise(s, g)))
         return;
-      reach_third_vertex(s, g, counterclockwise ? Mesh_arrays::prev(h) : Mesh_arrays::next(h), sigma, lab, sink);
+      reach_third_vertex(s, g, counterclockwise ? Mesh_arrays::prev(s.h) : Mesh_arrays::next(s.h), sigma, lab,
+                         sink);
       reach_beyond(s, g, sigma, lab, sink);
     }
   }
 
-  // One step of the counter-clockwise walk: the line of s (frame of h = s.h, geometry g: u at the origin, B =
-  // (length, 0), C = (cx, cy)) goes on across u-C into the face after, whose half-edge from u it returns (s
-  // and g are then in its frame), or NO_INDEX if it cannot.
-  Index cross_counterclockwise(Index h, Vertex_source& s, Halfedge_geometry& g) const
+  // One step of the counter-clockwise walk: the line of s (frame of s.h, geometry g: u at the origin, B =
+  // (length, 0), C = (cx, cy)) goes on across u-C into the face after, whose frame and geometry s and g then
+  // are; false if it cannot.
+  bool cross_counterclockwise(Vertex_source& s, Halfedge_geometry& g) const
   {
     const Mesh_arrays& m = *m_mesh;
-    const Index p = Mesh_arrays::prev(h);
+    const Index p = Mesh_arrays::prev(s.h);
     const Index o = m.opposite[p];
     if(o == NO_INDEX || !(g.l_prev > 0.))
-      return NO_INDEX;
+      return false;
     const Index c = m.source[p];
     if(c != s.root)
     {
       // the line goes on across u-C only if the image is strictly on the side of the face it leaves
       if(!(cross(g.cx, g.cy, s.sx, s.sy) < 0.))
-        return NO_INDEX;
+        return false;
       double t0, t1;
       if(!clip(s, g.cx, g.cy, t0, t1))
-        return NO_INDEX;
+        return false;
       const double lx = t0 * g.cx - s.sx, ly = t0 * g.cy - s.sy;
       const double rx = t1 * g.cx - s.sx, ry = t1 * g.cy - s.sy;
       // rotate by minus the angle of C
@@ -211,7 +210,7 @@ protected:
       s.rx = rx; s.ry = ry; rotate(co, -si, s.rx, s.ry);
     }
     if(m.is_degenerate_face[static_cast<std::size_t>(Mesh_arrays::face(o))])
-      return NO_INDEX;  // (a line never enters a face of zero area)
+      return false;  // (a line never enters a face of zero area)
     const Halfedge_geometry go = m.geometry[o];  // u at the origin, C = (length, 0), D = (cx, cy)
     if(c == s.root)
     {
@@ -221,28 +220,28 @@ protected:
     }
     s.h = o;
     g = go;
-    return o;
+    return true;
   }
 
-  // One step of the clockwise walk: the line of s (frame of h = s.h, geometry g) goes on across u-B into the
-  // face before, whose half-edge from u it returns (s and g are then in its frame), or NO_INDEX if it cannot.
-  Index cross_clockwise(Index h, Vertex_source& s, Halfedge_geometry& g) const
+  // One step of the clockwise walk: the line of s (frame of s.h, geometry g) goes on across u-B into the
+  // face before, whose frame and geometry s and g then are; false if it cannot.
+  bool cross_clockwise(Vertex_source& s, Halfedge_geometry& g) const
   {
     const Mesh_arrays& m = *m_mesh;
-    const Index o = m.opposite[h];
+    const Index o = m.opposite[s.h];
     if(o == NO_INDEX)
-      return NO_INDEX;
+      return false;
     const Index hg = Mesh_arrays::next(o);
     const Index b = m.source[o];
     // the line goes on across u-B only if the image is strictly above it (the side of the face it leaves)
     double t0 = 0., t1 = 1.;
     if(b != s.root && (!(s.sy > 0.) || !clip(s, g.length, 0., t0, t1)))
-      return NO_INDEX;
+      return false;
     if(m.is_degenerate_face[static_cast<std::size_t>(Mesh_arrays::face(o))])
-      return NO_INDEX;  // (a line never enters a face of zero area)
+      return false;  // (a line never enters a face of zero area)
     const Halfedge_geometry gg = m.geometry[hg];  // u at the origin, E = (length, 0), B = (cx, cy)
     if(!(gg.l_prev > 0.))
-      return NO_INDEX;
+      return false;
     if(b == s.root)
     {
       s.sx = gg.cx; s.sy = gg.cy;
@@ -260,7 +259,7 @@ protected:
     }
     s.h = hg;
     g = gg;
-    return hg;
+    return true;
   }
 
   // s is in the frame of s.h (geometry g); the vertex y = source(hy) is the third vertex (cx, cy) when hy is
