@@ -399,10 +399,10 @@ private:
       throw Invalid_input_error("no source");
     int threads = 0;
     internal::Propagation_settings settings = internal::settings_from_parameters(np, m_mesh, threads);
-    const internal::Known_field known = internal::known_field_of(np, m_mesh, m_mesh.length_scale, settings, seeds);
+    internal::Known_field known = internal::known_field_of(np, m_mesh, m_mesh.length_scale, settings, seeds);
     std::vector<internal::Target> targets = m_mesh.targets_of(CGAL::parameters::get_parameter(np, internal_np::targets));
     m_engine.template run<ConcurrencyTag>(m_mesh.arrays, seeds, std::move(targets), settings, threads, m_statistics,
-                                          &known.distances, &known.labels);
+                                          std::move(known));
     m_mesh.to_positions(m_engine.distances(), m_distances);
     m_paths.remember(settings, internal::is_parallel<ConcurrencyTag>(), threads);
     m_statistics.sources = seeds.size();

@@ -37,27 +37,24 @@ constexpr double recommended_lambda = 8.;
 constexpr std::size_t no_source = (std::numeric_limits<std::size_t>::max)();
 
 /// \cond SKIP_IN_MANUAL
+// The names of the named parameters of this package, listed once: X(NAME) for each, whose tag is
+// internal_np::NAME_t (but `statistics`, whose link takes a reference and keeps a pointer: see below).
+#define CGAL_VTP_GEODESICS_FOR_EACH_NAMED_PARAMETER(X)                                                   \
+  X(lambda) X(lambda_g) X(number_of_threads) X(minimum_window_length) X(nearest_source_map)              \
+  X(maximum_distance) X(targets) X(stop_at_targets) X(record_paths) X(virtual_sources)                   \
+  X(virtual_sources_per_vertex) X(initial_distances) X(initial_nearest_sources) X(first_source_label)    \
+  X(first_sample) X(sampling_radius) X(covering_radii) X(vertex_distance_map)
+
+// The names of CGAL's named parameters that a chain of this package can hold: X(NAME, TAG_TYPE).
+#define CGAL_VTP_GEODESICS_FOR_EACH_CGAL_NAMED_PARAMETER(X)                                              \
+  X(vertex_point_map, CGAL::internal_np::vertex_point_t) X(geom_traits, CGAL::internal_np::geom_traits_t)
+
 namespace internal_np {
 
-enum lambda_t { lambda };
-enum lambda_g_t { lambda_g };
-enum number_of_threads_t { number_of_threads };
-enum minimum_window_length_t { minimum_window_length };
-enum nearest_source_map_t { nearest_source_map };
+#define CGAL_VTP_GEODESICS_TAG(NAME) enum NAME##_t { NAME };
+CGAL_VTP_GEODESICS_FOR_EACH_NAMED_PARAMETER(CGAL_VTP_GEODESICS_TAG)
+#undef CGAL_VTP_GEODESICS_TAG
 enum statistics_t { statistics };
-enum maximum_distance_t { maximum_distance };
-enum targets_t { targets };
-enum stop_at_targets_t { stop_at_targets };
-enum record_paths_t { record_paths };
-enum virtual_sources_t { virtual_sources };
-enum virtual_sources_per_vertex_t { virtual_sources_per_vertex };
-enum initial_distances_t { initial_distances };
-enum initial_nearest_sources_t { initial_nearest_sources };
-enum first_source_label_t { first_source_label };
-enum first_sample_t { first_sample };
-enum sampling_radius_t { sampling_radius };
-enum covering_radii_t { covering_radii };
-enum vertex_distance_map_t { vertex_distance_map };
 
 } // namespace internal_np
 
@@ -82,26 +79,10 @@ struct Named_parameters
   {                                                                       \
     return Named_parameters<K, TAG_TYPE, self>(k, *this);                 \
   }
-  CGAL_VTP_GEODESICS_LINK(lambda, internal_np::lambda_t)
-  CGAL_VTP_GEODESICS_LINK(lambda_g, internal_np::lambda_g_t)
-  CGAL_VTP_GEODESICS_LINK(number_of_threads, internal_np::number_of_threads_t)
-  CGAL_VTP_GEODESICS_LINK(minimum_window_length, internal_np::minimum_window_length_t)
-  CGAL_VTP_GEODESICS_LINK(nearest_source_map, internal_np::nearest_source_map_t)
-  CGAL_VTP_GEODESICS_LINK(maximum_distance, internal_np::maximum_distance_t)
-  CGAL_VTP_GEODESICS_LINK(targets, internal_np::targets_t)
-  CGAL_VTP_GEODESICS_LINK(stop_at_targets, internal_np::stop_at_targets_t)
-  CGAL_VTP_GEODESICS_LINK(record_paths, internal_np::record_paths_t)
-  CGAL_VTP_GEODESICS_LINK(virtual_sources, internal_np::virtual_sources_t)
-  CGAL_VTP_GEODESICS_LINK(virtual_sources_per_vertex, internal_np::virtual_sources_per_vertex_t)
-  CGAL_VTP_GEODESICS_LINK(initial_distances, internal_np::initial_distances_t)
-  CGAL_VTP_GEODESICS_LINK(initial_nearest_sources, internal_np::initial_nearest_sources_t)
-  CGAL_VTP_GEODESICS_LINK(first_source_label, internal_np::first_source_label_t)
-  CGAL_VTP_GEODESICS_LINK(first_sample, internal_np::first_sample_t)
-  CGAL_VTP_GEODESICS_LINK(sampling_radius, internal_np::sampling_radius_t)
-  CGAL_VTP_GEODESICS_LINK(covering_radii, internal_np::covering_radii_t)
-  CGAL_VTP_GEODESICS_LINK(vertex_distance_map, internal_np::vertex_distance_map_t)
-  CGAL_VTP_GEODESICS_LINK(vertex_point_map, CGAL::internal_np::vertex_point_t)
-  CGAL_VTP_GEODESICS_LINK(geom_traits, CGAL::internal_np::geom_traits_t)
+#define CGAL_VTP_GEODESICS_PACKAGE_LINK(NAME) CGAL_VTP_GEODESICS_LINK(NAME, internal_np::NAME##_t)
+  CGAL_VTP_GEODESICS_FOR_EACH_NAMED_PARAMETER(CGAL_VTP_GEODESICS_PACKAGE_LINK)
+  CGAL_VTP_GEODESICS_FOR_EACH_CGAL_NAMED_PARAMETER(CGAL_VTP_GEODESICS_LINK)
+#undef CGAL_VTP_GEODESICS_PACKAGE_LINK
 #undef CGAL_VTP_GEODESICS_LINK
 
   Named_parameters<Propagation_statistics*, internal_np::statistics_t, self>
@@ -127,26 +108,10 @@ namespace parameters {
   {                                                                       \
     return Named_parameters<K, TAG_TYPE>(k);                              \
   }
-CGAL_VTP_GEODESICS_FIRST_LINK(lambda, internal_np::lambda_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(lambda_g, internal_np::lambda_g_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(number_of_threads, internal_np::number_of_threads_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(minimum_window_length, internal_np::minimum_window_length_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(nearest_source_map, internal_np::nearest_source_map_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(maximum_distance, internal_np::maximum_distance_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(targets, internal_np::targets_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(stop_at_targets, internal_np::stop_at_targets_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(record_paths, internal_np::record_paths_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(virtual_sources, internal_np::virtual_sources_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(virtual_sources_per_vertex, internal_np::virtual_sources_per_vertex_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(initial_distances, internal_np::initial_distances_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(initial_nearest_sources, internal_np::initial_nearest_sources_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(first_source_label, internal_np::first_source_label_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(first_sample, internal_np::first_sample_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(sampling_radius, internal_np::sampling_radius_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(covering_radii, internal_np::covering_radii_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(vertex_distance_map, internal_np::vertex_distance_map_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(vertex_point_map, CGAL::internal_np::vertex_point_t)
-CGAL_VTP_GEODESICS_FIRST_LINK(geom_traits, CGAL::internal_np::geom_traits_t)
+#define CGAL_VTP_GEODESICS_PACKAGE_FIRST_LINK(NAME) CGAL_VTP_GEODESICS_FIRST_LINK(NAME, internal_np::NAME##_t)
+CGAL_VTP_GEODESICS_FOR_EACH_NAMED_PARAMETER(CGAL_VTP_GEODESICS_PACKAGE_FIRST_LINK)
+CGAL_VTP_GEODESICS_FOR_EACH_CGAL_NAMED_PARAMETER(CGAL_VTP_GEODESICS_FIRST_LINK)
+#undef CGAL_VTP_GEODESICS_PACKAGE_FIRST_LINK
 #undef CGAL_VTP_GEODESICS_FIRST_LINK
 
 inline Named_parameters<Propagation_statistics*, internal_np::statistics_t>
@@ -156,6 +121,9 @@ statistics(Propagation_statistics& s)
 }
 
 using CGAL::parameters::default_values;
+
+#undef CGAL_VTP_GEODESICS_FOR_EACH_NAMED_PARAMETER
+#undef CGAL_VTP_GEODESICS_FOR_EACH_CGAL_NAMED_PARAMETER
 /// \endcond
 
 } // namespace parameters

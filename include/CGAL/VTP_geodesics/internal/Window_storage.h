@@ -57,11 +57,10 @@ public:
     m_pools.clear();
     m_pools.resize(number_of_pools);
     m_peak_live = 0;
-    m_peak_blocks = 0;
   }
 
   // Starts another run when every list is empty (the previous run consumed them all): O(pools), the blocks
-  // are kept for reuse; the peaks start again.
+  // are kept for reuse; the peak starts again.
   void restart(std::size_t number_of_pools)
   {
     CGAL_precondition(number_of_pools >= 1 && number_of_pools <= MAX_POOLS);
@@ -75,7 +74,6 @@ public:
       m_pools.resize(number_of_pools);
     }
     m_peak_live = 0;
-    m_peak_blocks = 0;
   }
 
   std::size_t number_of_pools() const { return m_pools.size(); }
@@ -183,25 +181,19 @@ public:
       }
   }
 
-  // Number of windows alive; records the peaks. The sequential scheduling calls it after every
-  // list, the parallel one after every round (its peaks are sampled at round boundaries).
+  // Number of windows alive; records the peak. The sequential scheduling calls it after every
+  // list, the parallel one after every round (its peak is sampled at round boundaries).
   std::size_t update_peaks()
   {
-    long long live = 0, blocks = 0;
+    long long live = 0;
     for(const Pool& p : m_pools)
-    {
       live += p.live;
-      blocks += p.in_use;
-    }
     if(live > static_cast<long long>(m_peak_live))
       m_peak_live = static_cast<std::size_t>(live);
-    if(blocks > static_cast<long long>(m_peak_blocks))
-      m_peak_blocks = static_cast<std::size_t>(blocks);
     return static_cast<std::size_t>(live);
   }
 
   std::size_t peak_live_windows() const { return m_peak_live; }
-  std::size_t peak_blocks() const { return m_peak_blocks; }
   // bytes held by the pools (whole slabs), i.e. the peak of this run since pools never shrink
   std::size_t peak_bytes() const
   {
@@ -299,7 +291,7 @@ private:
 
   std::vector<Pool> m_pools;
   std::vector<Index> m_head;   // per half-edge: the first block of its list
-  std::size_t m_peak_live = 0, m_peak_blocks = 0;
+  std::size_t m_peak_live = 0;
 };
 
 } // namespace internal

@@ -9,7 +9,6 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-
 #ifndef CGAL_VTP_GEODESICS_INTERNAL_ENGINE_KNOWN_VERTICES_H
 #define CGAL_VTP_GEODESICS_INTERNAL_ENGINE_KNOWN_VERTICES_H
 
@@ -17,13 +16,38 @@
 
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
 
+#include <CGAL/assertions.h>
+
 #include <cstddef>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace VTP_geodesics {
 namespace internal {
+
+// The field a run from known distances (Propagation_settings::known_distances) starts from, per vertex: the
+// distances, in the engine's unit, upper bounds realised by real paths (the field of earlier sources), and
+// their labels if labels are wanted (solver/Known_field.h reads them from the named parameters
+// initial_distances and initial_nearest_sources). Both fronts, the windows and the virtual sources, start
+// from it (move_into()).
+struct Known_field
+{
+  std::vector<double> distances;
+  std::vector<Index> labels;
+
+  // The per-vertex arrays of a run, `dist` and (if `want_labels`) `label`, of the size of the field, take
+  // its values over (the field is then moved from).
+  void move_into(std::vector<double>& dist, std::vector<Index>& label, bool want_labels)
+  {
+    CGAL_precondition(distances.size() == dist.size());
+    CGAL_precondition(!want_labels || labels.size() == label.size());
+    dist = std::move(distances);
+    if(want_labels)
+      label = std::move(labels);
+  }
+};
 
 // The vertices of a run from known distances (Propagation_settings::known_distances), for Propagation_state.
 //

@@ -18,6 +18,7 @@
 #include <CGAL/VTP_geodesics/internal/Window_storage.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Stealing_ranges.h>
+#include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Round_team.h>
 
 #include <CGAL/assertions.h>
@@ -27,10 +28,6 @@
 #include <cstddef>
 #include <limits>
 #include <vector>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace CGAL {
 namespace VTP_geodesics {
@@ -83,27 +80,18 @@ public:
     selection_seconds = propagation_seconds = merge_seconds = 0.;
     rounds = parallel_rounds = 0;
 
-#ifdef _OPENMP
-#pragma omp parallel num_threads(threads) if(threads > 1)
-#endif
-    {
-      int t = 0;
-#ifdef _OPENMP
-      t = omp_get_thread_num();
-      // the runtime may give fewer threads than asked for: the team is what we got
-#pragma omp single
-      {
-        m_threads = omp_get_num_threads();
-        m_sync.reset(m_threads);
-      }
-#else
-      m_sync.reset(1);
-#endif
-      if(t == 0)
-        master();
-      else
-        worker(t);
-    }
+    // (the runtime may give fewer threads than asked for: the team is what we got)
+    run_team(threads,
+             [&](int team) {
+               m_threads = team;
+               m_sync.reset(team);
+             },
+             [&](int t) {
+               if(t == 0)
+                 master();
+               else
+                 worker(t);
+             });
     for(Propagation_scratch& s : m_scratch)
     {
       st.propagated += s.propagated;

@@ -16,13 +16,14 @@
 
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/engine/Known_vertices.h>
 #include <CGAL/VTP_geodesics/internal/engine/Parallel_loop.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
 #include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
 #include <CGAL/VTP_geodesics/internal/engine/Sequential_loop.h>
 #include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
-#include <CGAL/VTP_geodesics/internal/engine/Virtual_source_front.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
+#include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_front.h>
 
 #include <CGAL/tags.h>
 
@@ -31,6 +32,7 @@
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -43,59 +45,35 @@ namespace internal {
 // | Sequential_tag: vertex heap          | VTP                 | AVTP                 |
 // | Parallel_tag: buckets, K lists, T th.| PVTP                | PAVTP                |
 //
-// (A front of another kind, one virtual source per vertex, is a third row: its own loop,
-// Virtual_source_front.h, on its own per-vertex field, Virtual_source_field.h. A start from known distances
-// is another seeding: the state starts from the known field and wakes the known vertices that new windows
-// reach, Known_vertices.h; farthest-point sampling, above the engine, adds one sample at a time that way,
-// sampling/Farthest_point_sampler.h.)
+// (A front of another kind, one virtual source per vertex, is a third row: its own loop and per-vertex
+// field, virtual_sources/. A start from known distances is another seeding: the state starts from the known
+// field and wakes the known vertices that new windows reach, Known_vertices.h.) This file wires them.
 //
-// Where each concept lives (internal/ and internal/engine/):
-//   the window and its geometry (evaluation, ray crossing, bounds)  Window.h
-//   the frame of a face (points of faces, edge frames)              Face_frame.h
-//   a list crossing a triangle (Rule 1, children)                   Triangle_propagation.h
-//   filtering a list (vertex trimming, tiny windows)                List_filter.h
-//   pairwise pruning of the windows of a list (Rule 2)              Pair_pruning.h
-//   the window lists per half-edge (blocks, pools)                  Window_storage.h
-//   sources -> seeds, and the start of a propagation                engine/Seeding.h
-//   targets (vertices, points of faces)                             engine/Targets.h
-//   data of a propagation (distances, lists, schedule), its start   engine/Propagation_data.h
-//   shared steps (light, emit, sweep, propagate one list)           engine/Propagation_state.h
-//   schedules (heap, buckets)                                       engine/Vertex_schedule.h
-//   loops                                  engine/Sequential_loop.h, engine/Parallel_loop.h
-//   reset policy (AVTP / PAVTP)                                     engine/Window_reset.h
-//   runs from known distances (flags, waking known vertices)        engine/Known_vertices.h
-//   stop rule (distance limit, targets), a hook                     engine/Stop_rule.h
-//   path recording (offers per vertex and target), a hook           engine/Path_record.h
-//   path trace-back                                                 engine/Path_trace.h
-//   virtual sources: per-vertex field, seeding, wedge geometry      engine/Virtual_source_field.h
-//   virtual sources: the propagation (heap, walks around a vertex)  engine/Virtual_source_front.h
-//   virtual sources in rounds on threads (PVSP)                     engine/Virtual_source_rounds.h
-//   threads: thread count, parallel_for (preprocessing, rows)       parallel/Parallel_for.h
-//   threads of the parallel loop                  parallel/Round_team.h, parallel/Stealing_ranges.h
+// The map of which file holds what: the manual's File map page, doc/VTP_geodesics/file_map.txt.
 //
 // An engine is a workspace: it reads the mesh arrays (shared, read-only) and owns everything one
 // propagation writes, so that several engines can run on one mesh at the same time.
 class Propagation_engine
 {
 public:
-  // With settings.known_distances, the run starts from `initial` (per vertex, in the engine's unit) and
-  // `initial_labels` (if labels are wanted), see Known_vertices.h.
+  // With settings.known_distances, the run starts from the field `known` (which it takes over), see
+  // Known_vertices.h.
   template <class ConcurrencyTag>
   void run(const Mesh_arrays& m, const std::vector<Seed>& seeds, std::vector<Target>&& targets,
            const Propagation_settings& settings, int requested_threads, Propagation_statistics& statistics,
-           const std::vector<double>* initial = nullptr, const std::vector<Index>* initial_labels = nullptr)
+           Known_field known = Known_field())
   {
     const bool parallel = is_parallel<ConcurrencyTag>();
     const auto t0 = std::chrono::steady_clock::now();
     m_virtual_sources = settings.virtual_sources;
     if(m_virtual_sources)
     {
-      // one virtual source per vertex (Virtual_source_front.h); the parallel tag runs it in rounds
-      // (Virtual_source_rounds.h)
+      // one virtual source per vertex (virtual_sources/Virtual_source_front.h); the parallel tag runs it in
+      // rounds (virtual_sources/Virtual_source_rounds.h)
       m_seeds = seeds;
       statistics = Propagation_statistics();
       const int threads = m_vsp.run(m, m_seeds, std::move(targets), settings, statistics,
-                                    parallel ? number_of_threads(requested_threads) : 0, initial, initial_labels);
+                                    parallel ? number_of_threads(requested_threads) : 0, std::move(known));
       statistics.method = std::string(parallel ? "pvsp" : "vsp") + (settings.second_virtual_source ? "2" : "");
       statistics.threads = threads;
       statistics.vertices = static_cast<std::size_t>(m.nv);
@@ -114,12 +92,7 @@ public:
     m_seeds = seeds;
     m_state.start(m, settings, static_cast<std::size_t>(threads), std::move(targets));
     if(settings.known_distances)
-    {
-      CGAL_precondition(initial != nullptr && initial->size() == m_state.dist.size());
-      m_state.dist = *initial;
-      if(settings.want_labels && initial_labels != nullptr)
-        m_state.label = *initial_labels;
-    }
+      known.move_into(m_state.dist, m_state.label, settings.want_labels);
     threads = propagate(parallel, threads);
     apply_cutoff();
     if(settings.unit != 1.)

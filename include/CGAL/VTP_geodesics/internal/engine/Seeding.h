@@ -16,6 +16,7 @@
 
 #include <CGAL/VTP_geodesics/internal/Face_frame.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/Surface_point.h>
 #include <CGAL/VTP_geodesics/internal/Window.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
 
@@ -30,12 +31,8 @@ namespace internal {
 
 // A source of the propagation, at distance 0: a vertex, a point inside an edge, or a point inside a face.
 // `label` is the index of the source in the user's list (the nearest-source label it gives).
-struct Seed
+struct Seed : Surface_point
 {
-  enum Kind { AT_VERTEX, ON_EDGE, IN_FACE };
-  Kind kind = AT_VERTEX;
-  Index element = NO_INDEX;  // AT_VERTEX: the vertex; ON_EDGE: a half-edge of the edge; IN_FACE: the face
-  double x = 0., y = 0.;     // ON_EDGE: abscissa on the half-edge; IN_FACE: the point in the frame of 3f
   Index label = 0;
 };
 

@@ -65,8 +65,6 @@ public:
     m_pushed_beyond = m_pushed_within = 0;
   }
 
-  bool uses_buckets() const { return m_buckets_mode; }
-
   void push(Index v, double value)
   {
     if(!m_buckets_mode)

@@ -29,9 +29,9 @@ namespace CGAL {
 namespace VTP_geodesics {
 namespace internal {
 
-// The threading of the library outside the parallel propagation (which has its own team, see
-// engine/Parallel_loop.h): the preprocessing of the solver and of the mesh arrays, and the rows of
-// compute_each(). The propagation takes its number of threads from number_of_threads() too.
+// The threading of the library: the preprocessing of the solver and of the mesh arrays, and the rows of
+// compute_each() (Parallel_for); the team of a parallel propagation (run_team(), whose rounds the engine
+// schedules itself). The propagation takes its number of threads from number_of_threads() too.
 
 // Whether `ConcurrencyTag` asks for the parallel variants; Parallel_tag needs OpenMP.
 template <class ConcurrencyTag>
@@ -107,6 +107,33 @@ private:
   std::atomic<bool> m_failed{ false };
   std::exception_ptr m_error;  // written in the critical section only
 };
+
+// Runs body(t) on each thread t of a team of `threads` OpenMP threads (on the calling thread alone, t = 0, when
+// threads <= 1 or without OpenMP), after start(team) on one of them, which the others wait for: `team` is the
+// number of threads the runtime gave (it may give fewer than asked for). Returns it. The team of a whole
+// propagation (engine/Parallel_loop.h, virtual_sources/Virtual_source_rounds.h): start and body must not
+// throw (an exception cannot leave an OpenMP region: see Exception_capture).
+template <class Start, class Body>
+int run_team(int threads, const Start& start, const Body& body)
+{
+  int team = 1;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads) if(threads > 1)
+  {
+#pragma omp single
+    {
+      team = omp_get_num_threads();
+      start(team);
+    }
+    body(omp_get_thread_num());
+  }
+#else
+  (void)threads;
+  start(team);
+  body(0);
+#endif
+  return team;
+}
 
 // A loop whose iterations are shared among `threads` OpenMP threads (on the calling thread alone when
 // threads <= 1 or without OpenMP). An exception cannot leave an OpenMP region: one thrown by an

@@ -17,6 +17,7 @@
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/engine/Known_vertices.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
 #include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
 
@@ -35,18 +36,14 @@ namespace VTP_geodesics {
 namespace internal {
 
 // The field a computation starts from (named parameters initial_distances, initial_nearest_sources and
-// first_source_label), read from the maps of the user into the engine's unit and validated.
-struct Known_field
-{
-  bool active = false;
-  std::vector<double> distances;  // per vertex index, in the engine's unit
-  std::vector<Index> labels;      // per vertex index (if labels are wanted)
-};
+// first_source_label), read from the maps of the user into the engine's unit (Known_field, per vertex index:
+// engine/Known_vertices.h) and validated.
 
+// (without initial_nearest_sources, the known distances have no label)
 template <class MeshIndex>
-void read_known_labels(const MeshIndex&, CGAL::internal_np::Param_not_found, std::vector<Index>& labels)
+void read_known_labels(const MeshIndex& mesh, CGAL::internal_np::Param_not_found, std::vector<Index>& labels)
 {
-  labels.clear();
+  labels.assign(mesh.vertices.size(), NO_INDEX);
 }
 
 // (read in the order of vertices(tm), so that an error names the first bad vertex in that order)
@@ -69,17 +66,20 @@ void read_known_labels(const MeshIndex& mesh, VertexSourceMap vsm, std::vector<I
   }
 }
 
+// (returns whether there are known distances)
 template <class MeshIndex>
-void read_known_distances(const MeshIndex&, double, CGAL::internal_np::Param_not_found, Known_field&)
-{}
+bool read_known_distances(const MeshIndex&, double, CGAL::internal_np::Param_not_found, std::vector<double>&)
+{
+  return false;
+}
 
 // (read in the order of vertices(tm), so that an error names the first bad vertex in that order)
 template <class MeshIndex, class VertexDistanceMap>
-void read_known_distances(const MeshIndex& mesh, double length_scale, VertexDistanceMap vdm, Known_field& field)
+bool read_known_distances(const MeshIndex& mesh, double length_scale, VertexDistanceMap vdm,
+                          std::vector<double>& distances)
 {
-  field.active = true;
-  field.distances.resize(mesh.vertices_in_order.size());
-  for(std::size_t i = 0; i < field.distances.size(); ++i)
+  distances.resize(mesh.vertices_in_order.size());
+  for(std::size_t i = 0; i < distances.size(); ++i)
   {
     const auto v = mesh.vertices_in_order[i];
     const double d = static_cast<double>(get(vdm, v));
@@ -87,8 +87,9 @@ void read_known_distances(const MeshIndex& mesh, double length_scale, VertexDist
       throw Invalid_input_error("the initial distance of vertex " + std::to_string(i) + " is "
                                 + (std::isnan(d) ? std::string("NaN") : std::to_string(d))
                                 + " (it must be >= 0, +infinity for none)");
-    field.distances[static_cast<std::size_t>(get(mesh.vertex_id, v))] = d / length_scale;
+    distances[static_cast<std::size_t>(get(mesh.vertex_id, v))] = d / length_scale;
   }
+  return true;
 }
 
 // Reads the known field of `np` (if any) for a run with `settings` (which it marks), and numbers the labels
@@ -102,16 +103,17 @@ Known_field known_field_of(const NamedParameters& np, const MeshIndex& mesh, dou
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
   Known_field field;
-  read_known_distances(mesh, length_scale, get_parameter(np, internal_np::initial_distances), field);
+  const bool known =
+      read_known_distances(mesh, length_scale, get_parameter(np, internal_np::initial_distances), field.distances);
   const bool has_labels = !is_default_parameter<NamedParameters, internal_np::initial_nearest_sources_t>::value;
   const std::size_t first = choose_parameter(get_parameter(np, internal_np::first_source_label), std::size_t(0));
-  if(!field.active && (has_labels || first != 0))
+  if(!known && (has_labels || first != 0))
     throw Invalid_input_error("initial_nearest_sources and first_source_label need initial_distances");
   if(first > static_cast<std::size_t>((std::numeric_limits<Index>::max)()) - seeds.size())
     throw Invalid_input_error("first_source_label is too large (" + std::to_string(first) + ")");
   for(Seed& s : seeds)
     s.label += static_cast<Index>(first);
-  if(!field.active)
+  if(!known)
     return field;
   if(settings.limit < std::numeric_limits<double>::infinity() || settings.record_paths
      || !is_default_parameter<NamedParameters, internal_np::targets_t>::value)
@@ -119,11 +121,7 @@ Known_field known_field_of(const NamedParameters& np, const MeshIndex& mesh, dou
                               "record_paths");
   settings.known_distances = true;
   if(settings.want_labels)
-  {
     read_known_labels(mesh, get_parameter(np, internal_np::initial_nearest_sources), field.labels);
-    if(field.labels.empty())
-      field.labels.assign(mesh.vertices.size(), NO_INDEX);
-  }
   return field;
 }
 

@@ -9,25 +9,20 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef CGAL_VTP_GEODESICS_INTERNAL_ENGINE_VIRTUAL_SOURCE_ROUNDS_H
-#define CGAL_VTP_GEODESICS_INTERNAL_ENGINE_VIRTUAL_SOURCE_ROUNDS_H
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_VIRTUAL_SOURCES_VIRTUAL_SOURCE_ROUNDS_H
+#define CGAL_VTP_GEODESICS_INTERNAL_VIRTUAL_SOURCES_VIRTUAL_SOURCE_ROUNDS_H
 
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
-#include <CGAL/VTP_geodesics/internal/engine/Virtual_source_field.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
+#include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_buckets.h>
+#include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_field.h>
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstddef>
-#include <limits>
 #include <vector>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace CGAL {
 namespace VTP_geodesics {
@@ -35,12 +30,11 @@ namespace internal {
 
 // The schedule of virtual source propagation (VSP on one thread, PVSP on several): rounds of buckets.
 //
-// The vertices waiting are kept in buckets of distances of a fixed width (half a short edge length, see
-// short_edge_length()). A
+// The vertices waiting are kept in buckets of distances of a fixed width (Virtual_source_buckets.h). A
 // round takes every vertex of the lowest bucket at once (they are then final). Each vertex is owned by a
 // thread (blocks of 2^owner_bits consecutive indices, dealt round-robin: the solver numbers the vertices
 // along a space-filling curve, so most neighbours of a vertex have the same owner); each thread of the team
-// computes the offers of the vertices of the round it owns (Virtual_source_front::take()), applies at once
+// computes the offers of the vertices of the round it owns (Virtual_source_walks::take()), applies at once
 // those to its own vertices and keeps the others, by owner, for the second phase, in which each thread
 // applies the offers of the others to its own vertices; a thread puts the vertices it lowered in its own
 // buckets. A thread reads the distance of another's vertex only between the phases (the offers to it go
@@ -55,20 +49,10 @@ namespace internal {
 // cost in accuracy that the benchmark measures (with buckets of half a short edge it is small). Every offer is
 // still the length of a path on the surface (the same walks make them), so the distances are never below
 // the exact ones.
-//
-// An offer of a vertex u goes to a vertex y at most `reach` edges away (a neighbour, or the third vertex of
-// a face beyond the faces around u), so it is at most d(u) plus `reach` longest edges (d(root) + |s - y| <=
-// d(root) + |s - u| + |u - y|) and at least d(u) minus as much: the buckets in use span twice that length,
-// and a ring of buckets suffices. An offer below the next bucket waits in the next bucket.
 class Virtual_source_rounds
 {
 public:
   typedef Virtual_source_field::Vertex_source Vertex_source;
-
-  // The bucket width, in short edge lengths (short_edge_length()).
-  static constexpr double bucket_width = 0.5;
-  // How many edges away from a vertex its offers go (Virtual_source_front::reach_beyond()).
-  static constexpr double reach = 2.;
 
   // statistics of the last run: rounds, those run on several threads, bytes of the buckets and buffers;
   // seconds (thread 0) choosing the rounds, computing the offers (with the wait for the team; in a round of
@@ -89,22 +73,11 @@ public:
     selection_seconds = propagation_seconds = merge_seconds = 0.;
     m_done = false;
     m_capture.reset();
-    m_team = 1;
-#ifdef _OPENMP
-#pragma omp parallel num_threads(threads) if(threads > 1)
-#endif
-    {
-      int t = 0;
-#ifdef _OPENMP
-      t = omp_get_thread_num();
-#pragma omp single
-      {
-        m_team = omp_get_num_threads();
-        m_capture.run([&] { setup(front); });
-      }
-#else
+    const auto start = [&](int team) {
+      m_team = team;
       m_capture.run([&] { setup(front); });
-#endif
+    };
+    run_team(threads, start, [&](int t) {
       Clock::time_point t0, t1, t2;
       for(;;)
       {
@@ -138,20 +111,18 @@ public:
         if(t == 0)
           merge_seconds += seconds(t2, Clock::now());
       }
-    }
-    peak_bytes = m_batch.capacity() * sizeof(Index);
-    for(const Thread_data& d : m_threads)
-    {
-      peak_bytes += d.peak_entries * sizeof(Entry) + d.ring.capacity() * sizeof(std::vector<Entry>);
-      for(const std::vector<Pending>& b : d.offers)
+    });
+    peak_bytes = m_batch.capacity() * sizeof(Index) + m_buckets.peak_bytes();
+    for(const Offers& o : m_offers)
+      for(const std::vector<Pending>& b : o)
         peak_bytes += b.capacity() * sizeof(Pending);
-    }
     m_capture.rethrow();
     return m_team;
   }
 
 private:
-  typedef std::pair<double, Index> Entry;
+  typedef Virtual_source_buckets::Entry Entry;
+  typedef Virtual_source_buckets::Ring Ring;
   typedef std::chrono::steady_clock Clock;
 
   struct Pending
@@ -162,13 +133,7 @@ private:
     Index label;
   };
 
-  // what one thread owns: its buckets, and its offers by owner
-  struct Thread_data
-  {
-    std::vector<std::vector<Entry>> ring;
-    std::vector<std::vector<Pending>> offers;
-    std::size_t pending = 0, peak_entries = 0;
-  };
+  typedef std::vector<std::vector<Pending>> Offers;  // the offers of one thread, by owner
 
   static double seconds(Clock::time_point a, Clock::time_point b)
   {
@@ -197,9 +162,9 @@ private:
   {
     Virtual_source_rounds& rounds;
     Front& front;
-    Thread_data& td;
+    Ring& ring;
     bool reads(Index) const { return true; }
-    void operator()(Index v, double d, const Vertex_source& s, Index lab) { rounds.lower(front, td, v, d, s, lab); }
+    void operator()(Index v, double d, const Vertex_source& s, Index lab) { rounds.lower(front, ring, v, d, s, lab); }
   };
 
   template <class Front>
@@ -207,7 +172,8 @@ private:
   {
     Virtual_source_rounds& rounds;
     Front& front;
-    Thread_data& td;
+    Ring& ring;
+    Offers& offers;
     Index t;
     bool reads(Index v) const { return rounds.owner(v) == t; }
     void operator()(Index v, double d, const Vertex_source& s, Index lab)
@@ -215,7 +181,7 @@ private:
       const Index o = rounds.owner(v);
       if(o == t)
       {
-        rounds.lower(front, td, v, d, s, lab);
+        rounds.lower(front, ring, v, d, s, lab);
         return;
       }
       Pending p;
@@ -223,7 +189,7 @@ private:
       p.d = d;
       p.v = v;
       p.label = lab;
-      td.offers[static_cast<std::size_t>(o)].push_back(p);
+      offers[static_cast<std::size_t>(o)].push_back(p);
     }
   };
 
@@ -248,81 +214,14 @@ private:
   template <class Front>
   void setup(Front& front)
   {
-    const Mesh_arrays& m = *front.m_mesh;
-    if(!keep_width || !(m_short_edge > 0.))
-      m_short_edge = short_edge_length(m);
-    m_width = bucket_width * m_short_edge;
-    if(!(m_width > 0.) || !std::isfinite(m_width))
-      m_width = 1.;
-    // the ring: the offers 2 reach longest edges around the current bucket, plus rounding; at most 2^16
-    // buckets (wider ones on meshes whose longest edge is that many times the bucket width)
-    const double max_ring = 65536., span = 2. * reach * m.max_edge_length;
-    if(!(span / m_width < max_ring - 4.))
-      m_width = span / (max_ring - 4.);
-    m_ring = static_cast<long long>(std::floor(span / m_width)) + 4;
+    m_buckets.start(*front.m_mesh, keep_width, m_team, front.m_seeded);
     m_team_mask = (m_team & (m_team - 1)) == 0 ? static_cast<Index>(m_team - 1) : Index(-1);
-    m_threads.resize(static_cast<std::size_t>(m_team));
-    for(Thread_data& d : m_threads)
-    {
-      d.ring.resize(static_cast<std::size_t>(m_ring));
-      for(std::vector<Entry>& s : d.ring)
-        s.clear();
-      d.offers.resize(static_cast<std::size_t>(m_team));
-      d.pending = d.peak_entries = 0;
-    }
-    m_current = (std::numeric_limits<long long>::max)();
-    for(const Entry& e : front.m_seeded)
-      m_current = (std::min)(m_current, index(e.first) - 1);
-    for(const Entry& e : front.m_seeded)
-      push(m_threads[0], e.second, e.first);
+    m_offers.resize(static_cast<std::size_t>(m_team));
+    for(Offers& o : m_offers)
+      o.resize(static_cast<std::size_t>(m_team));
     front.m_seeded.clear();
     m_remaining_targets = front.mark_targets(m_is_target);
-    m_cutoff = front.m_settings.limit + span;
-  }
-
-  // A short edge length of the mesh (the first decile of the lengths of at most 4096 half-edges taken at
-  // a regular stride, zero lengths left out): on meshes of varying density, the buckets are those of the
-  // fine regions, where vertices of one round would otherwise be many edges apart.
-  static double short_edge_length(const Mesh_arrays& m)
-  {
-    const std::size_t nh = static_cast<std::size_t>(m.nf) * 3;
-    const std::size_t stride = (std::max)(std::size_t(1), nh / 4096);
-    std::vector<double> lengths;
-    lengths.reserve(nh / stride + 1);
-    for(std::size_t h = 0; h < nh; h += stride)
-    {
-      const double l = m.geometry.faces[h / 3].length[h % 3];
-      if(l > 0.)
-        lengths.push_back(l);
-    }
-    if(lengths.empty())
-      return m.mean_edge_length;
-    const std::size_t k = lengths.size() / 10;
-    std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(k), lengths.end());
-    return lengths[k];
-  }
-
-  long long index(double d) const
-  {
-    const double b = std::floor(d / m_width);
-    return b < 9e18 ? static_cast<long long>(b) : (std::numeric_limits<long long>::max)() / 2;
-  }
-
-  // a vertex waits in the bucket of its distance, after the current one, and within the ring
-  void push(Thread_data& td, Index v, double d) const
-  {
-    const long long b = (std::min)((std::max)(index(d), m_current + 1), m_current + m_ring - 1);
-    td.ring[static_cast<std::size_t>(b % m_ring)].emplace_back(d, v);
-    ++td.pending;
-    td.peak_entries = (std::max)(td.peak_entries, td.pending);
-  }
-
-  std::size_t pending() const
-  {
-    std::size_t n = 0;
-    for(const Thread_data& d : m_threads)
-      n += d.pending;
-    return n;
+    m_cutoff = front.m_settings.limit + m_buckets.span();
   }
 
   // thread 0: the vertices of the next round (m_batch, taken), or m_done
@@ -330,32 +229,23 @@ private:
   void next_round(Front& front)
   {
     m_batch.clear();
-    while(pending() > 0)
+    while(m_buckets.pending() > 0)
     {
-      ++m_current;
-      const std::size_t slot_index = static_cast<std::size_t>(m_current % m_ring);
-      const bool beyond = static_cast<double>(m_current) * m_width > m_cutoff;
-      for(Thread_data& d : m_threads)
-      {
-        std::vector<Entry>& slot = d.ring[slot_index];
-        for(const Entry& e : slot)
+      const bool beyond = m_buckets.next_bucket() > m_cutoff;
+      m_buckets.empty_current([&](const Entry& e) {
+        const std::size_t v = static_cast<std::size_t>(e.second);
+        if(front.m_taken[v] || front.dist[v] != e.first)
+          return;
+        if(beyond && e.first > m_cutoff)
         {
-          const std::size_t v = static_cast<std::size_t>(e.second);
-          if(front.m_taken[v] || front.dist[v] != e.first)
-            continue;
-          if(beyond && e.first > m_cutoff)
-          {
-            // past the limit (see Virtual_source_front.h): a vertex this far is not taken; it waits no more
-            // (a later offer within the cutoff puts it back)
-            front.m_stopped = true;
-            continue;
-          }
-          front.m_taken[v] = 1;
-          m_batch.push_back(e.second);
+          // past the limit (see Virtual_source_front.h): a vertex this far is not taken; it waits no more
+          // (a later offer within the cutoff puts it back)
+          front.m_stopped = true;
+          return;
         }
-        d.pending -= slot.size();
-        slot.clear();
-      }
+        front.m_taken[v] = 1;
+        m_batch.push_back(e.second);
+      });
       if(!m_batch.empty())
         break;
     }
@@ -390,30 +280,25 @@ private:
   template <class Front>
   bool has_waiting(const Front& front) const
   {
-    for(const Thread_data& d : m_threads)
-      for(const std::vector<Entry>& slot : d.ring)
-        for(const Entry& e : slot)
-        {
-          const std::size_t v = static_cast<std::size_t>(e.second);
-          if(!front.m_taken[v] && front.dist[v] == e.first)
-            return true;
-        }
-    return false;
+    return m_buckets.any_of([&](const Entry& e) {
+      const std::size_t v = static_cast<std::size_t>(e.second);
+      return !front.m_taken[v] && front.dist[v] == e.first;
+    });
   }
 
   // thread t, first phase: the offers of its vertices of the round; those to its own vertices applied
   template <class Front>
   void compute(Front& front, int t)
   {
-    Thread_data& td = m_threads[static_cast<std::size_t>(t)];
-    for(std::vector<Pending>& b : td.offers)
+    Offers& offers = m_offers[static_cast<std::size_t>(t)];
+    for(std::vector<Pending>& b : offers)
       b.clear();
-    Team_sink<Front> sink{ *this, front, td, static_cast<Index>(t) };
+    Team_sink<Front> sink{ *this, front, m_buckets.ring(t), offers, static_cast<Index>(t) };
     take_batch(front, sink, static_cast<Index>(t));
   }
 
   // The vertices of the round (those of owner t; all if t is NO_INDEX) are taken in order, each a few
-  // places after asking the memory for its data (Virtual_source_front::prefetch()): a pipeline of three
+  // places after asking the memory for its data (Virtual_source_walks::prefetch()): a pipeline of three
   // stages, 12, 8 and 4 vertices ahead (on 1M-vertex meshes 12-15% faster than without).
   template <class Front, class Sink>
   void take_batch(const Front& front, Sink& sink, Index t) const
@@ -437,23 +322,23 @@ private:
   template <class Front>
   void apply(Front& front, int t)
   {
-    Thread_data& td = m_threads[static_cast<std::size_t>(t)];
-    for(const Thread_data& from : m_threads)
-      for(const Pending& p : from.offers[static_cast<std::size_t>(t)])
-        lower(front, td, p.v, p.d, p.s, p.label);
+    Ring& ring = m_buckets.ring(t);
+    for(const Offers& from : m_offers)
+      for(const Pending& p : from[static_cast<std::size_t>(t)])
+        lower(front, ring, p.v, p.d, p.s, p.label);
   }
 
   // thread 0 alone: the offers of the round, each applied at once
   template <class Front>
   void take_alone(Front& front)
   {
-    Alone_sink<Front> sink{ *this, front, m_threads[0] };
+    Alone_sink<Front> sink{ *this, front, m_buckets.ring(0) };
     take_batch(front, sink, NO_INDEX);
   }
 
   // the vertex v (not taken) keeps the offer (d, s) if it is better than its own
   template <class Front>
-  void lower(Front& front, Thread_data& td, Index v, double d, const Vertex_source& s, Index lab) const
+  void lower(Front& front, Ring& ring, Index v, double d, const Vertex_source& s, Index lab) const
   {
     const std::size_t i = static_cast<std::size_t>(v);
     if(front.m_taken[i])
@@ -471,7 +356,7 @@ private:
     front.m_src[i] = s;
     if(!front.label.empty())
       front.label[i] = lab;
-    push(td, v, d);
+    m_buckets.push(ring, v, d);
   }
 
   // the vertices a thread owns come in blocks of 2^owner_bits; the least round the team runs (smaller
@@ -481,12 +366,12 @@ private:
   static constexpr int owner_bits = 9;
   static constexpr std::size_t min_parallel = 64;
 
-  std::vector<Thread_data> m_threads;
+  Virtual_source_buckets m_buckets;  // the vertices waiting, a ring of buckets per thread
+  std::vector<Offers> m_offers;      // per thread
   std::vector<Index> m_batch;  // the vertices of the round
   std::vector<unsigned char> m_is_target;
   std::size_t m_remaining_targets = 0;
-  long long m_current = 0, m_ring = 1;
-  double m_width = 1., m_cutoff = 0., m_short_edge = 0.;
+  double m_cutoff = 0.;
   int m_team = 1;
   Index m_team_mask = 0;  // m_team - 1 if m_team is a power of two, otherwise -1
   bool m_done = false;
@@ -497,4 +382,4 @@ private:
 } // namespace VTP_geodesics
 } // namespace CGAL
 
-#endif // CGAL_VTP_GEODESICS_INTERNAL_ENGINE_VIRTUAL_SOURCE_ROUNDS_H
+#endif // CGAL_VTP_GEODESICS_INTERNAL_VIRTUAL_SOURCES_VIRTUAL_SOURCE_ROUNDS_H
