@@ -1,6 +1,7 @@
 # The module against the C++ tool (bit for bit), analytic cases, and the invariants of the API: labels, limit,
 # targets, paths, matrices, statistics, input conversions.
 
+import inspect
 import math
 import os
 import subprocess
@@ -241,6 +242,13 @@ def test_docstrings():
                 vtp_geodesics.Solver.path, vtp_geodesics.Solver.distance, vtp_geodesics.Solver.matrix,
                 vtp_geodesics.Solver.locate, vtp_geodesics.Solver.statistics]:
         assert obj.__doc__ and len(obj.__doc__) > 40
+
+
+def test_lambda_defaults_to_the_recommended_one():
+    assert vtp_geodesics.recommended_lambda == vtp_geodesics._core.recommended_lambda > 0
+    for f in [vtp_geodesics.Solver.distances, vtp_geodesics.Solver.distance, vtp_geodesics.Solver.matrix,
+              vtp_geodesics.Solver.farthest_point_sampling]:
+        assert inspect.signature(f).parameters["lam"].default == vtp_geodesics.recommended_lambda
 
 
 def test_matrix_progress_on_stderr(elephant, capsys):
