@@ -12,6 +12,7 @@
 
 #include "core_solver.h"
 
+#include <vtp_support/statistics.h>
 
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/parameters.h>
@@ -84,30 +85,10 @@ Core_solver::Core_solver(const Double_array& V, const Index_array& F, int thread
 py::dict Core_solver::statistics() const
 {
   std::lock_guard<std::mutex> lock(m_mutex);
-  const VTP::Propagation_statistics& st = m_statistics;
   py::dict d;
-  d["vertices"] = st.vertices;
-  d["faces"] = st.faces;
-  d["sources"] = st.sources;
-  d["method"] = st.method;
-  d["threads"] = st.threads;
-  d["windows_created"] = st.windows_created;
-  d["windows_propagated"] = st.windows_propagated;
-  d["peak_live_windows"] = st.peak_live_windows;
-  d["peak_window_bytes"] = st.peak_window_bytes;
-  d["vertices_processed"] = st.vertices_processed;
-  d["pseudo_sources"] = st.pseudo_sources;
-  d["resets"] = st.resets;
-  d["stopped_early"] = st.stopped_early;
-  d["rounds"] = st.rounds;
-  d["parallel_rounds"] = st.parallel_rounds;
-  d["selection_seconds"] = st.selection_seconds;
-  d["propagation_seconds"] = st.propagation_seconds;
-  d["merge_seconds"] = st.merge_seconds;
-  d["reached_vertices"] = st.reached_vertices;
-  d["max_distance"] = st.max_distance;
-  d["seconds"] = st.seconds;
-  d["output_seconds"] = st.output_seconds;
+  vtp_support::for_each_statistic(m_statistics, [&](const char* name, const auto& value, vtp_support::Statistic_unit) {
+    d[name] = value;
+  });
   d["preprocessing_seconds"] = m_solver->preprocessing_seconds();
   d["mesh_build_seconds"] = m_build_seconds;
   return d;

@@ -78,12 +78,13 @@ class Solver(Queries, Matrices, Sampling):
     def statistics(self):
         """The library's statistics of the last computation, as a dict.
 
-        Keys: vertices, faces, sources, method, threads, windows_created, windows_propagated,
+        Keys: method, threads, vertices, faces, sources, windows_created, windows_propagated,
         peak_live_windows, peak_window_bytes, vertices_processed, pseudo_sources, resets, stopped_early,
-        rounds, parallel_rounds, selection_seconds, propagation_seconds, merge_seconds, reached_vertices,
-        max_distance, seconds (the propagation, wall clock), output_seconds, preprocessing_seconds (the
-        library's preprocessing in the constructor) and mesh_build_seconds (the constructor's checks of V and F
-        and building of the mesh). After ``matrix()``, the sums over the rows (peaks are maxima).
+        rounds, parallel_rounds, round_selection_seconds, round_propagation_seconds, round_merge_seconds (the
+        stages of the parallel rounds), reached_vertices, max_distance, seconds (the propagation, wall clock),
+        output_seconds, preprocessing_seconds (the library's preprocessing in the constructor) and
+        mesh_build_seconds (the constructor's checks of V and F and building of the mesh). After
+        ``matrix()``, the sums over the rows (peaks are maxima).
         """
         return self._core.statistics()
 

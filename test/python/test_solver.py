@@ -194,6 +194,8 @@ def test_methods_and_statistics(elephant):
     assert np.all(approx >= exact - 1e-12)
     st = solver.statistics
     assert st["method"] == "avtp" and st["vertices"] == len(V) and st["windows_propagated"] > 0
+    assert {"round_selection_seconds", "round_propagation_seconds", "round_merge_seconds", "seconds",
+            "preprocessing_seconds", "mesh_build_seconds"} <= set(st)
     assert set(vtp_geodesics.methods) >= {"vtp", "pvtp", "avtp", "pavtp", "vsp", "pvsp"}
     # one virtual source per vertex: every distance is a path length (never below exact), the same on 2 threads
     vsp = solver.distances(0, method="vsp")
