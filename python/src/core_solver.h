@@ -31,9 +31,9 @@
 // divided by 3), never its shape, so that no call can make it read outside an array.
 //
 // The computations go through the public API of the library (CGAL::VTP_geodesics::Geodesic_distance_solver)
-// with the GIL released; one mutex per solver serialises the calls from several Python threads. A method is
-// turned into a call of the library by the support layer's vtp_support::with_method() (the one dispatch of the
-// tools, the benchmark and this module).
+// with the GIL released; one mutex per solver serialises the calls from several Python threads (it is never
+// waited for with the GIL held). A method is turned into a call of the library by the support layer's
+// vtp_support::with_method() (the one dispatch of the tools, the benchmark and this module).
 //
 // Barycentric coordinates seen from Python are with respect to the corners of the face as given in F (F[f, 0],
 // F[f, 1], F[f, 2]); the library's are with respect to source(halfedge(f)), target(halfedge(f)),

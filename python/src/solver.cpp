@@ -84,9 +84,16 @@ Core_solver::Core_solver(const Double_array& V, const Index_array& F, int thread
 
 py::dict Core_solver::statistics() const
 {
-  std::lock_guard<std::mutex> lock(m_mutex);
+  VTP::Propagation_statistics st;
+  {
+    // a computation holds the mutex and takes the GIL now and then (matrices.cpp): never wait for it holding
+    // the GIL
+    py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(m_mutex);
+    st = m_statistics;
+  }
   py::dict d;
-  vtp_support::for_each_statistic(m_statistics, [&](const char* name, const auto& value, vtp_support::Statistic_unit) {
+  vtp_support::for_each_statistic(st, [&](const char* name, const auto& value, vtp_support::Statistic_unit) {
     d[name] = value;
   });
   d["preprocessing_seconds"] = m_solver->preprocessing_seconds();

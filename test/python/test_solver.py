@@ -5,6 +5,7 @@ import inspect
 import math
 import os
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -258,3 +259,31 @@ def test_matrix_progress_on_stderr(elephant, capsys):
     M = solver.matrix([0, 1, 2], progress=True)
     assert "3 / 3 rows" in capsys.readouterr().err
     assert np.array_equal(M[2], solver.distances(2))
+
+
+def test_statistics_while_a_matrix_runs():
+    # statistics from another thread while a matrix runs: it waits for the matrix without holding the GIL, which
+    # the matrix takes every 0.2 s to check for Ctrl-C (holding it, both waited for ever). In a child process, so
+    # that a deadlock fails the test instead of hanging it.
+    script = "\n".join([
+        "import threading, time",
+        "import vtp_geodesics",
+        "from conftest import plane_grid",
+        "V, F = plane_grid(30, 30)",
+        "solver = vtp_geodesics.Solver(V, F, threads=2)",
+        "done = threading.Event()",
+        "def read():",
+        "    while not done.is_set():",
+        "        solver.statistics",
+        "        time.sleep(0.01)",
+        "reader = threading.Thread(target=read)",
+        "reader.start()",
+        "solver.matrix(list(range(len(V))) * 2, dtype='float32')",
+        "done.set()",
+        "reader.join()",
+        "print(solver.statistics['method'])",
+    ])
+    here = os.path.dirname(os.path.abspath(__file__))
+    r = subprocess.run([sys.executable, "-c", script], cwd=here, capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "vtp"
