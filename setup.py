@@ -3,12 +3,14 @@
     python3 -m venv --system-site-packages venv && . venv/bin/activate
     python3 -m pip install --no-build-isolation .
 
-Builds python/src/vtp_geodesics_module.cpp with pybind11's setuptools helpers (Debian: python3-pybind11,
-pybind11-dev, python3-setuptools, python3-dev), CGAL 5.5 header-only (libcgal-dev, libgmp-dev, libmpfr-dev,
+Builds python/src/*.cpp (the compiled layer, one file per topic; setuptools compiles them one by one, CMake as
+one unity translation unit) with pybind11's setuptools helpers (Debian: python3-pybind11, pybind11-dev,
+python3-setuptools, python3-dev), CGAL 5.5 header-only (libcgal-dev, libgmp-dev, libmpfr-dev,
 libboost-dev) and OpenMP (GCC's -fopenmp), with the same flags as the CMake build (Release, -frounding-math as
 CGAL requires), and installs the package python/vtp_geodesics (with the drop-ins gdist and pygeodesic).
 """
 
+import glob
 import os
 
 from pybind11.setup_helpers import Pybind11Extension
@@ -20,7 +22,7 @@ os.makedirs(os.path.join(ROOT, "build-pip"), exist_ok=True)  # setup.cfg: setupt
 
 extension = Pybind11Extension(
     "vtp_geodesics._core",
-    ["python/src/vtp_geodesics_module.cpp"],
+    sorted(glob.glob("python/src/*.cpp")),  # relative paths, as setuptools wants them
     include_dirs=["include", "support/include"],  # the library; the support layer (readers, method table)
     define_macros=[("NDEBUG", None), ("CGAL_USE_GMPXX", "1"), ("CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP", None)],
     extra_compile_args=["-O3", "-frounding-math", "-fopenmp"],

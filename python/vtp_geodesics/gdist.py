@@ -100,7 +100,7 @@ def _symmetric_csc(M, n):
     M = M.tocsr()
     M.sort_indices()
     data, indices, indptr = _core.symmetric_min_csr(M.data.astype(numpy.float64), M.indices.astype(numpy.int64),
-                                                    M.indptr.astype(numpy.int64), n)
+                                                    M.indptr.astype(numpy.int64))
     return scipy.sparse.csc_matrix((data, indices, indptr), shape=(n, n))
 
 

@@ -1,9 +1,11 @@
 # The module against the C++ tool (bit for bit), analytic cases, and the invariants of the API: labels, limit,
 # targets, paths, matrices, statistics, input conversions.
 
+import inspect
 import math
 import os
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -193,6 +195,8 @@ def test_methods_and_statistics(elephant):
     assert np.all(approx >= exact - 1e-12)
     st = solver.statistics
     assert st["method"] == "avtp" and st["vertices"] == len(V) and st["windows_propagated"] > 0
+    assert {"round_selection_seconds", "round_propagation_seconds", "round_merge_seconds", "seconds",
+            "preprocessing_seconds", "mesh_build_seconds"} <= set(st)
     assert set(vtp_geodesics.methods) >= {"vtp", "pvtp", "avtp", "pavtp", "vsp", "pvsp"}
     # one virtual source per vertex: every distance is a path length (never below exact), the same on 2 threads
     vsp = solver.distances(0, method="vsp")
@@ -243,8 +247,43 @@ def test_docstrings():
         assert obj.__doc__ and len(obj.__doc__) > 40
 
 
+def test_lambda_defaults_to_the_recommended_one():
+    assert vtp_geodesics.recommended_lambda == vtp_geodesics._core.recommended_lambda > 0
+    for f in [vtp_geodesics.Solver.distances, vtp_geodesics.Solver.distance, vtp_geodesics.Solver.matrix,
+              vtp_geodesics.Solver.farthest_point_sampling]:
+        assert inspect.signature(f).parameters["lam"].default == vtp_geodesics.recommended_lambda
+
+
 def test_matrix_progress_on_stderr(elephant, capsys):
     V, F, solver = elephant
     M = solver.matrix([0, 1, 2], progress=True)
     assert "3 / 3 rows" in capsys.readouterr().err
     assert np.array_equal(M[2], solver.distances(2))
+
+
+def test_statistics_while_a_matrix_runs():
+    # statistics from another thread while a matrix runs: it waits for the matrix without holding the GIL, which
+    # the matrix takes every 0.2 s to check for Ctrl-C (holding it, both waited for ever). In a child process, so
+    # that a deadlock fails the test instead of hanging it.
+    script = "\n".join([
+        "import threading, time",
+        "import vtp_geodesics",
+        "from conftest import plane_grid",
+        "V, F = plane_grid(30, 30)",
+        "solver = vtp_geodesics.Solver(V, F, threads=2)",
+        "done = threading.Event()",
+        "def read():",
+        "    while not done.is_set():",
+        "        solver.statistics",
+        "        time.sleep(0.01)",
+        "reader = threading.Thread(target=read)",
+        "reader.start()",
+        "solver.matrix(list(range(len(V))) * 2, dtype='float32')",
+        "done.set()",
+        "reader.join()",
+        "print(solver.statistics['method'])",
+    ])
+    here = os.path.dirname(os.path.abspath(__file__))
+    r = subprocess.run([sys.executable, "-c", script], cwd=here, capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "vtp"

@@ -1,0 +1,268 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the Python module of the VTP_geodesics package.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+// Distance matrices: one row per source, rows on all cores (the library's compute_each()), dense or sparse
+// (CSR within a limit), float32 or float64. The thread that called into the module checks for Ctrl-C (and
+// writes the progress, if asked) every 0.2 s; a pending KeyboardInterrupt stops handing out rows (see
+// core_solver.h).
+
+#include "core_solver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <sstream>
+#include <thread>
+#include <type_traits>
+
+namespace vtp_python {
+
+namespace {
+
+// Set in the sink by the thread that called into the module when Python reports a pending exception
+// (KeyboardInterrupt): thrown through compute_each(), which stops handing out rows.
+struct Python_error_pending
+{};
+
+// The error indicator fetched while the GIL was held briefly inside a computation, restored afterwards.
+struct Saved_python_error
+{
+  PyObject* type = nullptr;
+  PyObject* value = nullptr;
+  PyObject* traceback = nullptr;
+  void fetch() { PyErr_Fetch(&type, &value, &traceback); }
+  [[noreturn]] void restore_and_throw()
+  {
+    PyErr_Restore(type, value, traceback);
+    type = value = traceback = nullptr;
+    throw py::error_already_set();
+  }
+};
+
+// Calls Python every 0.2 s from the thread that entered the module (only that thread may run signal handlers):
+// checks for a pending signal (Ctrl-C) and, if asked, writes the progress to sys.stderr.
+class Interrupt_check
+{
+public:
+  Interrupt_check(std::size_t total, bool progress)
+    : m_caller(std::this_thread::get_id()), m_last(std::chrono::steady_clock::now()), m_total(total),
+      m_progress(progress)
+  {}
+
+  // Called (serially) after each row; throws Python_error_pending once Python has an exception to raise.
+  void row_done()
+  {
+    const std::size_t done = ++m_done;
+    if(std::this_thread::get_id() != m_caller)
+      return;
+    const auto now = std::chrono::steady_clock::now();
+    if(now - m_last < std::chrono::milliseconds(200) && done != m_total)
+      return;
+    m_last = now;
+    py::gil_scoped_acquire gil;
+    if(m_progress)
+      write_progress(done);
+    if(PyErr_CheckSignals() != 0)
+    {
+      error.fetch();
+      throw Python_error_pending();
+    }
+  }
+
+  void finish()
+  {
+    if(m_progress)
+    {
+      write_progress(m_done);
+      write("\n");
+    }
+  }
+
+  Saved_python_error error;
+
+private:
+  void write_progress(std::size_t done)
+  {
+    std::ostringstream s;
+    s << "\rvtp_geodesics: " << done << " / " << m_total << " rows";
+    write(s.str());
+  }
+
+  static void write(const std::string& text)
+  {
+    try
+    {
+      py::module_::import("sys").attr("stderr").attr("write")(text);
+    }
+    catch(py::error_already_set&)
+    {
+    }
+  }
+
+  std::thread::id m_caller;
+  std::chrono::steady_clock::time_point m_last;
+  std::size_t m_total, m_done = 0;
+  bool m_progress;
+};
+
+// The columns of the matrix: the indices of the vertices listed as targets.
+std::vector<std::size_t> column_ids(const std::vector<Vertex_index>& listed)
+{
+  std::vector<std::size_t> r;
+  for(Vertex_index v : listed)
+    r.push_back(static_cast<std::size_t>(v));
+  return r;
+}
+
+} // namespace
+
+// Rows from `rows` on `threads` threads through compute_each(); `write(i, distances)` is called serially.
+template <class Write>
+void Core_solver::run_rows(const std::vector<Vertex_index>& rows, double max_distance,
+                           const std::string& method_name, double lam, int threads, bool progress, Write&& write)
+{
+  const vtp_support::Method_info& method = method_named(method_name, lam);
+  check_limit(max_distance);
+  if(rows.empty())
+    return;
+  Interrupt_check check(rows.size(), progress);
+  bool interrupted = false;
+  {
+    py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(m_mutex);
+    // each row on one thread, the rows on `threads` threads: compute_each()'s Parallel_tag whatever the method
+    const auto np = vtp_support::method_parameters(method, lam, threads_or_default(threads))
+                      .maximum_distance(max_distance);
+    auto sink = [&](std::size_t i, Vertex_index, const std::vector<double>& d) {
+      write(i, d);
+      check.row_done();
+    };
+    try
+    {
+#ifdef _OPENMP
+      m_solver->compute_each<CGAL::Parallel_tag>(rows, sink, np);
+#else
+      m_solver->compute_each<CGAL::Sequential_tag>(rows, sink, np);
+#endif
+    }
+    catch(const Python_error_pending&)
+    {
+      interrupted = true;
+    }
+    m_statistics = m_solver->statistics();
+  }
+  check.finish();
+  if(interrupted)
+    check.error.restore_and_throw();
+}
+
+// Dense rows: out[i, j] = d(sources[i], columns[j]) (all vertices if `all_columns`), as float32 or float64.
+py::array Core_solver::matrix_dense(const Index_array& sources, const Index_array& columns, bool all_columns,
+                                    double max_distance, bool single, const std::string& method_name, double lam,
+                                    int threads, bool progress)
+{
+  const std::vector<Vertex_index> rows = vertices_of(sources, "sources");
+  const std::vector<std::size_t> cols = all_columns ? std::vector<std::size_t>()
+                                                    : column_ids(vertices_of(columns, "targets"));
+  const std::size_t nc = all_columns ? number_of_vertices() : cols.size();
+  const std::vector<py::ssize_t> shape = { static_cast<py::ssize_t>(rows.size()), static_cast<py::ssize_t>(nc) };
+  py::array out = single ? py::array(py::array_t<float>(shape)) : py::array(py::array_t<double>(shape));
+  void* data = out.mutable_data();
+  auto fill = [&](auto* o) {
+    typedef typename std::remove_pointer<decltype(o)>::type T;
+    run_rows(rows, max_distance, method_name, lam, threads, progress,
+             [&](std::size_t i, const std::vector<double>& d) {
+               T* row = o + i * nc;
+               if(all_columns)
+                 for(std::size_t j = 0; j < nc; ++j)
+                   row[j] = static_cast<T>(d[j]);
+               else
+                 for(std::size_t j = 0; j < nc; ++j)
+                   row[j] = static_cast<T>(d[cols[j]]);
+             });
+  };
+  if(single)
+    fill(static_cast<float*>(data));
+  else
+    fill(static_cast<double*>(data));
+  return out;
+}
+
+// Sparse rows within `max_distance` (finite): the CSR arrays (data, indices, indptr), indices sorted in each
+// row, int32 indices when they fit (as scipy makes them), else int64.
+py::tuple Core_solver::matrix_sparse(const Index_array& sources, const Index_array& columns, bool all_columns,
+                                     double max_distance, bool single, const std::string& method_name, double lam,
+                                     int threads, bool progress)
+{
+  if(!(max_distance < infinity))
+    value_error("a sparse matrix needs a finite max_distance");
+  const std::vector<Vertex_index> rows = vertices_of(sources, "sources");
+  const std::vector<std::size_t> cols = all_columns ? std::vector<std::size_t>()
+                                                    : column_ids(vertices_of(columns, "targets"));
+  const std::size_t nc = all_columns ? number_of_vertices() : cols.size();
+  // the entries of each row, kept in the output's type (float32 output: no float64 copy of the entries)
+  auto compute = [&](auto value_type) {
+    typedef decltype(value_type) T;
+    std::vector<std::vector<std::uint32_t> > row_columns(rows.size());
+    std::vector<std::vector<T> > row_values(rows.size());
+    run_rows(rows, max_distance, method_name, lam, threads, progress,
+             [&](std::size_t i, const std::vector<double>& d) {
+               std::vector<std::uint32_t>& c = row_columns[i];
+               std::vector<T>& v = row_values[i];
+               for(std::size_t j = 0; j < nc; ++j)
+               {
+                 const double x = d[all_columns ? j : cols[j]];
+                 if(x <= max_distance)
+                 {
+                   c.push_back(static_cast<std::uint32_t>(j));
+                   v.push_back(static_cast<T>(x));
+                 }
+               }
+             });
+    std::size_t nnz = 0;
+    for(const auto& c : row_columns)
+      nnz += c.size();
+    auto assemble = [&](auto index_type) {
+      typedef decltype(index_type) I;
+      py::array_t<T> data(static_cast<py::ssize_t>(nnz));
+      py::array_t<I> indices(static_cast<py::ssize_t>(nnz));
+      py::array_t<I> indptr(static_cast<py::ssize_t>(rows.size() + 1));
+      T* dp = data.mutable_data();
+      I* ip = indices.mutable_data();
+      I* pp = indptr.mutable_data();
+      {
+        py::gil_scoped_release release;
+        std::size_t k = 0;
+        pp[0] = 0;
+        for(std::size_t r = 0; r < rows.size(); ++r)
+        {
+          std::copy(row_values[r].begin(), row_values[r].end(), dp + k);
+          for(std::size_t e = 0; e < row_columns[r].size(); ++e)
+            ip[k + e] = static_cast<I>(row_columns[r][e]);
+          k += row_columns[r].size();
+          std::vector<std::uint32_t>().swap(row_columns[r]);
+          std::vector<T>().swap(row_values[r]);
+          pp[r + 1] = static_cast<I>(k);
+        }
+      }
+      return py::make_tuple(data, indices, indptr);
+    };
+    // int32 indices when they fit (as scipy makes them), else int64
+    if(nnz >= (std::size_t(1) << 31) || nc >= (std::size_t(1) << 31))
+      return assemble(std::int64_t());
+    return assemble(std::int32_t());
+  };
+  return single ? compute(float()) : compute(double());
+}
+
+void define_matrices(py::class_<Core_solver>& c)
+{
+  c.def("matrix_dense", &Core_solver::matrix_dense).def("matrix_sparse", &Core_solver::matrix_sparse);
+}
+
+} // namespace vtp_python

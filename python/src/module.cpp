@@ -1,0 +1,49 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the Python module of the VTP_geodesics package.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+// The registration of vtp_geodesics._core: its attributes and method table here, each topic's names in its
+// file (see core_solver.h for which file holds what).
+
+#include "core_solver.h"
+
+namespace {
+
+// The support layer's method table, one dict per method.
+pybind11::list method_table()
+{
+  pybind11::list l;
+  for(const vtp_support::Method_info* m = vtp_support::methods_begin(); m != vtp_support::methods_end(); ++m)
+  {
+    pybind11::dict d;
+    d["name"] = m->name;
+    d["parallel"] = m->parallel;
+    d["approximate"] = m->approximate;
+    d["description"] = m->description;
+    d["available"] = vtp_support::method_available(*m);
+    l.append(d);
+  }
+  return l;
+}
+
+} // namespace
+
+PYBIND11_MODULE(_core, m)
+{
+  namespace vp = vtp_python;
+  m.doc() = "The compiled layer of vtp_geodesics (use the package vtp_geodesics, not this module).";
+  pybind11::class_<vp::Core_solver> solver(m, "Solver");
+  vp::define_solver(solver);
+  vp::define_queries(solver);
+  vp::define_matrices(solver);
+  vp::define_sampling(solver);
+  vp::define_io(m);
+  m.def("method_table", &method_table);
+  m.attr("recommended_lambda") = vtp_support::default_lambda;
+  m.attr("openmp") = vtp_support::parallel_methods_available();
+}

@@ -1,0 +1,231 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the Python module of the VTP_geodesics package.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+// The queries of a solver: distances from several sources (with labels, a limit, targets), a geodesic path,
+// one distance with early stop, and the nearest surface points (see core_solver.h).
+
+#include "core_solver.h"
+
+#include <CGAL/VTP_geodesics/Invalid_input_error.h>
+#include <CGAL/VTP_geodesics/parameters.h>
+
+#include <CGAL/property_map.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <iterator>
+
+namespace vtp_python {
+
+// One propagation. Returns (distances (n,), labels (n,) int64 or None, target distances (len(targets),)).
+py::tuple Core_solver::distances(const Index_array& sources, const Index_array& point_faces,
+                                 const Double_array& point_bary, double max_distance, const Index_array& targets,
+                                 const std::string& method_name, double lam, int threads, bool want_labels)
+{
+  const vtp_support::Method_info& method = method_named(method_name, lam);
+  check_limit(max_distance);
+  const std::vector<Vertex_index> source_vertices = vertices_of(sources, "sources");
+  const std::vector<Face_location> source_points = locations_of(point_faces, point_bary, "points");
+  const std::vector<Vertex_index> target_vertices = vertices_of(targets, "targets");
+  if(source_vertices.empty() && source_points.empty())
+    value_error("no source: give at least one vertex in sources or one point in points");
+  const std::size_t n = number_of_vertices();
+  py::array_t<double> out(static_cast<py::ssize_t>(n));
+  py::array_t<std::int64_t> labels_out(static_cast<py::ssize_t>(want_labels ? n : 0));
+  py::array_t<double> target_out(static_cast<py::ssize_t>(target_vertices.size()));
+  double* d = out.mutable_data();
+  std::int64_t* lab = labels_out.mutable_data();
+  double* td = target_out.mutable_data();
+  {
+    py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(m_mutex);
+    // isolated vertices are never reached: not targets of the stop rule (their distance is +inf)
+    std::vector<Vertex_index> live_targets;
+    for(Vertex_index t : target_vertices)
+      if(!m_mesh.is_isolated(t))
+        live_targets.push_back(t);
+    set_sources(source_vertices, source_points);
+    const auto vdm = boost::make_iterator_property_map(d, get(boost::vertex_index, m_mesh));
+    std::vector<std::size_t> labels;
+    vtp_support::with_method(method, lam, threads_or_default(threads), [&](auto tag, const auto& method_np) {
+      typedef decltype(tag) Tag;
+      const auto np = method_np.maximum_distance(max_distance)
+                        .targets(live_targets)
+                        .stop_at_targets(!live_targets.empty())
+                        .statistics(m_statistics);
+      if(want_labels)
+      {
+        labels.assign(n, VTP::no_source);
+        m_solver->template compute<Tag>(
+          vdm, np.nearest_source_map(boost::make_iterator_property_map(labels.begin(),
+                                                                       get(boost::vertex_index, m_mesh))));
+      }
+      else
+        m_solver->template compute<Tag>(vdm, np);
+    });
+    if(want_labels)
+      for(std::size_t i = 0; i < n; ++i)
+        lab[i] = (labels[i] == VTP::no_source || !(d[i] < infinity)) ? -1 : static_cast<std::int64_t>(labels[i]);
+    std::size_t k = 0;
+    for(std::size_t i = 0; i < target_vertices.size(); ++i)
+      td[i] = m_mesh.is_isolated(target_vertices[i]) ? infinity : m_solver->target_distance(k++);
+  }
+  return py::make_tuple(out, want_labels ? py::object(labels_out) : py::object(py::none()), target_out);
+}
+
+// The geodesic path to a target (a vertex if target_vertex >= 0, else the face location), from the sources.
+// Returns (points (k, 3), faces (k,), barycentric (k, 3), distance), from the source to the target.
+py::tuple Core_solver::path(std::int64_t target_vertex, std::int64_t target_face, const Double_array& target_bary,
+                            const Index_array& sources, const Index_array& point_faces,
+                            const Double_array& point_bary, double max_distance)
+{
+  check_limit(max_distance);
+  const std::vector<Vertex_index> source_vertices = vertices_of(sources, "sources");
+  const std::vector<Face_location> source_points = locations_of(point_faces, point_bary, "points");
+  if(source_vertices.empty() && source_points.empty())
+    value_error("no source: give at least one vertex in sources or one point in points");
+  const bool at_vertex = target_vertex >= 0;
+  Vertex_index tv;
+  Face_location tl;
+  if(at_vertex)
+    tv = vertex_of(target_vertex, "target");
+  else
+    tl = location_of(target_face, target_bary, "target");
+  std::vector<Point_3> points;
+  std::vector<Face_location> locations;
+  double distance = infinity;
+  {
+    py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(m_mutex);
+    set_sources(source_vertices, source_points);
+    const CGAL::Constant_property_map<Vertex_index, double> no_map;
+    const auto np = VTP::parameters::maximum_distance(max_distance).record_paths(true).stop_at_targets(true)
+                      .statistics(m_statistics);
+    if(at_vertex)
+    {
+      if(m_mesh.is_isolated(tv))
+        throw VTP::Invalid_input_error("no path: the target is an isolated vertex, which no source reaches");
+      m_solver->compute<CGAL::Sequential_tag>(no_map, np.targets(tv));
+      distance = m_solver->target_distance(0);
+      m_solver->shortest_path_points(tv, std::back_inserter(points));
+      m_solver->shortest_path_locations(tv, std::back_inserter(locations));
+    }
+    else
+    {
+      m_solver->compute<CGAL::Sequential_tag>(no_map, np.targets(tl));
+      distance = m_solver->target_distance(0);
+      m_solver->shortest_path_points(tl, std::back_inserter(points));
+      m_solver->shortest_path_locations(tl, std::back_inserter(locations));
+    }
+  }
+  const std::size_t k = points.size();
+  py::array_t<double> P({ static_cast<py::ssize_t>(k), py::ssize_t(3) });
+  py::array_t<std::int64_t> PF(static_cast<py::ssize_t>(locations.size()));
+  py::array_t<double> PB({ static_cast<py::ssize_t>(locations.size()), py::ssize_t(3) });
+  double* p = P.mutable_data();
+  for(std::size_t i = 0; i < k; ++i) // the library gives the target first: reversed, source first
+    for(int j = 0; j < 3; ++j)
+      p[3 * i + std::size_t(j)] = points[k - 1 - i][j];
+  std::int64_t* pf = PF.mutable_data();
+  double* pb = PB.mutable_data();
+  for(std::size_t i = 0; i < locations.size(); ++i)
+  {
+    const Face_location& l = locations[locations.size() - 1 - i];
+    pf[i] = static_cast<std::int64_t>(static_cast<std::size_t>(l.first));
+    const std::array<double, 3> b = to_user_barycentric(l);
+    for(int j = 0; j < 3; ++j)
+      pb[3 * i + std::size_t(j)] = b[std::size_t(j)];
+  }
+  return py::make_tuple(P, PF, PB, distance);
+}
+
+// The distance from one source (vertex or location) to one target (vertex or location), stopping once the
+// target's distance is final.
+double Core_solver::distance(std::int64_t a_vertex, std::int64_t a_face, const Double_array& a_bary,
+                             std::int64_t b_vertex, std::int64_t b_face, const Double_array& b_bary,
+                             const std::string& method_name, double lam)
+{
+  const vtp_support::Method_info& method = method_named(method_name, lam);
+  Vertex_index av, bv;
+  Face_location al, bl;
+  if(a_vertex >= 0)
+    av = vertex_of(a_vertex, "a");
+  else
+    al = location_of(a_face, a_bary, "a");
+  if(b_vertex >= 0)
+    bv = vertex_of(b_vertex, "b");
+  else
+    bl = location_of(b_face, b_bary, "b");
+  py::gil_scoped_release release;
+  std::lock_guard<std::mutex> lock(m_mutex);
+  if(b_vertex >= 0 && m_mesh.is_isolated(bv))
+    return a_vertex == b_vertex ? 0. : infinity;
+  m_solver->clear_sources();
+  if(a_vertex >= 0)
+    m_solver->add_source(av);
+  else
+    m_solver->add_source(al);
+  const CGAL::Constant_property_map<Vertex_index, double> no_map;
+  vtp_support::with_method(method, lam, threads_or_default(0), [&](auto tag, const auto& method_np) {
+    typedef decltype(tag) Tag;
+    const auto np = method_np.stop_at_targets(true).statistics(m_statistics);
+    if(b_vertex >= 0)
+      m_solver->template compute<Tag>(no_map, np.targets(bv));
+    else
+      m_solver->template compute<Tag>(no_map, np.targets(bl));
+  });
+  return m_solver->target_distance(0);
+}
+
+// Nearest points of the surface to the rows of P (k, 3): (faces (k,), barycentric (k, 3)).
+py::tuple Core_solver::locate(const Double_array& P)
+{
+  const std::size_t k = static_cast<std::size_t>(P.size()) / 3;
+  const double* p = P.data();
+  for(std::size_t i = 0; i < 3 * k; ++i)
+    if(!std::isfinite(p[i]))
+      value_error("point " + std::to_string(i / 3) + " has a non-finite coordinate");
+  py::array_t<std::int64_t> faces(static_cast<py::ssize_t>(k));
+  py::array_t<double> bary({ static_cast<py::ssize_t>(k), py::ssize_t(3) });
+  std::int64_t* fo = faces.mutable_data();
+  double* bo = bary.mutable_data();
+  std::string error;
+  {
+    py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if(!m_locator)
+      m_locator.reset(new vtp_support::Surface_locator(m_mesh));
+    for(std::size_t i = 0; i < k; ++i)
+    {
+      Face_location l;
+      if(!m_locator->locate(Point_3(p[3 * i], p[3 * i + 1], p[3 * i + 2]), l))
+      {
+        error = "cannot locate point " + std::to_string(i) + " on the surface (its nearest face is degenerate)";
+        break;
+      }
+      const std::array<double, 3> u = to_user_barycentric(l);
+      fo[i] = static_cast<std::int64_t>(static_cast<std::size_t>(l.first));
+      for(int j = 0; j < 3; ++j)
+        bo[3 * i + std::size_t(j)] = u[std::size_t(j)];
+    }
+  }
+  if(!error.empty())
+    value_error(error);
+  return py::make_tuple(faces, bary);
+}
+
+void define_queries(py::class_<Core_solver>& c)
+{
+  c.def("distances", &Core_solver::distances)
+    .def("path", &Core_solver::path)
+    .def("distance", &Core_solver::distance)
+    .def("locate", &Core_solver::locate);
+}
+
+} // namespace vtp_python

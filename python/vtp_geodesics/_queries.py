@@ -1,0 +1,115 @@
+"""The queries of a solver (private; methods of ``vtp_geodesics.Solver``): distances from several sources, a
+geodesic path, the distance between two points, the nearest surface points."""
+
+import math as _math
+
+from ._arguments import (SOURCE_DEFAULT, check_float, check_method, check_threads, one_point,
+                         recommended_lambda, source_vertices, surface_points, vertex_list, xyz_rows)
+
+
+class Queries:
+    """The queries of ``Solver`` (which holds the compiled solver ``_core``)."""
+
+    def distances(self, sources=SOURCE_DEFAULT, *, points=None, max_distance=_math.inf, targets=None, method="vtp",
+                  lam=recommended_lambda, return_labels=False, threads=0):
+        """Geodesic distances from the nearest source to every vertex.
+
+        Parameters
+        ----------
+        sources : int or array-like of int, default 0
+            Source vertices (indices into V). The default is vertex 0 when no ``points`` are given, no vertex
+            when some are.
+        points : (faces, barycentric) or array-like (k, 3), optional
+            Sources at points of the surface: a pair of arrays, face indices (k,) and barycentric
+            coordinates (k, 3) with respect to the corners F[f, 0], F[f, 1], F[f, 2] (non-negative, sum 1);
+            or xyz positions (k, 3), each replaced by the nearest point of the surface (see ``locate``).
+        max_distance : float, default inf
+            Distance limit: vertices farther get ``inf``; the work is that of the region within it.
+        targets : array-like of int, optional
+            Target vertices: the propagation stops as soon as their distances are final; the other vertices
+            then have their distance where it is already final and ``inf`` elsewhere.
+        method : str, default "vtp"
+            One of ``vtp_geodesics.methods``: "vtp" (exact, one thread), "pvtp" (exact, parallel), "avtp",
+            "pavtp" (approximate: window resets every ``lam`` mean edge lengths; never below the exact
+            distances), "vsp", "pvsp" (one virtual source per vertex: the fastest, an upper bound, mean
+            error about 0.2-0.4%), "vsp2", "pvsp2" (two per vertex: about half the error, 1.3-2x the time).
+        lam : float, default ``vtp_geodesics.recommended_lambda``
+            Reset step of the approximate methods (ignored by the exact ones).
+        return_labels : bool, default False
+            Also return the nearest source of each vertex.
+        threads : int, default 0
+            Threads of the parallel methods (0: the solver's ``threads``).
+
+        Returns
+        -------
+        distances : ndarray float64 (n,)
+            ``inf`` for vertices no source reaches or beyond ``max_distance``.
+        labels : ndarray int64 (n,), only with ``return_labels=True``
+            Index of the nearest source in the order given: the ``sources`` vertices first, then the
+            ``points``; -1 where the distance is ``inf``. Where two sources are equally near, either.
+
+        Raises
+        ------
+        ValueError
+            No source, an index out of range, invalid barycentric coordinates, a negative limit, an
+            unknown method. TypeError for non-integer indices.
+        """
+        src = source_vertices(sources, points)
+        pf, pb = surface_points(points, self._core.locate)
+        if src.size == 0 and pf.size == 0:
+            raise ValueError("no source: sources is empty and no points are given")
+        tgt = vertex_list(targets, "targets")
+        d, labels, _ = self._core.distances(src, pf, pb, check_float(max_distance, "max_distance"), tgt,
+                                            check_method(method), check_float(lam, "lam"),
+                                            check_threads(threads), bool(return_labels))
+        return (d, labels) if return_labels else d
+
+    def path(self, target, sources=SOURCE_DEFAULT, *, points=None, max_distance=_math.inf, return_locations=False):
+        """The geodesic path from the nearest source to ``target``.
+
+        Parameters
+        ----------
+        target : int, (face, barycentric) or xyz
+            A vertex index, a point of the surface as a face index and 3 barycentric coordinates (with
+            respect to F[face]), or a position (3,) replaced by the nearest surface point.
+        sources, points, max_distance
+            As in ``distances()``.
+        return_locations : bool, default False
+            Also return the path as face locations.
+
+        Returns
+        -------
+        points : ndarray float64 (k, 3)
+            The path **from the source to the target**: the source first, the target last, with the edge
+            crossings and the saddle or boundary vertices it turns at in between. Its length equals the
+            distance of the target (up to rounding).
+        faces, barycentric : ndarray int64 (k,), float64 (k, 3), only with ``return_locations=True``
+            The same points as face locations (a vertex as a corner of one of its faces).
+
+        Raises
+        ------
+        ValueError
+            If no source reaches the target (or it is beyond ``max_distance``), or bad input as in
+            ``distances()``.
+        """
+        src = source_vertices(sources, points)
+        pf, pb = surface_points(points, self._core.locate)
+        if src.size == 0 and pf.size == 0:
+            raise ValueError("no source: sources is empty and no points are given")
+        tv, tf, tb = one_point(target, self._core.locate, "target")
+        P, faces, bary, _d = self._core.path(tv, tf, tb, src, pf, pb, check_float(max_distance, "max_distance"))
+        return (P, faces, bary) if return_locations else P
+
+    def distance(self, a, b, *, method="vtp", lam=recommended_lambda):
+        """The geodesic distance between ``a`` and ``b`` (each a vertex index, a (face, barycentric) pair or
+        an xyz position, as ``target`` of ``path()``). The propagation from ``a`` stops as soon as the
+        distance of ``b`` is final. Returns a float (``inf`` if ``b`` is not reachable from ``a``)."""
+        av, af, ab = one_point(a, self._core.locate, "a")
+        bv, bf, bb = one_point(b, self._core.locate, "b")
+        return self._core.distance(av, af, ab, bv, bf, bb, check_method(method), check_float(lam, "lam"))
+
+    def locate(self, xyz):
+        """The nearest points of the surface to positions ``xyz`` (k, 3): ``(faces int64 (k,), barycentric
+        float64 (k, 3))``, barycentric coordinates with respect to F[face]. An AABB tree of the faces is
+        built on the first call."""
+        return self._core.locate(xyz_rows(xyz))
