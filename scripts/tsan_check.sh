@@ -22,7 +22,7 @@ if [ "${#need[@]}" -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive "${SUDO[@]}" apt-get install -y --no-install-recommends "${need[@]}"
 fi
 
-# -O1 -g1 (line tables), as the AddressSanitizer build of .ci/run: 43% less compile time than RelWithDebInfo's
+# -O1 -g1 (line tables): 43% less compile time than RelWithDebInfo's
 # -O2 -g (27 s against 47 s of processor time for test/VTP_geodesics/stress_vtp.cpp), readable reports.
 CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
   -DVTP_GEODESICS_SANITIZE=thread \
