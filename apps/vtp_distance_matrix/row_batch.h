@@ -17,6 +17,8 @@
 
 #include "mesh_input.h"
 
+#include <vtp_support/methods.h>
+
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/property_map.h>
@@ -33,12 +35,12 @@
 
 namespace vtp_matrix {
 
+// How the rows are computed: a sequential method of the table (each row is one sequential propagation; the
+// rows run in parallel), its lambda (approximate methods only), a distance limit.
 struct Row_method
 {
-  bool approximate = false;  // AVTP instead of VTP
-  bool virtual_sources = false;  // VSP instead of VTP
-  int per_vertex = 1;            // its virtual sources per vertex (1 or 2)
-  double lambda = CGAL::VTP_geodesics::recommended_lambda;
+  const vtp_support::Method_info* method = vtp_support::find_method("vtp");
+  double lambda = vtp_support::default_lambda;
   double max_distance = std::numeric_limits<double>::infinity();  // the distance limit (none: +inf)
 };
 
@@ -61,11 +63,8 @@ void compute_rows(const Mesh_input& input, const std::vector<std::int64_t>& sour
   if(rows.empty())
     return;
   const double infinity = std::numeric_limits<double>::infinity();
-  const auto np = CGAL::VTP_geodesics::parameters::number_of_threads((std::max)(threads, 1))
-                    .lambda(method.approximate ? method.lambda : infinity)
-                    .maximum_distance(method.max_distance)
-                    .virtual_sources(method.virtual_sources)
-                    .virtual_sources_per_vertex(method.per_vertex);
+  const auto np = vtp_support::method_parameters(*method.method, method.lambda, (std::max)(threads, 1))
+                    .maximum_distance(method.max_distance);
   Solver solver(input.mesh, CGAL::VTP_geodesics::parameters::number_of_threads((std::max)(threads, 1)));
 
   // The solver's index of each mesh vertex (by Surface_mesh index), and the file's vertex of each column.

@@ -54,14 +54,6 @@ std::string number_text(double v)
   return text;
 }
 
-// The name of the method, as given to --method.
-const char* method_name(const Arguments& a)
-{
-  if(a.virtual_sources)
-    return a.per_vertex == 2 ? "vsp2" : "vsp";
-  return a.approximate ? "avtp" : "vtp";
-}
-
 // Everything that determines the bytes of the output, one "key=value" per line. A partial output is
 // resumed, and a complete one accepted by --resume, only with the same signature. The number of
 // threads and of ranks is not part of it: it does not change the result.
@@ -78,8 +70,8 @@ std::string run_signature(const Arguments& a, const Mesh_input& input, const std
   s += "sources=" + std::to_string(sources.size()) + " " + h.hex() + "\n";
   s += std::string("layout=") + (a.has_max_distance ? "csr" : "dense") + "\n";
   s += std::string("values=") + (a.float32 ? "float32" : "float64") + "\n";
-  s += std::string("method=") + method_name(a) + "\n";
-  s += "lambda=" + (a.approximate ? number_text(a.lambda) : std::string("-")) + "\n";
+  s += std::string("method=") + a.method->name + "\n";
+  s += "lambda=" + (a.method->approximate ? number_text(a.lambda) : std::string("-")) + "\n";
   s += "max_distance=" + (a.has_max_distance ? number_text(a.max_distance) : std::string("-")) + "\n";
   return s;
 }
@@ -137,10 +129,10 @@ int run(Job& job, int argc, char** argv)
   spec.file.columns = static_cast<std::int64_t>(input.file_vertices);
   spec.file.float32 = args.float32;
   spec.file.signature = run_signature(args, input, sources);
-  spec.file.text_attributes = { { "method", method_name(args) },
+  spec.file.text_attributes = { { "method", args.method->name },
                                 { "format", args.has_max_distance ? "csr" : "dense" } };
   const double infinity = std::numeric_limits<double>::infinity();
-  spec.file.number_attributes = { { "lambda", args.approximate ? args.lambda : infinity },
+  spec.file.number_attributes = { { "lambda", args.method->approximate ? args.lambda : infinity },
                                   { "max_distance", args.has_max_distance ? args.max_distance : infinity } };
   spec.file.integer_attributes = { { "mesh_vertices", static_cast<std::int64_t>(input.file_vertices) } };
   Matrix_store store(job, spec);
@@ -156,9 +148,7 @@ int run(Job& job, int argc, char** argv)
   const bool show = job.is_root() && (args.progress == 1 || (args.progress == -1 && isatty(2)));
   Progress progress(show, total, before);
   Row_method method;
-  method.approximate = args.approximate;
-  method.virtual_sources = args.virtual_sources;
-  method.per_vertex = args.per_vertex;
+  method.method = args.method;
   method.lambda = args.lambda;
   method.max_distance = args.max_distance;  // +inf without --max-distance
   const int threads = args.threads > 0 ? args.threads : default_thread_count();
