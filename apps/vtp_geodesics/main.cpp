@@ -271,6 +271,7 @@ int run(int argc, char** argv)
   Report report;
   report.mesh = mesh_file;
   report.reader = input.reader;
+  report.method = method.name;
   report.repairs = input.repairs.summary();
   report.vertices = input.file_vertices;
   report.faces = input.file_faces;

@@ -14,10 +14,10 @@
 #include <vtp_support/mesh_formats.h>
 #include <vtp_support/number_format.h>
 #include <vtp_support/picture.h>
+#include <vtp_support/statistics.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <sstream>
 
@@ -156,30 +156,9 @@ void write_samples(std::ostream& os, const std::vector<std::size_t>& samples, co
 
 namespace {
 
-std::string json_string(const std::string& s)
-{
-  std::string r = "\"";
-  for(unsigned char c : s)
-  {
-    if(c == '"') r += "\\\"";
-    else if(c == '\\') r += "\\\\";
-    else if(c < 0x20)
-    {
-      char buffer[8];
-      std::snprintf(buffer, sizeof(buffer), "\\u%04x", static_cast<unsigned>(c));
-      r += buffer;
-    }
-    else r += static_cast<char>(c);
-  }
-  return r + "\"";
-}
+using vtp_support::json_value;
 
-std::string json_number(double x)
-{
-  if(!std::isfinite(x))
-    return "null";
-  return vtp_support::double_to_string(x);
-}
+std::string json_value_or_null(bool has_value, double x) { return has_value ? json_value(x) : std::string("null"); }
 
 } // namespace
 
@@ -188,55 +167,52 @@ std::string stats_json(const Report& r)
   const Run_result& s = *r.run;
   std::ostringstream os;
   os << "{"
-     << "\"mesh\": " << json_string(r.mesh)
+     << "\"mesh\": " << json_value(r.mesh)
      << ", \"vertices\": " << r.vertices
      << ", \"faces\": " << r.faces
      << ", \"mesh_vertices\": " << s.mesh_vertices
      << ", \"mesh_faces\": " << s.mesh_faces
-     << ", \"reader\": " << json_string(r.reader)
-     << ", \"repairs\": " << json_string(r.repairs)
+     << ", \"reader\": " << json_value(r.reader)
+     << ", \"repairs\": " << json_value(r.repairs)
      << ", \"sources\": " << r.sources
      << ", \"source\": " << (r.single_vertex_source ? std::to_string(r.source) : std::string("null"))
-     << ", \"max_distance_limit\": " << (r.has_max_distance ? json_number(r.max_distance_limit) : std::string("null"))
+     << ", \"max_distance_limit\": " << json_value_or_null(r.has_max_distance, r.max_distance_limit)
      << ", \"targets\": " << r.targets
      << ", \"paths\": " << r.paths
-     << ", \"stopped_early\": " << (s.stopped_early ? "true" : "false")
-     << ", \"method\": " << json_string(s.method)
-     << ", \"threads\": " << s.threads
+     << ", \"method\": " << json_value(r.method)
      << ", \"preprocessing_threads\": " << s.preprocessing_threads
-     << ", \"seconds\": " << json_number(s.propagation_seconds)
-     << ", \"read_seconds\": " << json_number(r.read_seconds)
-     << ", \"repair_seconds\": " << json_number(r.repair_seconds)
-     << ", \"preprocessing_seconds\": " << json_number(s.preprocessing_seconds)
-     << ", \"propagation_seconds\": " << json_number(s.propagation_seconds)
-     << ", \"write_seconds\": " << json_number(r.write_seconds)
-     << ", \"total_seconds\": " << json_number(r.total_seconds)
-     << ", \"peak_rss_mb\": " << json_number(r.peak_rss_mb)
-     << ", \"windows_created\": " << s.windows_created
-     << ", \"windows_propagated\": " << s.windows_propagated
-     << ", \"peak_live_windows\": " << s.peak_live_windows
-     << ", \"peak_window_bytes\": " << s.peak_window_bytes
-     << ", \"vertices_processed\": " << s.vertices_processed
-     << ", \"pseudo_sources\": " << s.pseudo_sources
-     << ", \"resets\": " << s.resets
+     << ", \"read_seconds\": " << json_value(r.read_seconds)
+     << ", \"repair_seconds\": " << json_value(r.repair_seconds)
+     << ", \"preprocessing_seconds\": " << json_value(s.preprocessing_seconds)
+     << ", \"propagation_seconds\": " << json_value(s.statistics.seconds)
+     << ", \"write_seconds\": " << json_value(r.write_seconds)
+     << ", \"total_seconds\": " << json_value(r.total_seconds)
+     << ", \"peak_rss_mb\": " << json_value(r.peak_rss_mb)
      << ", \"reached_vertices\": " << r.reached_vertices
-     << ", \"max_distance\": " << json_number(r.max_distance)
-     << ", \"mean_edge_length\": " << json_number(s.mean_edge_length)
-     << ", \"anisotropy\": " << json_number(s.anisotropy);
+     << ", \"max_distance\": " << json_value(r.max_distance)
+     << ", \"mean_edge_length\": " << json_value(s.mean_edge_length)
+     << ", \"anisotropy\": " << json_value(s.anisotropy);
   if(!s.samples.empty())
   {
     const auto areas = std::minmax_element(s.cell_areas.begin(), s.cell_areas.end());
     os << ", \"samples\": " << s.samples.size()
-       << ", \"covering_radius\": " << json_number(s.radii.back())
-       << ", \"min_cell_area\": " << json_number(*areas.first)
-       << ", \"max_cell_area\": " << json_number(*areas.second);
+       << ", \"covering_radius\": " << json_value(s.radii.back())
+       << ", \"min_cell_area\": " << json_value(*areas.first)
+       << ", \"max_cell_area\": " << json_value(*areas.second);
   }
   if(r.checked)
-    os << ", \"cgal_seconds\": " << json_number(s.cgal_seconds)
-       << ", \"max_abs_diff\": " << json_number(r.comparison.max_abs_diff)
-       << ", \"max_rel_diff\": " << json_number(r.comparison.max_rel_diff)
-       << ", \"mean_rel_diff\": " << json_number(r.comparison.mean_rel_diff)
+    os << ", \"cgal_seconds\": " << json_value(s.cgal_seconds)
+       << ", \"max_abs_diff\": " << json_value(r.comparison.max_abs_diff)
+       << ", \"max_rel_diff\": " << json_value(r.comparison.max_rel_diff)
+       << ", \"mean_rel_diff\": " << json_value(r.comparison.mean_rel_diff)
        << ", \"mismatched_infinities\": " << r.comparison.mismatched_infinities;
+  // Then the library's statistics, from their description (vtp_support/statistics.h): threads, seconds (the same
+  // as propagation_seconds), the window counts, stopped_early, ... Six of its names are members above, with the
+  // tool's meaning, and are not written again: vertices, faces, sources, reached_vertices and max_distance are
+  // those of the file (the description's: of the mesh of the computation, counting the copies that a repair
+  // made), and method is the method asked for (the description's: the one that ran, "vtp" when none did).
+  vtp_support::write_statistics_json(os, s.statistics, ", ",
+                                     { "vertices", "faces", "sources", "reached_vertices", "max_distance", "method" });
   os << "}\n";
   return os.str();
 }
@@ -244,16 +220,17 @@ std::string stats_json(const Report& r)
 void print_summary(std::ostream& os, const Report& r)
 {
   const Run_result& s = *r.run;
+  const CGAL::VTP_geodesics::Propagation_statistics& st = s.statistics;
   os << "mesh: " << r.mesh << "\n"
      << "vertices: " << r.vertices << ", faces: " << r.faces << (r.sources == 1 ? ", source: " : ", sources: ")
      << r.sources_text << "\n"
-     << "method: " << s.method << ", propagation: " << s.propagation_seconds
+     << "method: " << r.method << ", propagation: " << st.seconds
      << " s, preprocessing: " << s.preprocessing_seconds << " s, reading: " << r.read_seconds + r.repair_seconds
      << " s\n"
      << "max distance: " << r.max_distance << " (" << r.reached_vertices << " of " << r.vertices
-     << " vertices reached" << (s.stopped_early ? "; stopped early" : "") << ")\n"
-     << "windows: " << s.windows_created << " created, " << s.windows_propagated << " propagated, peak "
-     << s.peak_live_windows << " alive (" << s.peak_window_bytes << " bytes)\n";
+     << " vertices reached" << (st.stopped_early ? "; stopped early" : "") << ")\n"
+     << "windows: " << st.windows_created << " created, " << st.windows_propagated << " propagated, peak "
+     << st.peak_live_windows << " alive (" << st.peak_window_bytes << " bytes)\n";
   if(!s.samples.empty())
   {
     const auto areas = std::minmax_element(s.cell_areas.begin(), s.cell_areas.end());

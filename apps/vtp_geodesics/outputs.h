@@ -30,6 +30,7 @@ struct Report
 {
   std::string mesh;                        // file name
   std::string reader;                      // which reader read it
+  std::string method;                      // the method asked for (--method)
   std::string repairs;                     // what the repair did; empty if nothing
   std::size_t vertices = 0, faces = 0;     // of the file
   std::size_t sources = 0;                 // number of sources (vertices and points of the command line)
