@@ -11,7 +11,8 @@
 // continues with --resume. See README.md, section "Many sources", and the files of this folder:
 //   arguments.*      the command line            source_list.*   --sources
 //   mesh_input.h     reading the mesh (support/) and its hash
-//   row_batch.h      computing the rows (the library's batch call, compute_each)
+//   vtp_support/distance_rows.h  computing the rows (the library's batch call, compute_each; shared with the
+//                    benchmark's matrix_benchmark)
 //   matrix_store.*   output files, journal, resume, sparse assembly
 //   hdf5_layout.*    the HDF5 file               raw_file.*      positioned writes (POSIX or MPI-IO)
 //   job.*            MPI ranks, errors agreed by all ranks, progress counts   progress.*  the progress line
@@ -22,9 +23,11 @@
 #include "matrix_store.h"
 #include "mesh_input.h"
 #include "progress.h"
-#include "row_batch.h"
 #include "source_list.h"
 #include "tool_error.h"
+
+#include <vtp_support/distance_rows.h>
+#include <vtp_support/methods.h>
 
 #include <CGAL/assertions_behaviour.h>
 
@@ -39,6 +42,10 @@
 
 #include <unistd.h> // isatty
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #ifndef VTP_GEODESICS_VERSION
 #define VTP_GEODESICS_VERSION "unknown"
 #endif
@@ -46,6 +53,16 @@
 using namespace vtp_matrix;
 
 namespace {
+
+// The number of threads when none is asked for: OpenMP's default.
+int default_thread_count()
+{
+#ifdef _OPENMP
+  return omp_get_max_threads();
+#else
+  return 1;
+#endif
+}
 
 std::string number_text(double v)
 {
@@ -147,14 +164,14 @@ int run(Job& job, int argc, char** argv)
   const std::int64_t before = store.rows_done_before();
   const bool show = job.is_root() && (args.progress == 1 || (args.progress == -1 && isatty(2)));
   Progress progress(show, total, before);
-  Row_method method;
+  vtp_support::Row_method method;
   method.method = args.method;
   method.lambda = args.lambda;
   method.max_distance = args.max_distance;  // +inf without --max-distance
   const int threads = args.threads > 0 ? args.threads : default_thread_count();
   try
   {
-    compute_rows(input, sources, store.rows_to_compute(), method, threads,
+    vtp_support::compute_rows(input, sources, store.rows_to_compute(), method, threads,
                  [&](std::int64_t row, std::int64_t, const std::vector<double>& distances) {
                    store.write_row(row, distances.data());
                    if(job.is_root())

@@ -26,11 +26,11 @@
 
 #include "arguments.h"
 #include "locate.h"
+#include "output_file.h"
 #include "outputs.h"
 #include "run.h"
 
 #include <vtp_support/number_format.h>
-#include <vtp_support/output_file.h>
 #include <vtp_support/read_mesh.h>
 #include <vtp_support/shortest_path_reference.h>
 
@@ -315,45 +315,45 @@ int run(int argc, char** argv)
   // Outputs: every file is written completely (regular files to a temporary file), and only then are they
   // renamed over their targets.
   const Clock::time_point write_start = Clock::now();
-  std::vector<std::unique_ptr<vtp_support::Output_file> > files;
-  auto open_output = [&files](const std::string& name) -> vtp_support::Output_file& {
-    files.emplace_back(new vtp_support::Output_file(name));
+  std::vector<std::unique_ptr<Output_file> > files;
+  auto open_output = [&files](const std::string& name) -> Output_file& {
+    files.emplace_back(new Output_file(name));
     return *files.back();
   };
   if(!args.output.empty())
   {
-    vtp_support::Output_file& f = open_output(args.output);
+    Output_file& f = open_output(args.output);
     write_distances(f.stream(), distance_format(args.output), input, distances, several_sources ? &labels : nullptr,
                     report.max_distance);
     f.close();
   }
   if(!args.labels.empty())
   {
-    vtp_support::Output_file& f = open_output(args.labels);
+    Output_file& f = open_output(args.labels);
     write_labels(f.stream(), labels);
     f.close();
   }
   if(!args.target_output.empty())
   {
-    vtp_support::Output_file& f = open_output(args.target_output);
+    Output_file& f = open_output(args.target_output);
     vtp_support::write_values_text(f.stream(), target_distances);
     f.close();
   }
   if(!args.samples_output.empty())
   {
-    vtp_support::Output_file& f = open_output(args.samples_output);
+    Output_file& f = open_output(args.samples_output);
     write_samples(f.stream(), samples, result.radii);
     f.close();
   }
   if(!args.path_output.empty())
   {
-    vtp_support::Output_file& f = open_output(args.path_output);
+    Output_file& f = open_output(args.path_output);
     write_paths(f.stream(), path_format(args.path_output), paths);
     f.close();
   }
   if(picture)
   {
-    vtp_support::Output_file& f = open_output(args.picture);
+    Output_file& f = open_output(args.picture);
     Picture_request p;
     p.isolines = args.isolines;
     p.has_view = args.has_view;
@@ -381,16 +381,16 @@ int run(int argc, char** argv)
   report.peak_rss_mb = peak_rss_mb();
   if(!args.stats_json.empty())
   {
-    vtp_support::Output_file& f = open_output(args.stats_json);
+    Output_file& f = open_output(args.stats_json);
     f.stream() << stats_json(report);
     f.close();
   }
-  for(const std::unique_ptr<vtp_support::Output_file>& f : files)
+  for(const std::unique_ptr<Output_file>& f : files)
     f->commit();
 
   // Text for people, on standard output unless it carries data.
   bool stdout_has_data = false;
-  for(const std::unique_ptr<vtp_support::Output_file>& f : files)
+  for(const std::unique_ptr<Output_file>& f : files)
     stdout_has_data = stdout_has_data || f->writes_to_stdout();
   if(args.output.empty() && args.stats_json.empty() && !stdout_has_data)
     print_summary(std::cout, report);
@@ -431,7 +431,7 @@ int main(int argc, char** argv)
   }
   catch(const Tool_error& e) { return fail(e.what()); }
   catch(const vtp_support::Input_error& e) { return fail(e.what()); }
-  catch(const vtp_support::Output_error& e) { return fail(e.what()); }
+  catch(const Output_error& e) { return fail(e.what()); }
   catch(const CGAL::VTP_geodesics::Invalid_input_error& e) { return fail(e.what()); }
   catch(const std::bad_alloc&) { return fail("out of memory"); }
   catch(const std::exception& e) { return fail(e.what()); }

@@ -9,11 +9,12 @@
 
 #include "outputs.h"
 
-#include <vtp_support/colour_map.h>
-#include <vtp_support/distance_ply.h>
+#include "colour_map.h"
+#include "distance_ply.h"
+#include "picture.h"
+
 #include <vtp_support/mesh_formats.h>
 #include <vtp_support/number_format.h>
-#include <vtp_support/picture.h>
 #include <vtp_support/statistics.h>
 
 #include <algorithm>
@@ -39,9 +40,9 @@ void write_distances(std::ostream& os, Distance_format format, const vtp_support
   std::string comment = "VTP_geodesics: geodesic distances (property distance; inf: unreachable)";
   if(labels != nullptr)
     comment += "\nsource: index of the nearest source (-1: none)";
-  comment += "\ncolours: " + std::string(vtp_support::colour_map_name()) + " from 0 to "
+  comment += "\ncolours: " + std::string(colour_map_name()) + " from 0 to "
              + vtp_support::double_to_string(max_distance) + "; grey: unreachable";
-  vtp_support::write_distance_ply(os, input, distances, labels, max_distance, comment);
+  write_distance_ply(os, input, distances, labels, max_distance, comment);
 }
 
 void write_labels(std::ostream& os, const std::vector<int>& labels)
@@ -113,14 +114,14 @@ void write_paths(std::ostream& os, Path_format format, const std::vector<std::ve
 void write_picture(std::ostream& os, const vtp_support::Mesh& mesh, const std::vector<double>& mesh_distances,
                    double max_distance, const Picture_request& request)
 {
-  vtp_support::Picture_options options;
+  Picture_options options;
   options.isolines = request.isolines;
   if(request.has_view)
   {
     options.has_view = true;
     options.view = request.view;
   }
-  vtp_support::Distance_picture picture(options);
+  Distance_picture picture(options);
   if(request.labels != nullptr)
     picture.set_labels(*request.labels);
   const vtp_support::Mesh::size_type nv = mesh.number_of_vertices();
