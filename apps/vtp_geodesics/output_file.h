@@ -344,6 +344,39 @@ private:
   std::unique_ptr<std::ostream> m_stream;
 };
 
+// The output files of one run: opened and written one after the other, then all committed together (nothing
+// is replaced unless every file was written).
+class Output_files
+{
+public:
+  // Opens `name` (see Output_file), calls write(stream), and closes the file.
+  template <class Write>
+  void write(const std::string& name, const Write& write)
+  {
+    m_files.emplace_back(new Output_file(name));
+    write(m_files.back()->stream());
+    m_files.back()->close();
+  }
+
+  // Commits every file, in the order they were written.
+  void commit()
+  {
+    for(const std::unique_ptr<Output_file>& f : m_files)
+      f->commit();
+  }
+
+  bool writes_to_stdout() const
+  {
+    for(const std::unique_ptr<Output_file>& f : m_files)
+      if(f->writes_to_stdout())
+        return true;
+    return false;
+  }
+
+private:
+  std::vector<std::unique_ptr<Output_file> > m_files;
+};
+
 } // namespace vtp_geodesics_app
 
 #endif // VTP_GEODESICS_APP_OUTPUT_FILE_H

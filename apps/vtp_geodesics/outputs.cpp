@@ -15,12 +15,8 @@
 
 #include <vtp_support/mesh_formats.h>
 #include <vtp_support/number_format.h>
-#include <vtp_support/statistics.h>
 
-#include <algorithm>
-#include <cmath>
 #include <string>
-#include <sstream>
 
 namespace vtp_geodesics_app {
 
@@ -128,7 +124,8 @@ void write_picture(std::ostream& os, const vtp_support::Mesh& mesh, const std::v
   picture.set_mesh(
     static_cast<std::size_t>(nv),
     [&mesh](std::size_t i) {
-      const vtp_support::Point_3& p = mesh.point(vtp_support::Vertex_index(static_cast<vtp_support::Mesh::size_type>(i)));
+      const vtp_support::Point_3& p =
+        mesh.point(vtp_support::Vertex_index(static_cast<vtp_support::Mesh::size_type>(i)));
       return std::array<double, 3>{ { p.x(), p.y(), p.z() } };
     },
     static_cast<std::size_t>(mesh.number_of_faces()),
@@ -157,101 +154,51 @@ void write_samples(std::ostream& os, const std::vector<std::size_t>& samples, co
 
 namespace {
 
-using vtp_support::json_value;
-
-std::string json_value_or_null(bool has_value, double x) { return has_value ? json_value(x) : std::string("null"); }
+std::array<double, 3> point_of_file_vertex(const vtp_support::Input_mesh& input, std::size_t v)
+{
+  const vtp_support::Point_3& p = input.file_point(v);
+  return std::array<double, 3>{ { p.x(), p.y(), p.z() } };
+}
 
 } // namespace
 
-std::string stats_json(const Report& r)
+void write_outputs(Output_files& files, const Arguments& args, const vtp_support::Input_mesh& input,
+                   const Request& request, const Run_result& run, const File_results& results)
 {
-  const Run_result& s = *r.run;
-  std::ostringstream os;
-  os << "{"
-     << "\"mesh\": " << json_value(r.mesh)
-     << ", \"vertices\": " << r.vertices
-     << ", \"faces\": " << r.faces
-     << ", \"mesh_vertices\": " << s.mesh_vertices
-     << ", \"mesh_faces\": " << s.mesh_faces
-     << ", \"reader\": " << json_value(r.reader)
-     << ", \"repairs\": " << json_value(r.repairs)
-     << ", \"sources\": " << r.sources
-     << ", \"source\": " << (r.single_vertex_source ? std::to_string(r.source) : std::string("null"))
-     << ", \"max_distance_limit\": " << json_value_or_null(r.has_max_distance, r.max_distance_limit)
-     << ", \"targets\": " << r.targets
-     << ", \"paths\": " << r.paths
-     << ", \"method\": " << json_value(r.method)
-     << ", \"preprocessing_threads\": " << s.preprocessing_threads
-     << ", \"read_seconds\": " << json_value(r.read_seconds)
-     << ", \"repair_seconds\": " << json_value(r.repair_seconds)
-     << ", \"preprocessing_seconds\": " << json_value(s.preprocessing_seconds)
-     << ", \"propagation_seconds\": " << json_value(s.statistics.seconds)
-     << ", \"write_seconds\": " << json_value(r.write_seconds)
-     << ", \"total_seconds\": " << json_value(r.total_seconds)
-     << ", \"peak_rss_mb\": " << json_value(r.peak_rss_mb)
-     << ", \"reached_vertices\": " << r.reached_vertices
-     << ", \"max_distance\": " << json_value(r.max_distance)
-     << ", \"mean_edge_length\": " << json_value(s.mean_edge_length)
-     << ", \"anisotropy\": " << json_value(s.anisotropy);
-  if(!s.samples.empty())
-  {
-    const auto areas = std::minmax_element(s.cell_areas.begin(), s.cell_areas.end());
-    os << ", \"samples\": " << s.samples.size()
-       << ", \"covering_radius\": " << json_value(s.radii.back())
-       << ", \"min_cell_area\": " << json_value(*areas.first)
-       << ", \"max_cell_area\": " << json_value(*areas.second);
-  }
-  if(r.checked)
-    os << ", \"cgal_seconds\": " << json_value(s.cgal_seconds)
-       << ", \"max_abs_diff\": " << json_value(r.comparison.max_abs_diff)
-       << ", \"max_rel_diff\": " << json_value(r.comparison.max_rel_diff)
-       << ", \"mean_rel_diff\": " << json_value(r.comparison.mean_rel_diff)
-       << ", \"mismatched_infinities\": " << r.comparison.mismatched_infinities;
-  // Then the library's statistics, from their description (vtp_support/statistics.h): threads, seconds (the same
-  // as propagation_seconds), the window counts, stopped_early, ... Six of its names are members above, with the
-  // tool's meaning, and are not written again: vertices, faces, sources, reached_vertices and max_distance are
-  // those of the file (the description's: of the mesh of the computation, counting the copies that a repair
-  // made), and method is the method asked for (the description's: the one that ran, "vtp" when none did).
-  vtp_support::write_statistics_json(os, s.statistics, ", ",
-                                     { "vertices", "faces", "sources", "reached_vertices", "max_distance", "method" });
-  os << "}\n";
-  return os.str();
-}
-
-void print_summary(std::ostream& os, const Report& r)
-{
-  const Run_result& s = *r.run;
-  const CGAL::VTP_geodesics::Propagation_statistics& st = s.statistics;
-  os << "mesh: " << r.mesh << "\n"
-     << "vertices: " << r.vertices << ", faces: " << r.faces << (r.sources == 1 ? ", source: " : ", sources: ")
-     << r.sources_text << "\n"
-     << "method: " << r.method << ", propagation: " << st.seconds
-     << " s, preprocessing: " << s.preprocessing_seconds << " s, reading: " << r.read_seconds + r.repair_seconds
-     << " s\n"
-     << "max distance: " << r.max_distance << " (" << r.reached_vertices << " of " << r.vertices
-     << " vertices reached" << (st.stopped_early ? "; stopped early" : "") << ")\n"
-     << "windows: " << st.windows_created << " created, " << st.windows_propagated << " propagated, peak "
-     << st.peak_live_windows << " alive (" << st.peak_window_bytes << " bytes)\n";
-  if(!s.samples.empty())
-  {
-    const auto areas = std::minmax_element(s.cell_areas.begin(), s.cell_areas.end());
-    double total = 0.;
-    for(double a : s.cell_areas)
-      total += a;
-    os << "farthest points: " << s.samples.size() << (s.samples.size() == 1 ? " sample" : " samples") << ", covering radius " << s.radii.back() << "\n"
-       << "Voronoi cells: area " << *areas.first << " to " << *areas.second << " (total " << total << ")\n";
-  }
-  if(!r.repairs.empty())
-    os << "triangle mesh: " << s.mesh_vertices << " vertices, " << s.mesh_faces << " faces\n";
-}
-
-void print_check(std::ostream& os, const Report& r)
-{
-  os << "CGAL Surface_mesh_shortest_path: " << r.run->cgal_seconds << " s, max abs diff "
-     << r.comparison.max_abs_diff << ", max rel diff " << r.comparison.max_rel_diff;
-  if(r.comparison.mismatched_infinities != 0)
-    os << ", " << r.comparison.mismatched_infinities << " reachability mismatches";
-  os << "\n";
+  if(!args.output.empty())
+    files.write(args.output, [&](std::ostream& os) {
+      write_distances(os, distance_format(args.output), input, results.distances,
+                      args.several_sources() ? &results.labels : nullptr, results.max_distance);
+    });
+  if(!args.labels.empty())
+    files.write(args.labels, [&](std::ostream& os) { write_labels(os, results.labels); });
+  if(!args.target_output.empty())
+    files.write(args.target_output,
+                [&](std::ostream& os) { vtp_support::write_values_text(os, results.target_distances); });
+  if(!args.samples_output.empty())
+    files.write(args.samples_output, [&](std::ostream& os) { write_samples(os, results.samples, run.radii); });
+  if(!args.path_output.empty())
+    files.write(args.path_output,
+                [&](std::ostream& os) { write_paths(os, path_format(args.path_output), results.paths); });
+  if(!args.picture.empty())
+    files.write(args.picture, [&](std::ostream& os) {
+      // the mesh of the computation, with the sources (or the samples) and the paths
+      Picture_request p;
+      p.isolines = args.isolines;
+      p.has_view = args.has_view;
+      p.view = args.view;
+      for(std::size_t v : args.sources)
+        p.markers.push_back(point_of_file_vertex(input, v));
+      for(const Located_point& q : request.source_points)
+        p.markers.push_back(q.point);
+      for(std::size_t v : results.samples)
+        p.markers.push_back(point_of_file_vertex(input, v));
+      p.polylines = results.paths;
+      if(args.colour_labels)
+        p.labels = &run.labels;
+      write_picture(os, input.mesh, input.direct ? results.distances : results.mesh_distances, results.max_distance,
+                    p);
+    });
 }
 
 } // namespace vtp_geodesics_app
