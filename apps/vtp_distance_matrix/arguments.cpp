@@ -4,14 +4,30 @@
 #include "arguments.h"
 #include "tool_error.h"
 
+#include <vtp_support/methods.h>
+
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace vtp_matrix {
 
 namespace {
 
 using vtp_support::parse_double;
+
+// The methods --method accepts: the sequential ones of the table, "vtp, avtp, vsp or vsp2".
+std::string sequential_method_names()
+{
+  std::vector<std::string> names;
+  for(const vtp_support::Method_info* m = vtp_support::methods_begin(); m != vtp_support::methods_end(); ++m)
+    if(!m->parallel)
+      names.push_back(m->name);
+  std::string s;
+  for(std::size_t i = 0; i < names.size(); ++i)
+    s += (i == 0 ? "" : (i + 1 == names.size() ? " or " : ", ")) + names[i];
+  return s;
+}
 
 // The options, in the order of the help.
 const vtp_support::Option_table<Arguments> options = {
@@ -50,11 +66,9 @@ const vtp_support::Option_table<Arguments> options = {
       "(vsp: approximate, an upper bound, the fastest; vsp2: two virtual\n"
       "sources per vertex, half the error of vsp, 1.3-2x its time)",
       [](Arguments& a, const std::string&, const std::string& m) {
-        if(m != "vtp" && m != "avtp" && m != "vsp" && m != "vsp2")
-          throw Tool_error("unknown method '" + m + "' (expected vtp, avtp, vsp or vsp2)");
-        a.approximate = m == "avtp";
-        a.virtual_sources = m == "vsp" || m == "vsp2";
-        a.per_vertex = m == "vsp2" ? 2 : 1;
+        a.method = vtp_support::find_method(m);
+        if(a.method == nullptr || a.method->parallel)
+          throw Tool_error("unknown method '" + m + "' (expected " + sequential_method_names() + ")");
       } },
     { "--lambda", "L", "reset period of avtp, in mean edge lengths (default 8)",
       [](Arguments& a, const std::string& n, const std::string& v) {
@@ -106,6 +120,7 @@ void print_usage(std::ostream& os)
 Arguments parse_arguments(int argc, char** argv)
 {
   Arguments a;
+  a.method = vtp_support::find_method("vtp");
   vtp_support::parse_command_line(argc, argv, options, a, [](Arguments& a, const std::string& arg) {
     if(arg.empty() || arg == "-")
       throw Tool_error("invalid mesh file name '" + arg + "'");
@@ -121,7 +136,7 @@ Arguments parse_arguments(int argc, char** argv)
     throw Tool_error("no --sources given (all, A:B, V,V,... or a file)");
   if(a.output.empty())
     throw Tool_error("no --output file given");
-  if(a.has_lambda && !a.approximate)
+  if(a.has_lambda && !a.method->approximate)
     throw Tool_error("--lambda needs --method avtp");
   if(a.resume && a.force)
     throw Tool_error("--resume and --force exclude each other");

@@ -7,6 +7,10 @@
 #include <ostream>
 #include <string>
 
+namespace vtp_support {
+struct Method_info;
+}
+
 namespace vtp_matrix {
 
 struct Arguments
@@ -17,9 +21,8 @@ struct Arguments
   bool float32 = false;
   bool has_max_distance = false;  // with a distance limit, the rows are sparse (CSR)
   double max_distance = std::numeric_limits<double>::infinity();
-  bool approximate = false;       // --method avtp
-  bool virtual_sources = false;   // --method vsp or vsp2
-  int per_vertex = 1;             // virtual sources per vertex: 2 with --method vsp2
+  // --method: a sequential method of the table (vtp_support/methods.h; the rows run in parallel); vtp by default
+  const vtp_support::Method_info* method = nullptr;
   double lambda = 8.;             // AVTP reset period (mean edge lengths), --lambda
   bool has_lambda = false;
   int threads = 0;                // 0: OpenMP's default

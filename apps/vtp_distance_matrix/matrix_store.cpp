@@ -1,8 +1,11 @@
 // vtp_distance_matrix: the output file, written row by row, and resumable after any kill (see
-// matrix_store.h for the files and the order of the writes).
+// matrix_store.h for the files and the order of the writes): the start of a run, a new one or one that resumes
+// (the files found, the plan of rank 0 broadcast to every rank, the journal). Writing the rows and finishing
+// the file is matrix_store_rows.cpp.
 
 #include "matrix_store.h"
 #include "hashing.h"
+#include "matrix_store_bytes.h"
 #include "tool_error.h"
 
 #include <cmath>
@@ -15,94 +18,38 @@
 #include <unistd.h>
 
 namespace vtp_matrix {
+
+using namespace matrix_store_bytes;
+
 namespace {
 
-const char journal_magic[8] = { 'V', 'T', 'P', 'D', 'M', 'J', '0', '1' };
-// journal header: magic, header bytes, rows, generation, signature bytes (5 x 8 bytes), signature,
-// zeros up to a multiple of 32 bytes; then the entries
-constexpr std::uint64_t generation_field = 24;
-constexpr std::uint64_t header_fields = 40;
-constexpr std::uint64_t entry_bytes = 32;
-// the row data is synced and the journal entries written at most this often (seconds)
-constexpr double commit_period = 1.;
-
-// Plain byte encoding of what rank 0 broadcasts.
-struct Byte_writer
+// The lines of `text`, without their '\n'.
+std::vector<std::string> lines_of(const std::string& text)
 {
-  std::vector<char> bytes;
-  void u64(std::uint64_t v)
+  std::vector<std::string> lines;
+  std::string::size_type at = 0;
+  while(at < text.size())
   {
-    const char* p = reinterpret_cast<const char*>(&v);
-    bytes.insert(bytes.end(), p, p + sizeof(v));
+    std::string::size_type end = text.find('\n', at);
+    if(end == std::string::npos)
+      end = text.size();
+    lines.push_back(text.substr(at, end - at));
+    at = end + 1;
   }
-  void raw(const void* data, std::size_t n)
-  {
-    if(n == 0)
-      return;
-    const char* p = static_cast<const char*>(data);
-    bytes.insert(bytes.end(), p, p + n);
-  }
-};
-
-struct Byte_reader
-{
-  const std::vector<char>& bytes;
-  std::size_t at = 0;
-  std::uint64_t u64()
-  {
-    std::uint64_t v = 0;
-    raw(&v, sizeof(v));
-    return v;
-  }
-  void raw(void* data, std::size_t n)
-  {
-    if(n == 0)
-      return;
-    if(at + n > bytes.size())
-      throw Tool_error("internal error: truncated message between ranks");
-    std::memcpy(data, bytes.data() + at, n);
-    at += n;
-  }
-};
-
-// A file descriptor for reading, closed at the end of its scope.
-struct Read_descriptor
-{
-  int fd;
-  explicit Read_descriptor(const std::string& path) : fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC)) {}
-  Read_descriptor(const Read_descriptor&) = delete;
-  Read_descriptor& operator=(const Read_descriptor&) = delete;
-  ~Read_descriptor()
-  {
-    if(fd >= 0)
-      ::close(fd);
-  }
-};
+  return lines;
+}
 
 // What differs between the signature `then` of a file and the signature `now` of this run.
 std::string describe_difference(const std::string& then, const std::string& now)
 {
   auto value_of = [](const std::string& signature, const std::string& key) {
-    std::string::size_type at = 0;
-    while(at < signature.size())
-    {
-      std::string::size_type end = signature.find('\n', at);
-      if(end == std::string::npos)
-        end = signature.size();
-      const std::string line = signature.substr(at, end - at);
+    for(const std::string& line : lines_of(signature))
       if(line.compare(0, key.size() + 1, key + "=") == 0)
         return line.substr(key.size() + 1);
-      at = end + 1;
-    }
     return std::string("(none)");
   };
-  std::string::size_type at = 0;
-  while(at < now.size())
+  for(const std::string& line : lines_of(now))
   {
-    std::string::size_type end = now.find('\n', at);
-    if(end == std::string::npos)
-      end = now.size();
-    const std::string line = now.substr(at, end - at);
     const std::string key = line.substr(0, line.find('='));
     const std::string a = value_of(then, key), b = value_of(now, key);
     if(a != b)
@@ -111,7 +58,6 @@ std::string describe_difference(const std::string& then, const std::string& now)
         return "another mesh";
       return "other arguments (" + key + ": " + a + " then, " + b + " now)";
     }
-    at = end + 1;
   }
   return "other arguments";
 }
@@ -374,32 +320,19 @@ Matrix_store::Plan Matrix_store::make_plan(bool resume, bool force)
 
 void Matrix_store::open(bool resume, bool force)
 {
-  std::string error;
-  std::vector<char> bytes;
-  if(m_job.is_root())
-  {
-    try
-    {
-      lock();
-      const Plan plan = make_plan(resume, force);
-      Byte_writer w;
-      w.u64(plan.complete ? 1 : 0);
-      w.u64(plan.generation);
-      w.u64(plan.data_offset);
-      w.u64(static_cast<std::uint64_t>(plan.done_before));
-      w.u64(plan.missing.size());
-      w.raw(plan.missing.data(), plan.missing.size() * sizeof(std::int64_t));
-      bytes.swap(w.bytes);
-      m_note = plan.note;
-    }
-    catch(const Tool_error& e)
-    {
-      error = e.what();
-    }
-  }
-  m_job.agree(error);
-  m_job.broadcast(bytes);
+  const std::vector<char> bytes = broadcast_from_root(m_job, [&](Byte_writer& w) {
+    lock();
+    const Plan plan = make_plan(resume, force);
+    w.u64(plan.complete ? 1 : 0);
+    w.u64(plan.generation);
+    w.u64(plan.data_offset);
+    w.u64(static_cast<std::uint64_t>(plan.done_before));
+    w.u64(plan.missing.size());
+    w.raw(plan.missing.data(), plan.missing.size() * sizeof(std::int64_t));
+    m_note = plan.note;
+  });
 
+  std::string error;
   try
   {
     Byte_reader r{ bytes };
@@ -428,226 +361,6 @@ void Matrix_store::open(bool resume, bool force)
   }
   m_job.agree(error);
   m_last_commit = now_seconds();
-}
-
-void Matrix_store::write_row(std::int64_t row, const double* d)
-{
-  const std::size_t columns = static_cast<std::size_t>(m_spec.file.columns);
-  Entry e;
-  e.generation = m_generation;
-  e.rank = static_cast<std::uint32_t>(m_job.rank());
-  if(!m_spec.sparse)
-  {
-    const std::uint64_t at = m_data_offset + static_cast<std::uint64_t>(row) * columns * m_value_bytes;
-    if(m_spec.file.float32)
-    {
-      m_float_row.resize(columns);
-      for(std::size_t j = 0; j < columns; ++j)
-        m_float_row[j] = static_cast<float>(d[j]);
-      m_data.write_at(at, m_float_row.data(), columns * sizeof(float));
-    }
-    else
-      m_data.write_at(at, d, columns * sizeof(double));
-    e.offset = 0;
-    e.count = columns;
-  }
-  else
-  {
-    // The library stops each propagation at the limit and gives +inf beyond it: the entries kept are
-    // the finite ones (<= the limit).
-    m_sparse_indices.clear();
-    m_sparse_values.clear();
-    for(std::size_t j = 0; j < columns; ++j)
-      if(std::isfinite(d[j]) && d[j] <= m_spec.max_distance)
-      {
-        m_sparse_indices.push_back(static_cast<std::int64_t>(j));
-        m_sparse_values.push_back(d[j]);
-      }
-    const std::size_t nnz = m_sparse_indices.size();
-    e.offset = m_spool_end;
-    e.count = nnz;
-    if(nnz > 0)
-    {
-      m_data.write_at(m_spool_end, m_sparse_indices.data(), nnz * sizeof(std::int64_t));
-      if(m_spec.file.float32)
-      {
-        m_float_row.resize(nnz);
-        for(std::size_t k = 0; k < nnz; ++k)
-          m_float_row[k] = static_cast<float>(m_sparse_values[k]);
-        m_data.write_at(m_spool_end + nnz * sizeof(std::int64_t), m_float_row.data(), nnz * sizeof(float));
-      }
-      else
-        m_data.write_at(m_spool_end + nnz * sizeof(std::int64_t), m_sparse_values.data(), nnz * sizeof(double));
-      m_spool_end += nnz * (sizeof(std::int64_t) + m_value_bytes);
-    }
-  }
-  e.check = entry_check(row, e);
-  m_pending.emplace_back(row, e);
-  ++m_rows_written;
-  commit(false);
-}
-
-void Matrix_store::commit(bool now)
-{
-  if(m_pending.empty())
-    return;
-  const double t = now_seconds();
-  if(!now && t - m_last_commit < commit_period)
-    return;
-  // the rows' data reaches the disk before the entries that say they are complete
-  m_data.sync();
-  for(const auto& p : m_pending)
-    m_journal_file.write_at(m_header_bytes + static_cast<std::uint64_t>(p.first) * entry_bytes, &p.second, sizeof(Entry));
-  m_pending.clear();
-  m_last_commit = t;
-}
-
-void Matrix_store::abandon()
-{
-  m_pending.clear();
-  try { m_data.close(false); } catch(const Tool_error&) {}
-  try { m_journal_file.close(false); } catch(const Tool_error&) {}
-}
-
-void Matrix_store::finish()
-{
-  std::string error;
-  try
-  {
-    commit(true);
-    m_data.close(true);
-    m_journal_file.close(true);
-  }
-  catch(const Tool_error& e)
-  {
-    error = e.what();
-  }
-  m_job.agree(error);
-
-  if(m_spec.sparse)
-  {
-    assemble_sparse();
-    return;
-  }
-  if(m_job.is_root())
-  {
-    try
-    {
-      std::uint64_t generation = 0;
-      std::vector<Entry> entries;
-      std::string signature;
-      if(!read_journal(generation, entries, signature) || signature != m_spec.file.signature)
-        throw Tool_error("'" + m_journal + "' was changed during the run");
-      for(std::size_t row = 0; row < entries.size(); ++row)
-        if(entries[row].generation == 0 || entries[row].check != entry_check(static_cast<std::int64_t>(row), entries[row]))
-          throw Tool_error("internal error: row " + std::to_string(row) + " was not recorded");
-      rename_file(m_part, m_spec.output);
-      remove_partial_files();
-      unlock();
-    }
-    catch(const Tool_error& e)
-    {
-      error = e.what();
-    }
-  }
-  m_job.agree(error);
-}
-
-void Matrix_store::assemble_sparse()
-{
-  // 1. rank 0: the row lengths from the journal give the row pointers; OUT.part is made with the
-  //    exact sizes (any OUT.part of an earlier, interrupted assembly is replaced).
-  std::string error;
-  std::vector<char> bytes;
-  if(m_job.is_root())
-  {
-    try
-    {
-      std::uint64_t generation = 0;
-      std::vector<Entry> entries;
-      std::string signature;
-      if(!read_journal(generation, entries, signature) || signature != m_spec.file.signature)
-        throw Tool_error("'" + m_journal + "' was changed during the run");
-      std::vector<std::int64_t> indptr(entries.size() + 1, 0);
-      for(std::size_t row = 0; row < entries.size(); ++row)
-      {
-        if(entries[row].generation == 0 || entries[row].check != entry_check(static_cast<std::int64_t>(row), entries[row]))
-          throw Tool_error("internal error: row " + std::to_string(row) + " was not recorded");
-        indptr[row + 1] = indptr[row] + static_cast<std::int64_t>(entries[row].count);
-      }
-      remove_file(m_part);
-      const Sparse_offsets offsets = create_sparse_file(m_part, m_spec.file, indptr);
-      sync_file(m_part);
-      Byte_writer w;
-      w.u64(offsets.data);
-      w.u64(offsets.indices);
-      w.raw(entries.data(), entries.size() * sizeof(Entry));
-      bytes.swap(w.bytes);
-    }
-    catch(const Tool_error& e)
-    {
-      error = e.what();
-    }
-  }
-  m_job.agree(error);
-  m_job.broadcast(bytes);
-
-  // 2. every rank copies every N-th row from its spool to its place, one row in memory at a time
-  try
-  {
-    Byte_reader r{ bytes };
-    const std::uint64_t data_offset = r.u64(), indices_offset = r.u64();
-    std::vector<Entry> entries(m_spec.file.sources.size());
-    r.raw(entries.data(), entries.size() * sizeof(Entry));
-    std::uint64_t position = 0;  // indptr[row], as the rows go by
-    Raw_file part;
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::unique_ptr<Read_descriptor> > spools;
-    std::vector<char> indices, values;
-    for(std::size_t row = 0; row < entries.size(); ++row)
-    {
-      const Entry& e = entries[row];
-      const std::uint64_t start = position;
-      position += e.count;
-      if(row % static_cast<std::size_t>(m_job.size()) != static_cast<std::size_t>(m_job.rank()) || e.count == 0)
-        continue;
-      if(!part.is_open())
-        part.open_existing(m_part, m_job.uses_mpi());
-      std::unique_ptr<Read_descriptor>& spool = spools[std::make_pair(e.generation, e.rank)];
-      const std::string spool_name = spool_path(e.generation, e.rank);
-      if(!spool)
-        spool.reset(new Read_descriptor(spool_name));
-      indices.resize(static_cast<std::size_t>(e.count * sizeof(std::int64_t)));
-      values.resize(static_cast<std::size_t>(e.count * m_value_bytes));
-      if(spool->fd < 0 || !read_at(spool->fd, e.offset, indices.data(), indices.size())
-         || !read_at(spool->fd, e.offset + indices.size(), values.data(), values.size()))
-        throw Tool_error("cannot read '" + spool_name + "'");
-      part.write_at(indices_offset + start * sizeof(std::int64_t), indices.data(), indices.size());
-      part.write_at(data_offset + start * m_value_bytes, values.data(), values.size());
-    }
-    if(part.is_open())
-      part.close(true);
-  }
-  catch(const Tool_error& e)
-  {
-    error = e.what();
-  }
-  m_job.agree(error);
-
-  // 3. rank 0: the complete file takes the name of the output
-  if(m_job.is_root())
-  {
-    try
-    {
-      rename_file(m_part, m_spec.output);
-      remove_partial_files();
-      unlock();
-    }
-    catch(const Tool_error& e)
-    {
-      error = e.what();
-    }
-  }
-  m_job.agree(error);
 }
 
 } // namespace vtp_matrix

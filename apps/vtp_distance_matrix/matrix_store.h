@@ -109,6 +109,8 @@ private:
   bool read_journal(std::uint64_t& generation, std::vector<Entry>& entries, std::string& signature);
   void assemble_sparse();
   std::string spool_path(std::uint32_t generation, std::uint32_t rank) const;
+  // The entries of the journal, every row recorded (else throws Tool_error).
+  std::vector<Entry> recorded_entries();
 
   Job& m_job;
   Matrix_spec m_spec;

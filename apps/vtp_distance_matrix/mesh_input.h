@@ -14,6 +14,8 @@
 
 #include <vtp_support/read_mesh.h>
 
+#include <CGAL/VTP_geodesics/Invalid_input_error.h>
+
 #include <string>
 #include <vector>
 

@@ -11,7 +11,8 @@
 // continues with --resume. See README.md, section "Many sources", and the files of this folder:
 //   arguments.*      the command line            source_list.*   --sources
 //   mesh_input.h     reading the mesh (support/) and its hash
-//   row_batch.h      computing the rows (the library's batch call, compute_each)
+//   vtp_support/distance_rows.h  computing the rows (the library's batch call, compute_each; shared with the
+//                    benchmark's matrix_benchmark)
 //   matrix_store.*   output files, journal, resume, sparse assembly
 //   hdf5_layout.*    the HDF5 file               raw_file.*      positioned writes (POSIX or MPI-IO)
 //   job.*            MPI ranks, errors agreed by all ranks, progress counts   progress.*  the progress line
@@ -22,9 +23,11 @@
 #include "matrix_store.h"
 #include "mesh_input.h"
 #include "progress.h"
-#include "row_batch.h"
 #include "source_list.h"
 #include "tool_error.h"
+
+#include <vtp_support/distance_rows.h>
+#include <vtp_support/methods.h>
 
 #include <CGAL/assertions_behaviour.h>
 
@@ -39,6 +42,10 @@
 
 #include <unistd.h> // isatty
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #ifndef VTP_GEODESICS_VERSION
 #define VTP_GEODESICS_VERSION "unknown"
 #endif
@@ -47,19 +54,21 @@ using namespace vtp_matrix;
 
 namespace {
 
+// The number of threads when none is asked for: OpenMP's default.
+int default_thread_count()
+{
+#ifdef _OPENMP
+  return omp_get_max_threads();
+#else
+  return 1;
+#endif
+}
+
 std::string number_text(double v)
 {
   char text[64];
   std::snprintf(text, sizeof(text), "%.17g", v);
   return text;
-}
-
-// The name of the method, as given to --method.
-const char* method_name(const Arguments& a)
-{
-  if(a.virtual_sources)
-    return a.per_vertex == 2 ? "vsp2" : "vsp";
-  return a.approximate ? "avtp" : "vtp";
 }
 
 // Everything that determines the bytes of the output, one "key=value" per line. A partial output is
@@ -78,8 +87,8 @@ std::string run_signature(const Arguments& a, const Mesh_input& input, const std
   s += "sources=" + std::to_string(sources.size()) + " " + h.hex() + "\n";
   s += std::string("layout=") + (a.has_max_distance ? "csr" : "dense") + "\n";
   s += std::string("values=") + (a.float32 ? "float32" : "float64") + "\n";
-  s += std::string("method=") + method_name(a) + "\n";
-  s += "lambda=" + (a.approximate ? number_text(a.lambda) : std::string("-")) + "\n";
+  s += std::string("method=") + a.method->name + "\n";
+  s += "lambda=" + (a.method->approximate ? number_text(a.lambda) : std::string("-")) + "\n";
   s += "max_distance=" + (a.has_max_distance ? number_text(a.max_distance) : std::string("-")) + "\n";
   return s;
 }
@@ -137,10 +146,10 @@ int run(Job& job, int argc, char** argv)
   spec.file.columns = static_cast<std::int64_t>(input.file_vertices);
   spec.file.float32 = args.float32;
   spec.file.signature = run_signature(args, input, sources);
-  spec.file.text_attributes = { { "method", method_name(args) },
+  spec.file.text_attributes = { { "method", args.method->name },
                                 { "format", args.has_max_distance ? "csr" : "dense" } };
   const double infinity = std::numeric_limits<double>::infinity();
-  spec.file.number_attributes = { { "lambda", args.approximate ? args.lambda : infinity },
+  spec.file.number_attributes = { { "lambda", args.method->approximate ? args.lambda : infinity },
                                   { "max_distance", args.has_max_distance ? args.max_distance : infinity } };
   spec.file.integer_attributes = { { "mesh_vertices", static_cast<std::int64_t>(input.file_vertices) } };
   Matrix_store store(job, spec);
@@ -155,16 +164,14 @@ int run(Job& job, int argc, char** argv)
   const std::int64_t before = store.rows_done_before();
   const bool show = job.is_root() && (args.progress == 1 || (args.progress == -1 && isatty(2)));
   Progress progress(show, total, before);
-  Row_method method;
-  method.approximate = args.approximate;
-  method.virtual_sources = args.virtual_sources;
-  method.per_vertex = args.per_vertex;
+  vtp_support::Row_method method;
+  method.method = args.method;
   method.lambda = args.lambda;
   method.max_distance = args.max_distance;  // +inf without --max-distance
   const int threads = args.threads > 0 ? args.threads : default_thread_count();
   try
   {
-    compute_rows(input, sources, store.rows_to_compute(), method, threads,
+    vtp_support::compute_rows(input, sources, store.rows_to_compute(), method, threads,
                  [&](std::int64_t row, std::int64_t, const std::vector<double>& distances) {
                    store.write_row(row, distances.data());
                    if(job.is_root())

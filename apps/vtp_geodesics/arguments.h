@@ -73,6 +73,8 @@ struct Arguments
   bool help = false;
 
   std::size_t number_of_sources() const { return sources.size() + source_points.size(); }
+  // several sources: the outputs tell the nearest one (the labels)
+  bool several_sources() const { return number_of_sources() > 1 || farthest_points > 1; }
   bool has_targets() const { return !targets.empty() || !target_points.empty(); }
   bool has_paths() const { return !path_to.empty() || !path_to_points.empty(); }
 };

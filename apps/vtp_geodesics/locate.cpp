@@ -11,28 +11,17 @@
 #include "arguments.h"
 
 #include <vtp_support/number_format.h>
-#include <vtp_support/surface_locator.h>
 
 namespace vtp_geodesics_app {
-
-struct Point_locator::Tree
-{
-  explicit Tree(const vtp_support::Mesh& mesh) : locator(mesh) {}
-  vtp_support::Surface_locator locator;
-};
-
-Point_locator::Point_locator(const vtp_support::Mesh& mesh) : m_mesh(mesh), m_tree(new Tree(mesh)) {}
-
-Point_locator::~Point_locator() = default;
 
 Located_point Point_locator::locate(const std::array<double, 3>& p, const std::string& option) const
 {
   Located_point r;
-  if(!m_tree->locator.locate(vtp_support::Point_3(p[0], p[1], p[2]), r.location))
+  if(!m_locator.locate(vtp_support::Point_3(p[0], p[1], p[2]), r.location))
     throw Tool_error("cannot locate the point " + vtp_support::double_to_string(p[0]) + ","
                      + vtp_support::double_to_string(p[1]) + "," + vtp_support::double_to_string(p[2]) + " of " + option
                      + " on the surface (its nearest face is degenerate)");
-  r.point = m_tree->locator.point_of(r.location);
+  r.point = m_locator.point_of(r.location);
   return r;
 }
 

@@ -11,21 +11,20 @@
 #define VTP_GEODESICS_APP_LOCATE_H
 
 // Points given on the command line (--source-point, --target-point, --path-to-point), located on the mesh of
-// the computation: the nearest point of the surface, as a face location (locate.cpp; CGAL's AABB tree and
-// Polygon_mesh_processing::locate live in that file only).
+// the computation: the nearest point of the surface, as a face location (vtp_support/surface_locator.h), or an
+// error that names the option and the point.
 
 #include <vtp_support/read_mesh.h>
+#include <vtp_support/surface_locator.h>
 
 #include <array>
-#include <memory>
 #include <string>
-#include <utility>
 
 namespace vtp_geodesics_app {
 
 // A face and the barycentric coordinates of the point with respect to source(halfedge(f)), target(halfedge(f)),
 // target(next(halfedge(f))): the face location of CGAL::Polygon_mesh_processing and of the library.
-typedef std::pair<vtp_support::Mesh::Face_index, std::array<double, 3> > Face_location;
+typedef vtp_support::Surface_locator::Face_location Face_location;
 
 struct Located_point
 {
@@ -38,19 +37,14 @@ class Point_locator
 {
 public:
   // `mesh` must have a face, and must outlive the locator.
-  explicit Point_locator(const vtp_support::Mesh& mesh);
-  ~Point_locator();
-  Point_locator(const Point_locator&) = delete;
-  Point_locator& operator=(const Point_locator&) = delete;
+  explicit Point_locator(const vtp_support::Mesh& mesh) : m_locator(mesh) {}
 
   // The point of the surface nearest to `p`. Throws Tool_error, naming `option` and the point, if it cannot be
   // located (e.g. its nearest face is degenerate).
   Located_point locate(const std::array<double, 3>& p, const std::string& option) const;
 
 private:
-  struct Tree;
-  const vtp_support::Mesh& m_mesh;
-  std::unique_ptr<Tree> m_tree;
+  vtp_support::Surface_locator m_locator;
 };
 
 } // namespace vtp_geodesics_app

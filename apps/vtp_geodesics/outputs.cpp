@@ -9,17 +9,14 @@
 
 #include "outputs.h"
 
-#include <vtp_support/colour_map.h>
-#include <vtp_support/distance_ply.h>
+#include "colour_map.h"
+#include "distance_ply.h"
+#include "picture.h"
+
 #include <vtp_support/mesh_formats.h>
 #include <vtp_support/number_format.h>
-#include <vtp_support/picture.h>
 
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
 #include <string>
-#include <sstream>
 
 namespace vtp_geodesics_app {
 
@@ -39,9 +36,9 @@ void write_distances(std::ostream& os, Distance_format format, const vtp_support
   std::string comment = "VTP_geodesics: geodesic distances (property distance; inf: unreachable)";
   if(labels != nullptr)
     comment += "\nsource: index of the nearest source (-1: none)";
-  comment += "\ncolours: " + std::string(vtp_support::colour_map_name()) + " from 0 to "
+  comment += "\ncolours: " + std::string(colour_map_name()) + " from 0 to "
              + vtp_support::double_to_string(max_distance) + "; grey: unreachable";
-  vtp_support::write_distance_ply(os, input, distances, labels, max_distance, comment);
+  write_distance_ply(os, input, distances, labels, max_distance, comment);
 }
 
 void write_labels(std::ostream& os, const std::vector<int>& labels)
@@ -113,21 +110,22 @@ void write_paths(std::ostream& os, Path_format format, const std::vector<std::ve
 void write_picture(std::ostream& os, const vtp_support::Mesh& mesh, const std::vector<double>& mesh_distances,
                    double max_distance, const Picture_request& request)
 {
-  vtp_support::Picture_options options;
+  Picture_options options;
   options.isolines = request.isolines;
   if(request.has_view)
   {
     options.has_view = true;
     options.view = request.view;
   }
-  vtp_support::Distance_picture picture(options);
+  Distance_picture picture(options);
   if(request.labels != nullptr)
     picture.set_labels(*request.labels);
   const vtp_support::Mesh::size_type nv = mesh.number_of_vertices();
   picture.set_mesh(
     static_cast<std::size_t>(nv),
     [&mesh](std::size_t i) {
-      const vtp_support::Point_3& p = mesh.point(vtp_support::Vertex_index(static_cast<vtp_support::Mesh::size_type>(i)));
+      const vtp_support::Point_3& p =
+        mesh.point(vtp_support::Vertex_index(static_cast<vtp_support::Mesh::size_type>(i)));
       return std::array<double, 3>{ { p.x(), p.y(), p.z() } };
     },
     static_cast<std::size_t>(mesh.number_of_faces()),
@@ -156,124 +154,51 @@ void write_samples(std::ostream& os, const std::vector<std::size_t>& samples, co
 
 namespace {
 
-std::string json_string(const std::string& s)
+std::array<double, 3> point_of_file_vertex(const vtp_support::Input_mesh& input, std::size_t v)
 {
-  std::string r = "\"";
-  for(unsigned char c : s)
-  {
-    if(c == '"') r += "\\\"";
-    else if(c == '\\') r += "\\\\";
-    else if(c < 0x20)
-    {
-      char buffer[8];
-      std::snprintf(buffer, sizeof(buffer), "\\u%04x", static_cast<unsigned>(c));
-      r += buffer;
-    }
-    else r += static_cast<char>(c);
-  }
-  return r + "\"";
-}
-
-std::string json_number(double x)
-{
-  if(!std::isfinite(x))
-    return "null";
-  return vtp_support::double_to_string(x);
+  const vtp_support::Point_3& p = input.file_point(v);
+  return std::array<double, 3>{ { p.x(), p.y(), p.z() } };
 }
 
 } // namespace
 
-std::string stats_json(const Report& r)
+void write_outputs(Output_files& files, const Arguments& args, const vtp_support::Input_mesh& input,
+                   const Request& request, const Run_result& run, const File_results& results)
 {
-  const Run_result& s = *r.run;
-  std::ostringstream os;
-  os << "{"
-     << "\"mesh\": " << json_string(r.mesh)
-     << ", \"vertices\": " << r.vertices
-     << ", \"faces\": " << r.faces
-     << ", \"mesh_vertices\": " << s.mesh_vertices
-     << ", \"mesh_faces\": " << s.mesh_faces
-     << ", \"reader\": " << json_string(r.reader)
-     << ", \"repairs\": " << json_string(r.repairs)
-     << ", \"sources\": " << r.sources
-     << ", \"source\": " << (r.single_vertex_source ? std::to_string(r.source) : std::string("null"))
-     << ", \"max_distance_limit\": " << (r.has_max_distance ? json_number(r.max_distance_limit) : std::string("null"))
-     << ", \"targets\": " << r.targets
-     << ", \"paths\": " << r.paths
-     << ", \"stopped_early\": " << (s.stopped_early ? "true" : "false")
-     << ", \"method\": " << json_string(s.method)
-     << ", \"threads\": " << s.threads
-     << ", \"preprocessing_threads\": " << s.preprocessing_threads
-     << ", \"seconds\": " << json_number(s.propagation_seconds)
-     << ", \"read_seconds\": " << json_number(r.read_seconds)
-     << ", \"repair_seconds\": " << json_number(r.repair_seconds)
-     << ", \"preprocessing_seconds\": " << json_number(s.preprocessing_seconds)
-     << ", \"propagation_seconds\": " << json_number(s.propagation_seconds)
-     << ", \"write_seconds\": " << json_number(r.write_seconds)
-     << ", \"total_seconds\": " << json_number(r.total_seconds)
-     << ", \"peak_rss_mb\": " << json_number(r.peak_rss_mb)
-     << ", \"windows_created\": " << s.windows_created
-     << ", \"windows_propagated\": " << s.windows_propagated
-     << ", \"peak_live_windows\": " << s.peak_live_windows
-     << ", \"peak_window_bytes\": " << s.peak_window_bytes
-     << ", \"vertices_processed\": " << s.vertices_processed
-     << ", \"pseudo_sources\": " << s.pseudo_sources
-     << ", \"resets\": " << s.resets
-     << ", \"reached_vertices\": " << r.reached_vertices
-     << ", \"max_distance\": " << json_number(r.max_distance)
-     << ", \"mean_edge_length\": " << json_number(s.mean_edge_length)
-     << ", \"anisotropy\": " << json_number(s.anisotropy);
-  if(!s.samples.empty())
-  {
-    const auto areas = std::minmax_element(s.cell_areas.begin(), s.cell_areas.end());
-    os << ", \"samples\": " << s.samples.size()
-       << ", \"covering_radius\": " << json_number(s.radii.back())
-       << ", \"min_cell_area\": " << json_number(*areas.first)
-       << ", \"max_cell_area\": " << json_number(*areas.second);
-  }
-  if(r.checked)
-    os << ", \"cgal_seconds\": " << json_number(s.cgal_seconds)
-       << ", \"max_abs_diff\": " << json_number(r.comparison.max_abs_diff)
-       << ", \"max_rel_diff\": " << json_number(r.comparison.max_rel_diff)
-       << ", \"mean_rel_diff\": " << json_number(r.comparison.mean_rel_diff)
-       << ", \"mismatched_infinities\": " << r.comparison.mismatched_infinities;
-  os << "}\n";
-  return os.str();
-}
-
-void print_summary(std::ostream& os, const Report& r)
-{
-  const Run_result& s = *r.run;
-  os << "mesh: " << r.mesh << "\n"
-     << "vertices: " << r.vertices << ", faces: " << r.faces << (r.sources == 1 ? ", source: " : ", sources: ")
-     << r.sources_text << "\n"
-     << "method: " << s.method << ", propagation: " << s.propagation_seconds
-     << " s, preprocessing: " << s.preprocessing_seconds << " s, reading: " << r.read_seconds + r.repair_seconds
-     << " s\n"
-     << "max distance: " << r.max_distance << " (" << r.reached_vertices << " of " << r.vertices
-     << " vertices reached" << (s.stopped_early ? "; stopped early" : "") << ")\n"
-     << "windows: " << s.windows_created << " created, " << s.windows_propagated << " propagated, peak "
-     << s.peak_live_windows << " alive (" << s.peak_window_bytes << " bytes)\n";
-  if(!s.samples.empty())
-  {
-    const auto areas = std::minmax_element(s.cell_areas.begin(), s.cell_areas.end());
-    double total = 0.;
-    for(double a : s.cell_areas)
-      total += a;
-    os << "farthest points: " << s.samples.size() << (s.samples.size() == 1 ? " sample" : " samples") << ", covering radius " << s.radii.back() << "\n"
-       << "Voronoi cells: area " << *areas.first << " to " << *areas.second << " (total " << total << ")\n";
-  }
-  if(!r.repairs.empty())
-    os << "triangle mesh: " << s.mesh_vertices << " vertices, " << s.mesh_faces << " faces\n";
-}
-
-void print_check(std::ostream& os, const Report& r)
-{
-  os << "CGAL Surface_mesh_shortest_path: " << r.run->cgal_seconds << " s, max abs diff "
-     << r.comparison.max_abs_diff << ", max rel diff " << r.comparison.max_rel_diff;
-  if(r.comparison.mismatched_infinities != 0)
-    os << ", " << r.comparison.mismatched_infinities << " reachability mismatches";
-  os << "\n";
+  if(!args.output.empty())
+    files.write(args.output, [&](std::ostream& os) {
+      write_distances(os, distance_format(args.output), input, results.distances,
+                      args.several_sources() ? &results.labels : nullptr, results.max_distance);
+    });
+  if(!args.labels.empty())
+    files.write(args.labels, [&](std::ostream& os) { write_labels(os, results.labels); });
+  if(!args.target_output.empty())
+    files.write(args.target_output,
+                [&](std::ostream& os) { vtp_support::write_values_text(os, results.target_distances); });
+  if(!args.samples_output.empty())
+    files.write(args.samples_output, [&](std::ostream& os) { write_samples(os, results.samples, run.radii); });
+  if(!args.path_output.empty())
+    files.write(args.path_output,
+                [&](std::ostream& os) { write_paths(os, path_format(args.path_output), results.paths); });
+  if(!args.picture.empty())
+    files.write(args.picture, [&](std::ostream& os) {
+      // the mesh of the computation, with the sources (or the samples) and the paths
+      Picture_request p;
+      p.isolines = args.isolines;
+      p.has_view = args.has_view;
+      p.view = args.view;
+      for(std::size_t v : args.sources)
+        p.markers.push_back(point_of_file_vertex(input, v));
+      for(const Located_point& q : request.source_points)
+        p.markers.push_back(q.point);
+      for(std::size_t v : results.samples)
+        p.markers.push_back(point_of_file_vertex(input, v));
+      p.polylines = results.paths;
+      if(args.colour_labels)
+        p.labels = &run.labels;
+      write_picture(os, input.mesh, input.direct ? results.distances : results.mesh_distances, results.max_distance,
+                    p);
+    });
 }
 
 } // namespace vtp_geodesics_app

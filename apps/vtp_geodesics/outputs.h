@@ -10,13 +10,16 @@
 #ifndef VTP_GEODESICS_APP_OUTPUTS_H
 #define VTP_GEODESICS_APP_OUTPUTS_H
 
-// What vtp_geodesics writes: the distances (text or PLY, by file name), the picture, the JSON statistics and the
-// summary for people.
+// What vtp_geodesics writes: the distances (text or PLY, by file name), the labels, the samples, the paths, the
+// picture (the statistics and the summary for people: report.h).
 
+#include "arguments.h"
+#include "file_results.h"
+#include "output_file.h"
+#include "request.h"
 #include "run.h"
 
 #include <vtp_support/read_mesh.h>
-#include <vtp_support/shortest_path_reference.h>
 
 #include <array>
 #include <cstddef>
@@ -25,28 +28,6 @@
 #include <vector>
 
 namespace vtp_geodesics_app {
-
-struct Report
-{
-  std::string mesh;                        // file name
-  std::string reader;                      // which reader read it
-  std::string repairs;                     // what the repair did; empty if nothing
-  std::size_t vertices = 0, faces = 0;     // of the file
-  std::size_t sources = 0;                 // number of sources (vertices and points of the command line)
-  bool single_vertex_source = false;       // one source, a vertex:
-  std::size_t source = 0;                  // that vertex (file order)
-  std::string sources_text;                // for people: "0, 17, 42 and 1 surface point"
-  bool has_max_distance = false;
-  double max_distance_limit = 0.;
-  std::size_t targets = 0, paths = 0;
-  std::size_t reached_vertices = 0;
-  double max_distance = 0.;
-  const Run_result* run = nullptr;         // statistics of the computation
-  double read_seconds = 0., repair_seconds = 0., write_seconds = 0., total_seconds = 0.;
-  double peak_rss_mb = 0.;
-  bool checked = false;
-  vtp_support::Distance_comparison comparison;
-};
 
 enum class Distance_format { TEXT, PLY };
 
@@ -88,9 +69,10 @@ void write_picture(std::ostream& os, const vtp_support::Mesh& mesh, const std::v
 // each: a '#' header line, then "V R" per line (R: shortest text that reads back exactly, "inf" if infinite).
 void write_samples(std::ostream& os, const std::vector<std::size_t>& samples, const std::vector<double>& radii);
 
-std::string stats_json(const Report& r);
-void print_summary(std::ostream& os, const Report& r);
-void print_check(std::ostream& os, const Report& r);
+// Writes the files that the arguments ask for (but --stats-json), in `files`: the distances, the labels, the
+// distances of the targets, the samples, the paths, the picture.
+void write_outputs(Output_files& files, const Arguments& args, const vtp_support::Input_mesh& input,
+                   const Request& request, const Run_result& run, const File_results& results);
 
 } // namespace vtp_geodesics_app
 

@@ -41,23 +41,6 @@ namespace {
 typedef CGAL::VTP_geodesics::Geodesic_distance_solver<vtp_support::Mesh> Solver;
 namespace VTP = CGAL::VTP_geodesics;
 
-// Runs `method` from the source set of `solver`; the distances stay in the solver (read with distances()).
-template <class NamedParameters>
-void run_method(const vtp_support::Method_info& method, Solver& solver, const NamedParameters& np)
-{
-  const CGAL::Constant_property_map<vtp_support::Vertex_index, double> no_map;
-  if(!method.parallel)
-  {
-    solver.compute<CGAL::Sequential_tag>(no_map, np);
-    return;
-  }
-#ifdef _OPENMP
-  solver.compute<CGAL::Parallel_tag>(no_map, np);
-#else
-  throw Tool_error(std::string("method ") + method.name + " needs OpenMP, and this program was built without it");
-#endif
-}
-
 // A vertex as a face location: a corner of one of its faces (the library takes such a location as the vertex).
 Face_location location_of_vertex(const vtp_support::Mesh& mesh, vtp_support::Vertex_index v)
 {
@@ -84,70 +67,42 @@ std::vector<std::array<double, 3> > to_arrays(const std::vector<vtp_support::Poi
   return r;
 }
 
-// The statistics of the library's run into the result.
-void copy_statistics(const VTP::Propagation_statistics& st, Run_result& r)
-{
-  r.threads = st.threads;
-  r.propagation_seconds = st.seconds;
-  r.windows_created = st.windows_created;
-  r.windows_propagated = st.windows_propagated;
-  r.peak_live_windows = st.peak_live_windows;
-  r.peak_window_bytes = st.peak_window_bytes;
-  r.vertices_processed = st.vertices_processed;
-  r.pseudo_sources = st.pseudo_sources;
-  r.resets = st.resets;
-  r.stopped_early = st.stopped_early;
-}
-
 // Farthest-point sampling with `method` (any of the table), then the areas of the Voronoi cells.
 void run_sampling(const vtp_support::Method_info& method, Solver& solver, const vtp_support::Mesh& mesh,
                   const Run_request& request, double lambda, Run_result& r)
 {
-  const auto options = VTP::parameters::number_of_threads(request.threads).lambda(lambda).lambda_g(request.lambda_g)
-                                       .sampling_radius(request.radius).virtual_sources(method.virtual_sources)
-                                       .virtual_sources_per_vertex(method.per_vertex);
-  VTP::Farthest_point_samples<vtp_support::Vertex_index> fps;
-  if(method.parallel)
-  {
-#ifdef _OPENMP
-    fps = request.has_first ? solver.farthest_point_sampling<CGAL::Parallel_tag>(request.farthest_points,
-                                                                                 options.first_sample(request.first))
-                            : solver.farthest_point_sampling<CGAL::Parallel_tag>(request.farthest_points, options);
-#else
-    throw Tool_error(std::string("method ") + method.name + " needs OpenMP, and this program was built without it");
-#endif
-  }
-  else
-    fps = request.has_first ? solver.farthest_point_sampling(request.farthest_points, options.first_sample(request.first))
-                            : solver.farthest_point_sampling(request.farthest_points, options);
+  VTP::Farthest_point_samples<vtp_support::Vertex_index> fps =
+    vtp_support::with_method(method, lambda, request.threads, [&](auto tag, const auto& method_np) {
+      typedef decltype(tag) Tag;
+      const auto np = method_np.lambda_g(request.lambda_g).sampling_radius(request.radius);
+      return request.has_first ? solver.farthest_point_sampling<Tag>(request.farthest_points,
+                                                                     np.first_sample(request.first))
+                               : solver.farthest_point_sampling<Tag>(request.farthest_points, np);
+    });
   const VTP::Voronoi_cell_areas cells =
     VTP::geodesic_voronoi_cell_areas(mesh, fps.samples.size(), fps.labels, fps.distances);
   r.samples = fps.samples;
   r.radii = fps.radii;
   r.cell_areas = cells.areas;
   r.cell_uncertainty = cells.uncertainty;
-  r.sources = fps.samples.size();
   r.distances = std::move(fps.distances);
   r.labels.resize(r.mesh_vertices);
   for(std::size_t i = 0; i < r.mesh_vertices; ++i)
     r.labels[i] = fps.labels[i] == VTP::no_source ? -1 : static_cast<int>(fps.labels[i]);
-  copy_statistics(fps.statistics, r);
+  r.statistics = fps.statistics;
 }
 
 } // namespace
 
-double recommended_lambda() { return CGAL::VTP_geodesics::recommended_lambda; }
-
 Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& request)
 {
   const vtp_support::Method_info& method = *request.method;
-  const double lambda = !method.approximate ? std::numeric_limits<double>::infinity()
-                       : (request.has_lambda ? request.lambda : recommended_lambda());
+  // used by the approximate methods only (vtp_support::method_parameters())
+  const double lambda = request.has_lambda ? request.lambda : vtp_support::default_lambda;
 
   // the preprocessing uses the threads of the parallel methods, whatever the method (same result)
   Solver solver(mesh, CGAL::VTP_geodesics::parameters::number_of_threads(request.threads));
   Run_result r;
-  r.method = method.name;
   r.mesh_vertices = solver.number_of_vertices();
   r.mesh_faces = solver.number_of_faces();
   r.preprocessing_seconds = solver.preprocessing_seconds();
@@ -174,7 +129,6 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
     solver.add_source(request.source_locations[i]);
     label_of_source.push_back(request.source_location_labels[i]);
   }
-  r.sources = label_of_source.size();
 
   // The targets, all as face locations: the target vertices (but isolated ones, which no propagation reaches),
   // the target points, then the end points of the paths (so that the run records their trace-back).
@@ -207,22 +161,22 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
   {
     if(request.want_labels)
       labels.assign(r.mesh_vertices, VTP::no_source);
-    const auto options = VTP::parameters::number_of_threads(request.threads)
-                           .lambda(lambda)
-                           .lambda_g(request.lambda_g)
-                           .maximum_distance(request.max_distance)
-                           .targets(targets)
-                           .stop_at_targets(request.stop_at_targets)
-                           .record_paths(!request.paths.empty())
-                           .virtual_sources(method.virtual_sources)
-                           .virtual_sources_per_vertex(method.per_vertex);
-    if(request.want_labels)
-      run_method(method, solver,
-                 options.nearest_source_map(boost::make_iterator_property_map(labels.begin(),
-                                                                              get(boost::vertex_index, mesh))));
-    else
-      run_method(method, solver, options);
-    copy_statistics(solver.statistics(), r);
+    vtp_support::with_method(method, lambda, request.threads, [&](auto tag, const auto& method_np) {
+      typedef decltype(tag) Tag;
+      // the distances stay in the solver (read with distances()): nothing to write through a map
+      const CGAL::Constant_property_map<vtp_support::Vertex_index, double> no_map;
+      const auto np = method_np.lambda_g(request.lambda_g)
+                        .maximum_distance(request.max_distance)
+                        .targets(targets)
+                        .stop_at_targets(request.stop_at_targets)
+                        .record_paths(!request.paths.empty());
+      if(request.want_labels)
+        solver.compute<Tag>(no_map, np.nearest_source_map(boost::make_iterator_property_map(
+                                      labels.begin(), get(boost::vertex_index, mesh))));
+      else
+        solver.compute<Tag>(no_map, np);
+    });
+    r.statistics = solver.statistics();
     r.distances = solver.distances();
     for(std::size_t i = 0; i < request.target_locations.size(); ++i)
       r.target_location_distances.push_back(solver.target_distance(first_target_location + i));

@@ -18,6 +18,8 @@
 #include <vtp_support/methods.h>
 #include <vtp_support/read_mesh.h>
 
+#include <CGAL/VTP_geodesics/Propagation_statistics.h>
+
 #include <array>
 #include <cstddef>
 #include <limits>
@@ -73,18 +75,13 @@ struct Run_result
   std::vector<std::vector<std::array<double, 3> > > paths; // per path: its points, target first, source last
   std::vector<double> reference;          // CGAL::Surface_mesh_shortest_path's, if check_cgal
   double cgal_seconds = 0.;
-  // statistics
-  std::string method;
-  int threads = 1;
+  // The library's statistics of the propagation (with farthest-point sampling, those it gives for the whole
+  // sampling); default values when nothing ran (no source).
+  CGAL::VTP_geodesics::Propagation_statistics statistics;
   int preprocessing_threads = 1;          // reading the mesh and building the solver's arrays
   std::size_t mesh_vertices = 0, mesh_faces = 0;
   double preprocessing_seconds = 0.;      // solver construction
-  double propagation_seconds = 0.;        // the propagations (all sources)
   double mean_edge_length = 0., anisotropy = 0.;
-  std::size_t windows_created = 0, windows_propagated = 0, peak_live_windows = 0, peak_window_bytes = 0;
-  std::size_t vertices_processed = 0, pseudo_sources = 0, resets = 0;
-  std::size_t sources = 0;                // the sources of the propagation (the copies of a vertex count)
-  bool stopped_early = false;             // at the distance limit or the targets
   // farthest-point sampling: the samples (mesh vertices) in order, the covering radius after each, and the
   // area of the geodesic Voronoi cell of each with the area of its faces shared with other cells
   std::vector<vtp_support::Vertex_index> samples;
@@ -95,9 +92,6 @@ struct Run_result
 // Runs `request` on `mesh`; throws Tool_error (e.g. a path to a vertex that no source reaches) or the
 // library's exceptions.
 Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& request);
-
-// The lambda used by the approximate methods when none is given.
-double recommended_lambda();
 
 } // namespace vtp_geodesics_app
 

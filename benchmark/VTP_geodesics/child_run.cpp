@@ -5,9 +5,9 @@
 
 #include <CGAL/property_map.h>
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
-#include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
 #include <vtp_support/shortest_path_reference.h>
+#include <vtp_support/statistics.h>
 
 #ifdef VTP_BENCHMARK_WITH_HEAT_METHOD
 #include <CGAL/Heat_method_3/Surface_mesh_geodesic_distances_3.h>
@@ -17,6 +17,7 @@
 #include <cerrno>
 #include <chrono>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -50,46 +51,29 @@ double current_rss_kb()
 
 namespace {
 
-void run_vtp(const Mesh& mesh, Vertex_index source, const Method& method, int repeat,
-             Child_header& h, std::vector<double>& d)
+void run_vtp(const Mesh& mesh, Vertex_index source, const Method& method, int repeat, Child_header& h,
+             std::vector<double>& d, CGAL::VTP_geodesics::Propagation_statistics& statistics)
 {
   typedef CGAL::VTP_geodesics::Geodesic_distance_solver<Mesh> Solver;
   Solver solver(mesh);
   h.preprocessing_seconds = solver.preprocessing_seconds();
   h.pseudo_source_vertices = solver.number_of_pseudo_source_vertices();
-  const auto options = CGAL::VTP_geodesics::parameters::lambda(method.lambda).number_of_threads(method.threads)
-                         .virtual_sources(method.virtual_sources)
-                         .virtual_sources_per_vertex(method.per_vertex);
   // the distances are read from the solver: nothing to write through a map
   for(int r = 0; r < repeat; ++r)
   {
     const double c0 = cpu_now_seconds();
-    switch(method.kind)
-    {
-      case Method_kind::VTP:
-      case Method_kind::AVTP:
-        solver.compute<CGAL::Sequential_tag>(CGAL::Constant_property_map<Vertex_index, double>(), source, options);
-        break;
-      default:
-#ifdef _OPENMP
-        solver.compute<CGAL::Parallel_tag>(CGAL::Constant_property_map<Vertex_index, double>(), source, options);
-#else
-        throw std::runtime_error("method " + method.label + " needs OpenMP");
-#endif
-    }
+    vtp_support::with_method(*method.info, method.lambda, method.threads, [&](auto tag, const auto& np) {
+      solver.compute<decltype(tag)>(CGAL::Constant_property_map<Vertex_index, double>(), source, np);
+    });
     const double cpu = cpu_now_seconds() - c0;
-    const CGAL::VTP_geodesics::Propagation_statistics& s = solver.statistics();
-    if(r == 0 || s.seconds < h.seconds)
-      h.seconds = s.seconds;
+    if(r == 0 || solver.statistics().seconds < h.seconds)
+    {
+      statistics = solver.statistics();
+      h.seconds = statistics.seconds;
+    }
     if(r == 0 || cpu < h.cpu_seconds)
       h.cpu_seconds = cpu;
-    h.windows_created = s.windows_created;
-    h.windows_propagated = s.windows_propagated;
-    h.peak_window_bytes = (std::max)(h.peak_window_bytes, static_cast<std::uint64_t>(s.peak_window_bytes));
-    h.peak_live_windows = (std::max)(h.peak_live_windows, static_cast<std::uint64_t>(s.peak_live_windows));
-    h.threads = s.threads;
   }
-  h.has_windows = 1;
   d = solver.distances();
 }
 
@@ -157,16 +141,16 @@ void write_all(int fd, const void* data, std::size_t size)
   Child_header h;
   std::vector<double> d;
   std::string error;
+  CGAL::VTP_geodesics::Propagation_statistics statistics;
+  bool has_statistics = false;
   h.rss_at_start_kb = current_rss_kb();
   try
   {
     switch(method.kind)
     {
-      case Method_kind::VTP:
-      case Method_kind::PVTP:
-      case Method_kind::AVTP:
-      case Method_kind::PAVTP:
-        run_vtp(mesh, source, method, repeat, h, d);
+      case Method_kind::VTP_FAMILY:
+        run_vtp(mesh, source, method, repeat, h, d, statistics);
+        has_statistics = true;
         break;
       case Method_kind::CGAL_SMSP:
         run_cgal(mesh, source, repeat, h, d);
@@ -191,13 +175,21 @@ void write_all(int fd, const void* data, std::size_t size)
     d.clear();
   std::replace(error.begin(), error.end(), '\n', ' ');
 
+  std::ostringstream statistics_json;
+  if(has_statistics && error.empty())
+    vtp_support::write_statistics_json(statistics_json, statistics);
+  const std::string statistics_text = statistics_json.str();
+
   h.number_of_distances = d.size();
   h.error_length = error.size();
+  h.statistics_length = statistics_text.size();
   write_all(fd, &h, sizeof(h));
   if(!d.empty())
     write_all(fd, d.data(), d.size() * sizeof(double));
   if(!error.empty())
     write_all(fd, error.data(), error.size());
+  if(!statistics_text.empty())
+    write_all(fd, statistics_text.data(), statistics_text.size());
   ::close(fd);
   _exit(0);
 }

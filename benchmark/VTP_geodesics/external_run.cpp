@@ -85,11 +85,11 @@ Run_result run_external(const std::string& mesh_file, std::size_t source, std::s
     result.header.cpu_seconds = std::strtod(value.c_str(), nullptr);
   if(find_value(text, "windows_propagated", value))
   {
-    result.header.windows_propagated = std::strtoull(value.c_str(), nullptr, 10);
-    result.header.has_windows = 1;
+    result.statistics.windows_propagated = std::strtoull(value.c_str(), nullptr, 10);
+    result.has_statistics = true;
   }
   if(find_value(text, "windows_created", value))
-    result.header.windows_created = std::strtoull(value.c_str(), nullptr, 10);
+    result.statistics.windows_created = std::strtoull(value.c_str(), nullptr, 10);
   if(wants_output)
   {
     std::ifstream in(output_file);

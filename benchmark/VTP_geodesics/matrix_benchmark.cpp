@@ -6,19 +6,18 @@
 // the machine's load hits every variant alike):
 //   single    one Geodesic_distance_solver, compute() from each source in turn (no output map; the row
 //             read with distances()): the library's single-source call;
-//   batch 1   compute_rows() of vtp_distance_matrix (apps/vtp_distance_matrix/row_batch.h) on one
+//   batch 1   compute_rows() of vtp_distance_matrix (vtp_support/distance_rows.h) on one
 //             thread: the library's batch call compute_each() on a new solver, each row copied to file
 //             order and handed to a sink (here: converted to float32, as a dense float32 output does);
 //   batch T   the same on T threads (default 2).
 // Prints the median time per source of each, rows per second, and the ratios. Writing the HDF5 file
 // is measured with the tool itself (see README.md, "Many sources").
 
-#include "mesh_input.h"
-#include "row_batch.h"
+#include <vtp_support/command_line.h>
+#include <vtp_support/distance_rows.h>
+#include <vtp_support/read_mesh.h>
 
 #include <CGAL/property_map.h>
-
-#include <vtp_support/command_line.h>
 
 #include <algorithm>
 #include <chrono>
@@ -27,9 +26,11 @@
 #include <string>
 #include <vector>
 
-using namespace vtp_matrix;
-
 namespace {
+
+using vtp_support::Mesh;
+using vtp_support::Tool_error;
+using vtp_support::Vertex_index;
 
 double seconds_since(std::chrono::steady_clock::time_point t0)
 {
@@ -95,12 +96,12 @@ int main(int argc, char** argv)
   std::size_t rows = args.rows;
   const int repeat = args.repeat, threads = args.threads;
   const std::string& file = args.file;
-  Mesh_input input;
+  vtp_support::Input_mesh input;
   try
   {
-    read_mesh_input(file, input);
+    vtp_support::read_input_mesh(file, input);
   }
-  catch(const Tool_error& e)
+  catch(const vtp_support::Input_error& e)
   {
     std::fprintf(stderr, "matrix_benchmark: %s\n", e.what());
     return 2;
@@ -137,11 +138,11 @@ int main(int argc, char** argv)
     single.push_back(seconds_since(t0) / static_cast<double>(rows));
 
     t0 = std::chrono::steady_clock::now();
-    compute_rows(input, sources, all_rows, Row_method(), 1, sink);
+    vtp_support::compute_rows(input, sources, all_rows, vtp_support::Row_method(), 1, sink);
     batch1.push_back(seconds_since(t0) / static_cast<double>(rows));
 
     t0 = std::chrono::steady_clock::now();
-    compute_rows(input, sources, all_rows, Row_method(), threads, sink);
+    vtp_support::compute_rows(input, sources, all_rows, vtp_support::Row_method(), threads, sink);
     batchT.push_back(seconds_since(t0) / static_cast<double>(rows));
     std::printf("# repeat %d: single %.6f s, batch 1 %.6f s, batch %d %.6f s per source\n", r + 1, single.back(),
                 batch1.back(), threads, batchT.back());

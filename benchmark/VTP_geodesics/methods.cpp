@@ -64,10 +64,8 @@ bool parse_vtp_method(const std::vector<std::string>& fields, Method& m)
     return false;
   const std::string syntax = vtp_method_syntax(*info);
   expect_fields(fields, 1 + (info->parallel ? 1 : 0) + (info->approximate ? 1 : 0), syntax.c_str());
-  m.kind = info->parallel ? (info->approximate ? Method_kind::PAVTP : Method_kind::PVTP)
-                          : (info->approximate ? Method_kind::AVTP : Method_kind::VTP);
-  m.virtual_sources = info->virtual_sources;
-  m.per_vertex = info->per_vertex;
+  m.kind = Method_kind::VTP_FAMILY;
+  m.info = info;
   std::size_t k = 1;
   if(info->parallel)
     m.threads = parse_int_field(m.label, fields[k++], 1);

@@ -3,8 +3,11 @@
 
 #include "vtp_benchmark.h"
 
+#include <vtp_support/statistics.h>
+
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <string>
@@ -17,12 +20,55 @@ namespace vtp_benchmark {
 
 double ns_per_window(const Run_result& r)
 {
-  if(!r.ok || !r.header.has_windows || r.header.windows_propagated == 0)
+  if(!r.ok || !r.has_statistics || r.statistics.windows_propagated == 0)
     return nan_value;
-  return r.header.seconds * 1e9 / static_cast<double>(r.header.windows_propagated);
+  return r.header.seconds * 1e9 / static_cast<double>(r.statistics.windows_propagated);
 }
 
 double total_seconds(const Run_result& r) { return r.header.seconds + r.header.preprocessing_seconds; }
+
+namespace {
+
+// A value of the statistics as vtp_support::json_value() writes it, at `p`.
+void read_json_value(const char* p, std::string& value)
+{
+  value.clear();
+  if(*p++ != '"')
+    return;
+  for(; *p != '\0' && *p != '"'; ++p)
+  {
+    if(*p != '\\')
+      value += *p;
+    else if(p[1] == 'u' && p[2] != '\0' && p[3] != '\0' && p[4] != '\0' && p[5] != '\0')
+    {
+      value += static_cast<char>(std::strtol(std::string(p + 2, 4).c_str(), nullptr, 16));
+      p += 5;
+    }
+    else if(p[1] != '\0')
+      value += *++p;
+  }
+}
+void read_json_value(const char* p, bool& value) { value = std::strncmp(p, "true", 4) == 0; }
+void read_json_value(const char* p, double& value)
+{
+  value = std::strncmp(p, "null", 4) == 0 ? nan_value : std::strtod(p, nullptr);
+}
+void read_json_value(const char* p, int& value) { value = static_cast<int>(std::strtol(p, nullptr, 10)); }
+void read_json_value(const char* p, std::size_t& value) { value = std::strtoull(p, nullptr, 10); }
+
+// The statistics that the child wrote with vtp_support::write_statistics_json(), read back field by field from
+// the same description (a field whose member is missing keeps its value).
+void read_statistics_json(const std::string& text, CGAL::VTP_geodesics::Propagation_statistics& statistics)
+{
+  vtp_support::for_each_statistic(statistics, [&text](const char* name, auto& field, vtp_support::Statistic_unit) {
+    const std::string member = std::string("\"") + name + "\": ";
+    const std::string::size_type at = text.find(member);
+    if(at != std::string::npos)
+      read_json_value(text.c_str() + at + member.size(), field);
+  });
+}
+
+} // namespace
 
 // Reads everything the child `pid` writes to `fd` (before waiting: the child blocks when the pipe is full),
 // closes `fd`, then waits for the child: its exit status and peak RSS (MB).
@@ -91,19 +137,26 @@ Run_result run_forked(Mesh& mesh, Vertex_index source, const Method& method, int
   }
   std::memcpy(&result.header, message.data(), sizeof(Child_header));
   const Child_header& h = result.header;
-  const std::size_t expected = sizeof(Child_header) + h.number_of_distances * sizeof(double) + h.error_length;
-  if(message.size() != expected)
+  const std::size_t distances_at = sizeof(Child_header);
+  const std::size_t error_at = distances_at + h.number_of_distances * sizeof(double);
+  const std::size_t statistics_at = error_at + h.error_length;
+  if(message.size() != statistics_at + h.statistics_length)
   {
     result.status = "truncated child report";
     return result;
   }
   result.distances.resize(h.number_of_distances);
   if(h.number_of_distances > 0)
-    std::memcpy(result.distances.data(), message.data() + sizeof(Child_header), h.number_of_distances * sizeof(double));
+    std::memcpy(result.distances.data(), message.data() + distances_at, h.number_of_distances * sizeof(double));
   if(h.error_length > 0)
   {
-    result.status = "error: " + message.substr(sizeof(Child_header) + h.number_of_distances * sizeof(double));
+    result.status = "error: " + message.substr(error_at, h.error_length);
     return result;
+  }
+  if(h.statistics_length > 0)
+  {
+    read_statistics_json(message.substr(statistics_at), result.statistics);
+    result.has_statistics = true;
   }
   result.ok = true;
   return result;

@@ -28,9 +28,9 @@
 #include <CGAL/property_map.h>
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
-#include <CGAL/VTP_geodesics/parameters.h>
 
 #include <vtp_support/command_line.h>
+#include <vtp_support/methods.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -55,7 +55,6 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 typedef Mesh::Vertex_index Vertex_index;
 typedef CGAL::VTP_geodesics::Geodesic_distance_solver<Mesh> Solver;
-namespace VP = CGAL::VTP_geodesics::parameters;
 
 namespace {
 
@@ -85,8 +84,10 @@ Result run_sampling(const Mesh& mesh, Query q, std::size_t k)
 {
   Solver solver(mesh);
   const double c0 = cpu_now();
-  const auto samples = solver.farthest_point_sampling(
-    k, VP::first_sample(Vertex_index(0)).virtual_sources(q == Query::FPS_VSP));
+  const vtp_support::Method_info& method = *vtp_support::find_method(q == Query::FPS_VSP ? "vsp" : "vtp");
+  const auto samples = vtp_support::with_method(method, vtp_support::default_lambda, 0, [&](auto tag, const auto& np) {
+    return solver.farthest_point_sampling<decltype(tag)>(k, np.first_sample(Vertex_index(0)));
+  });
   Result r;
   r.cpu_seconds = cpu_now() - c0;
   r.seconds = samples.statistics.seconds;
@@ -127,23 +128,17 @@ Result run_query(const Mesh& mesh, Query q, bool parallel, int threads, double l
   Solver solver(mesh);
   const CGAL::Constant_property_map<Vertex_index, double> no_map;
   const Vertex_index source(0);
-  auto np = VP::number_of_threads(threads).maximum_distance(q == Query::LIMIT ? limit : std::numeric_limits<double>::infinity())
-              .record_paths(q == Query::RECORD).virtual_sources(q == Query::FULL_VSP);
+  const vtp_support::Method_info& method =
+    *vtp_support::find_method(q == Query::FULL_VSP ? (parallel ? "pvsp" : "vsp") : (parallel ? "pvtp" : "vtp"));
   std::vector<Vertex_index> targets;
   if(q == Query::TARGET)
     targets.push_back(target);
-  const auto np2 = np.targets(targets);
   const double c0 = cpu_now();
-  if(parallel)
-  {
-#ifdef _OPENMP
-    solver.compute<CGAL::Parallel_tag>(no_map, source, np2);
-#else
-    throw std::runtime_error("built without OpenMP");
-#endif
-  }
-  else
-    solver.compute(no_map, source, np2);
+  vtp_support::with_method(method, vtp_support::default_lambda, threads, [&](auto tag, const auto& np) {
+    const double max_distance = q == Query::LIMIT ? limit : std::numeric_limits<double>::infinity();
+    solver.compute<decltype(tag)>(
+      no_map, source, np.maximum_distance(max_distance).record_paths(q == Query::RECORD).targets(targets));
+  });
   Result r;
   r.cpu_seconds = cpu_now() - c0;
   r.seconds = solver.statistics().seconds;

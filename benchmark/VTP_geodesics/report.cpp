@@ -47,21 +47,23 @@ const char* const csv_columns =
 void write_csv_row(std::ostream& os, const Mesh_info& mesh, std::size_t source, const Run_result& r)
 {
   const Child_header& h = r.header;
-  const bool w = r.ok && h.has_windows;
+  const CGAL::VTP_geodesics::Propagation_statistics& s = r.statistics;
+  const bool w = r.ok && r.has_statistics;
+  const bool own = w && r.method.kind != Method_kind::EXTERNAL;  // the library's statistics
   os << csv_field(mesh.label) << ',' << mesh.vertices << ',' << mesh.faces << ',' << source << ','
-     << csv_field(r.method.label) << ',' << (r.ok ? std::to_string(h.threads) : std::string()) << ','
+     << csv_field(r.method.label) << ',' << (r.ok ? std::to_string(s.threads) : std::string()) << ','
      << (r.ok ? number(h.seconds, 9) : "") << ',' << (r.ok ? number(h.preprocessing_seconds, 9) : "") << ','
      << number(r.peak_rss_mb, 6) << ','
-     << (w && r.method.kind != Method_kind::EXTERNAL ? std::to_string(h.windows_created) : "") << ','
-     << (w ? std::to_string(h.windows_propagated) : "") << ','
-     << (w && r.method.kind != Method_kind::EXTERNAL ? std::to_string(h.peak_window_bytes) : "") << ','
+     << (own ? std::to_string(s.windows_created) : "") << ','
+     << (w ? std::to_string(s.windows_propagated) : "") << ','
+     << (own ? std::to_string(s.peak_window_bytes) : "") << ','
      << number(r.max_abs_err, 6) << ',' << number(r.max_rel_err, 6) << ',' << number(r.mean_rel_err, 6) << ','
      << number(r.speedup_vs_cgal, 6) << ','
      << (r.ok ? number(total_seconds(r), 9) : "") << ','
      << (r.ok ? number(h.rss_at_start_kb / 1024., 6) : "") << ','
      << number(r.mean_pointwise_rel_err, 6) << ',' << number(r.max_pointwise_rel_err, 6) << ','
      << number(r.speedup_vs_vtp, 6) << ','
-     << (w && r.method.kind != Method_kind::EXTERNAL ? std::to_string(h.peak_live_windows) : "") << ','
+     << (own ? std::to_string(s.peak_live_windows) : "") << ','
      << number(ns_per_window(r), 6) << ',' << number(mesh.pseudo_source_share, 6) << ','
      << (r.ok ? number(h.cpu_seconds, 9) : "") << ',' << number(r.cpu_ratio_vs_vtp, 6) << ','
      << csv_field(r.status) << ',' << number(r.max_below_vtp, 6) << '\n';
@@ -76,8 +78,8 @@ void print_table_header()
 void print_table_row(const Mesh_info& mesh, std::size_t source, const Run_result& r)
 {
   const Child_header& h = r.header;
-  const std::string windows = (r.ok && h.has_windows && r.method.kind != Method_kind::EXTERNAL)
-                              ? std::to_string(h.windows_created) : "-";
+  const std::string windows = (r.ok && r.has_statistics && r.method.kind != Method_kind::EXTERNAL)
+                              ? std::to_string(r.statistics.windows_created) : "-";
   const double increase = (r.ok && r.method.kind != Method_kind::EXTERNAL) ? r.peak_rss_mb - h.rss_at_start_kb / 1024.
                                                                            : nan_value;
   auto cell = [](double x, int p) { const std::string s = number(x, p); return s.empty() ? std::string("-") : s; };

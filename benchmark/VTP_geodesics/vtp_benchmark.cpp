@@ -99,7 +99,7 @@ int run(int argc, char** argv)
   std::vector<Method> runs;
   Method reference;
   reference.label = "vtp";
-  reference.kind = Method_kind::VTP;
+  reference.info = vtp_support::find_method("vtp");
   const bool report_vtp =
     std::any_of(args.methods.begin(), args.methods.end(), [](const Method& m) { return m.label == "vtp"; });
   runs.push_back(reference);
@@ -109,9 +109,8 @@ int run(int argc, char** argv)
 
   bool header_printed = false;
   int failures = 0;
-  const bool parallel = std::any_of(args.methods.begin(), args.methods.end(), [](const Method& m) {
-    return m.label.compare(0, 4, "pvtp") == 0 || m.label.compare(0, 5, "pavtp") == 0;
-  });
+  const bool parallel = std::any_of(args.methods.begin(), args.methods.end(),
+                                    [](const Method& m) { return m.info != nullptr && m.info->parallel; });
   const bool external = std::any_of(args.methods.begin(), args.methods.end(),
                                     [](const Method& m) { return m.kind == Method_kind::EXTERNAL; });
   std::string temporary_folder;

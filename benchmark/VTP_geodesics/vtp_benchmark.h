@@ -16,8 +16,10 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/VTP_geodesics/Propagation_statistics.h>
 
 #include <vtp_support/command_line.h>
+#include <vtp_support/methods.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -50,16 +52,15 @@ using vtp_support::split;
 // Methods (methods.cpp). To add one, add an enumerator, a parser in `method_parsers` (or, for a method of
 // the package, an entry in vtp_support/methods.h), and a case in `run_in_child()` (child_run.cpp).
 // ------------------------------------------------------------------------------------------------
-enum class Method_kind { VTP, PVTP, AVTP, PAVTP, CGAL_SMSP, HEAT_DIRECT, HEAT_IDT, EXTERNAL };
+enum class Method_kind { VTP_FAMILY, CGAL_SMSP, HEAT_DIRECT, HEAT_IDT, EXTERNAL };
 
 struct Method
 {
   std::string label;        // as printed and written in the CSV, e.g. "vtp", "pvtp:4"
-  Method_kind kind = Method_kind::VTP;
-  int threads = 1;
-  double lambda = inf;      // approximate variants
-  bool virtual_sources = false;  // vsp, pvsp:T (one virtual source per vertex), vsp2, pvsp2:T (two)
-  int per_vertex = 1;
+  Method_kind kind = Method_kind::VTP_FAMILY;
+  const vtp_support::Method_info* info = nullptr;  // VTP_FAMILY: the method of the table (vtp, pvtp, ..., pvsp2)
+  int threads = 1;          // parallel methods of the table
+  double lambda = inf;      // approximate methods of the table
   std::string command;      // EXTERNAL: shell command with {mesh}, {source}, {output}
 };
 
@@ -91,18 +92,19 @@ Arguments parse_arguments(int argc, char** argv);
 // ------------------------------------------------------------------------------------------------
 // Child side (child_run.cpp): run one method on one source, R times; the report sent to the parent.
 // ------------------------------------------------------------------------------------------------
+// The report of the child: this header, then the distances (number_of_distances doubles), the error text
+// (error_length bytes) and the library's statistics of the fastest repeat (VTP family only: statistics_length
+// bytes, the JSON members that vtp_support::write_statistics_json() writes).
 struct Child_header
 {
   double seconds = nan_value;                // per-source work, fastest of the repeats
   double cpu_seconds = nan_value;            // processor time of that work (all threads), fastest of the repeats
   double preprocessing_seconds = nan_value;  // per-mesh work (solver construction, factorization)
   double rss_at_start_kb = 0.;
-  std::uint64_t windows_created = 0, windows_propagated = 0, peak_window_bytes = 0, peak_live_windows = 0;
   std::uint64_t pseudo_source_vertices = 0;
-  std::int32_t threads = 1;
-  std::int32_t has_windows = 0;
   std::uint64_t number_of_distances = 0;
   std::uint64_t error_length = 0;
+  std::uint64_t statistics_length = 0;
 };
 
 // Processor time of the process (all its threads), in seconds.
@@ -123,6 +125,10 @@ struct Run_result
   bool ok = false;
   std::string status = "ok";
   Child_header header;
+  // The library's statistics (the VTP family), or the window counts that an external method printed; else the
+  // defaults (1 thread).
+  bool has_statistics = false;
+  CGAL::VTP_geodesics::Propagation_statistics statistics;
   double peak_rss_mb = nan_value;
   std::vector<double> distances;
   // Filled after all methods of the source ran.

@@ -72,8 +72,8 @@ function(vtp_cli_test name expected output json)
            COMMAND ${CMAKE_COMMAND} "-DEXE=$<TARGET_FILE:vtp_geodesics>" "-DARGS=${args}"
                    "-DEXPECTED_EXIT=${expected}" "-DOUTPUT=${output}" "-DJSON=${json}" ${extra}
                    -P "${cli_script}")
-  if(VTP_SUPPORT_TEST_ENVIRONMENT)
-    set_tests_properties(cli_${name} PROPERTIES ENVIRONMENT "${VTP_SUPPORT_TEST_ENVIRONMENT}")
+  if(VTP_GEODESICS_PICTURE_TEST_ENVIRONMENT)
+    set_tests_properties(cli_${name} PROPERTIES ENVIRONMENT "${VTP_GEODESICS_PICTURE_TEST_ENVIRONMENT}")
   endif()
 endfunction()
 
@@ -447,6 +447,6 @@ vtp_cli_test(target_point_degenerate_face 2 "${bad_output}.29" "" ERROR "cannot 
 add_test(NAME cli_installed_tool
          COMMAND ${CMAKE_COMMAND} "-DBUILD_DIR=${CMAKE_BINARY_DIR}" "-DPREFIX=${cli_dir}/installed"
                  -P "${CMAKE_CURRENT_SOURCE_DIR}/install_test.cmake")
-if(VTP_SUPPORT_TEST_ENVIRONMENT)
-  set_tests_properties(cli_installed_tool PROPERTIES ENVIRONMENT "${VTP_SUPPORT_TEST_ENVIRONMENT}")
+if(VTP_GEODESICS_PICTURE_TEST_ENVIRONMENT)
+  set_tests_properties(cli_installed_tool PROPERTIES ENVIRONMENT "${VTP_GEODESICS_PICTURE_TEST_ENVIRONMENT}")
 endif()

@@ -10,7 +10,8 @@
 #ifndef VTP_SUPPORT_READ_MESH_H
 #define VTP_SUPPORT_READ_MESH_H
 
-// Reading a mesh file into the triangle mesh of a computation, for the command-line tools.
+// Reading a mesh file into the triangle mesh of a computation, for the command-line tools, the benchmark and the
+// Python module.
 //
 // `read_input_mesh(file, input)` reads every format that CGAL reads as a polygon soup (OFF, OBJ, PLY, STL, GOCAD
 // TS; the format comes from the file extension) and makes a triangle `Surface_mesh` of it:
@@ -18,33 +19,26 @@
 //   by a fast reader (`fast_off_reader.h`), with vertex i of the mesh being vertex i of the file;
 // - everything else goes through CGAL's readers and `triangle_mesh_from_soup()` (triangulation of polygons,
 //   repair of soups that are not valid meshes), which tells which mesh vertices stand for each file vertex.
-// Results are reported per vertex of the file with `Input_mesh::on_file_vertices()`.
+// `Input_mesh` keeps the correspondence between the vertices of the file and those of the mesh, both ways: the
+// mesh vertices of a file vertex (`mesh_vertices_of()`), the file vertex of a mesh vertex (`file_vertex_of()`),
+// and values of the mesh vertices reported on the file vertices (`on_file_vertices()`,
+// `labels_on_file_vertices()`).
+//
+// read_input_mesh() is compiled once, in the library VTP_geodesics_support (src/read_mesh.cpp: CGAL's readers and
+// repair are slow to compile).
 
 #include <vtp_support/fast_off_reader.h>
-#include <vtp_support/mesh_formats.h>
-#include <vtp_support/triangle_mesh_from_soup.h>
+#include <vtp_support/soup_repair_report.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cstdint>
-#include <cmath>
-#include <cstdlib>
-#include <cstring>
 #include <cstddef>
-#include <fstream>
-#include <iostream>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <errno.h>
-#include <sys/stat.h>
 
 namespace vtp_support {
 
@@ -71,6 +65,8 @@ struct Input_mesh
   // for a vertex the repair removed, several for a vertex it duplicated).
   std::vector<std::size_t> copy_begin;
   std::vector<Vertex_index> copies;
+  // Not direct: the inverse, the file vertex of each mesh vertex (see file_vertex_of()).
+  std::vector<std::size_t> file_vertex_of_copy;
   // Not direct: the points and polygons of the file, as read (for outputs that give the mesh back).
   std::vector<Point_3> file_points;
   std::vector<std::vector<std::size_t> > file_polygons;
@@ -88,16 +84,34 @@ struct Input_mesh
                                      copies.begin() + std::ptrdiff_t(copy_begin[i + 1]));
   }
 
-  // Per-vertex values of the mesh (indexed by vertex index) reported on the vertices of the file: the minimum
-  // over the copies of a vertex, `+infinity` for a vertex without copy. Moves from `per_mesh_vertex` if direct.
+  // Values of the mesh vertices reported on the vertices of the file, into `r` (resized to file_vertices): the
+  // minimum of value(v) over the copies v of a vertex, `+infinity` for a vertex without copy.
+  template <class Value_of_mesh_vertex>
+  void on_file_vertices(const Value_of_mesh_vertex& value, std::vector<double>& r) const
+  {
+    r.resize(file_vertices);
+    if(direct)
+    {
+      for(std::size_t i = 0; i < file_vertices; ++i)
+        r[i] = value(Vertex_index(static_cast<Mesh::size_type>(i)));
+      return;
+    }
+    for(std::size_t i = 0; i < file_vertices; ++i)
+    {
+      double m = std::numeric_limits<double>::infinity();
+      for(std::size_t k = copy_begin[i]; k < copy_begin[i + 1]; ++k)
+        m = (std::min)(m, static_cast<double>(value(copies[k])));
+      r[i] = m;
+    }
+  }
+
+  // The same from values indexed by vertex index; moves from `per_mesh_vertex` if direct.
   std::vector<double> on_file_vertices(std::vector<double>&& per_mesh_vertex) const
   {
     if(direct)
       return std::move(per_mesh_vertex);
-    std::vector<double> r(file_vertices, std::numeric_limits<double>::infinity());
-    for(std::size_t i = 0; i < file_vertices; ++i)
-      for(std::size_t k = copy_begin[i]; k < copy_begin[i + 1]; ++k)
-        r[i] = (std::min)(r[i], per_mesh_vertex[std::size_t(copies[k])]);
+    std::vector<double> r;
+    on_file_vertices([&per_mesh_vertex](Vertex_index v) { return per_mesh_vertex[std::size_t(v)]; }, r);
     return r;
   }
 
@@ -122,6 +136,12 @@ struct Input_mesh
     return r;
   }
 
+  // The file vertex that mesh vertex `v` stands for (of file vertices that the repair merged, the last one).
+  std::size_t file_vertex_of(Vertex_index v) const
+  {
+    return direct ? std::size_t(v) : file_vertex_of_copy[std::size_t(v)];
+  }
+
   // The point of file vertex `i`.
   const Point_3& file_point(std::size_t i) const
   {
@@ -129,190 +149,9 @@ struct Input_mesh
   }
 };
 
-namespace read_detail {
-
-inline double seconds_since(std::chrono::steady_clock::time_point t0)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// When CGAL's reader refuses a text file, looks for the reason a person can fix: a coordinate that is not a
-// finite number (CGAL's text readers stop there). Returns an empty string if none is found.
-inline std::string diagnose_text_file(const std::string& file, const std::string& ext)
-{
-  if(ext != "obj" && ext != "stl")
-    return std::string();
-  std::ifstream in(file);
-  std::string line;
-  std::size_t vertex = 0;
-  const std::string keyword = (ext == "obj") ? "v" : "vertex";
-  while(std::getline(in, line))
-  {
-    std::istringstream words(line);
-    std::string first;
-    if(!(words >> first) || first != keyword)
-      continue;
-    for(int k = 0; k < 3; ++k)
-    {
-      std::string token;
-      if(!(words >> token))
-        break;
-      char* end = nullptr;
-      const double x = std::strtod(token.c_str(), &end);
-      if(end != token.c_str() + token.size())
-        return "vertex " + std::to_string(vertex) + " has an invalid coordinate '" + token + "'";
-      if(!std::isfinite(x))
-        return ext == "obj" ? "vertex " + std::to_string(vertex) + " has a non-finite coordinate"
-                            : "facet " + std::to_string(vertex / 3) + " has a non-finite coordinate";
-    }
-    ++vertex;
-  }
-  return std::string();
-}
-
-// Reads `file` with CGAL's polygon soup readers, with their diagnostics on std::cerr kept out of the one-line
-// errors.
-inline void read_soup(const std::string& file, std::vector<Point_3>& points,
-                      std::vector<std::vector<std::size_t> >& polygons)
-{
-  std::ostringstream diagnostics;
-  std::streambuf* const cerr_buffer = std::cerr.rdbuf(diagnostics.rdbuf());
-  bool ok = false;
-  try
-  {
-    ok = CGAL::IO::read_polygon_soup(file, points, polygons, CGAL::parameters::verbose(false));
-  }
-  catch(...)
-  {
-    ok = false;
-  }
-  std::cerr.rdbuf(cerr_buffer);
-  if(!ok)
-  {
-    const std::string reason = diagnose_text_file(file, lower_extension(file));
-    throw Input_error("cannot read '" + file + "': " + (reason.empty() ? "invalid or unsupported mesh data" : reason));
-  }
-}
-
-} // namespace read_detail
-
 // Reads `file` into `input` (see the top of this file); a valid triangle mesh is built by `threads` OpenMP
 // threads (0: OpenMP's default), with the same result whatever their number. Throws `Input_error`.
-inline void read_input_mesh(const std::string& file, Input_mesh& input, int threads = 1)
-{
-  const std::string ext = lower_extension(file);
-  bool known = false;
-  for(const std::string& e : readable_extensions())
-    known = known || (e == ext);
-  if(!known)
-    throw Input_error("cannot read '" + file + "': " + (ext.empty() ? std::string("no file extension")
-                                                                     : "unsupported file extension '." + ext + "'")
-                      + " (expected " + readable_extensions_text() + ")");
-  {
-    struct stat st;
-    if(::stat(file.c_str(), &st) != 0)
-      throw Input_error("cannot open '" + file + "': " + std::strerror(errno));
-    if(S_ISDIR(st.st_mode))
-      throw Input_error("cannot read '" + file + "': it is a folder");
-    std::ifstream probe(file, std::ios::binary);
-    if(!probe)
-      throw Input_error("cannot open '" + file + "'");
-    char c;
-    if(!probe.get(c))
-      throw Input_error("cannot read '" + file + "': the file is empty");
-  }
-
-  input = Input_mesh();
-  const auto t0 = std::chrono::steady_clock::now();
-
-  // Plain ASCII OFF, valid triangle mesh: straight into the mesh.
-  if(ext == "off")
-  {
-    Fast_off_result r;
-    try
-    {
-      r = read_off_triangle_mesh(file, input.mesh, threads);
-    }
-    catch(const Fast_off_error& e)
-    {
-      throw Input_error("cannot read '" + file + "': " + e.what());
-    }
-    if(r.status == Fast_off_result::MESH)
-    {
-      input.direct = true;
-      input.file_vertices = input.mesh.number_of_vertices();
-      input.file_faces = input.mesh.number_of_faces();
-      input.reader = "fast OFF reader";
-      input.read_seconds = r.read_seconds;
-      input.repair_seconds = r.build_seconds;
-      return;
-    }
-    input.mesh.clear();
-  }
-
-  // Everything else: CGAL's readers, then the checks and repairs of triangle_mesh_from_soup().
-  std::vector<Point_3> points;
-  std::vector<std::vector<std::size_t> > polygons;
-  read_detail::read_soup(file, points, polygons);
-  input.reader = "CGAL::IO::read_polygon_soup";
-  input.read_seconds = read_detail::seconds_since(t0);
-  const auto t1 = std::chrono::steady_clock::now();
-  input.file_vertices = points.size();
-  input.file_faces = polygons.size();
-  if(points.empty() && polygons.empty())
-    throw Input_error("cannot read '" + file + "': the file has no vertices and no faces");
-  try
-  {
-    check_soup_values(points, polygons);
-  }
-  catch(const CGAL::VTP_geodesics::Invalid_input_error& e)
-  {
-    throw Input_error("cannot use '" + file + "': " + e.what());
-  }
-
-  // A valid triangle mesh (the common case): checked and built directly, as by the fast OFF reader.
-  if(points.size() < (std::size_t(1) << 31) && polygons.size() < (std::size_t(1) << 31) / 3
-     && std::all_of(polygons.begin(), polygons.end(), [](const std::vector<std::size_t>& p) { return p.size() == 3; }))
-  {
-    std::vector<fast_off_detail::Triangle> triangles(polygons.size());
-    for(std::size_t f = 0; f < polygons.size(); ++f)
-      for(int k = 0; k < 3; ++k)
-        triangles[f][k] = static_cast<std::uint32_t>(polygons[f][k]);
-    input.mesh.reserve(static_cast<Mesh::size_type>(points.size()), 0, 0);
-    for(const Point_3& p : points)
-      input.mesh.add_vertex(p);
-    std::string reason;
-    if(fast_off_detail::build_triangle_mesh(triangles, input.mesh, reason, threads))
-    {
-      input.direct = true;
-      input.repair_seconds = read_detail::seconds_since(t1);
-      return;
-    }
-    input.mesh.clear();
-  }
-
-  input.file_points = points;
-  input.file_polygons = polygons;
-  try
-  {
-    input.repairs = triangle_mesh_from_soup(std::move(points), std::move(polygons), input.mesh, input.copy_begin,
-                                            input.copies);
-  }
-  catch(const CGAL::VTP_geodesics::Invalid_input_error& e)
-  {
-    throw Input_error("cannot use '" + file + "': " + e.what());
-  }
-  if(!input.repairs.repaired && input.repairs.triangulated_faces == 0)
-  {
-    // A valid triangle mesh: mesh vertex i is point i, mesh face j is polygon j.
-    input.direct = true;
-    std::vector<std::size_t>().swap(input.copy_begin);
-    std::vector<Vertex_index>().swap(input.copies);
-    std::vector<Point_3>().swap(input.file_points);
-    std::vector<std::vector<std::size_t> >().swap(input.file_polygons);
-  }
-  input.repair_seconds = read_detail::seconds_since(t1);
-}
+void read_input_mesh(const std::string& file, Input_mesh& input, int threads = 1);
 
 } // namespace vtp_support
 

@@ -28,74 +28,19 @@ namespace vtp_support {
 
 // Reference distances computed with `CGAL::Surface_mesh_shortest_path` (Chen and Han / Xin and Wang),
 // with the traits `Surface_mesh_shortest_path_traits<K, Surface_mesh<Point>>`, `K` being the kernel of
-// `Point` (Epick for the usual `Surface_mesh<Epick::Point_3>`).
+// `Point` (Epick for the usual `Surface_mesh<Epick::Point_3>`): the distance to the nearest source, the sources
+// being mesh vertices and points of the surface given as face locations (a face and barycentric coordinates
+// with respect to source(halfedge(f)), target(halfedge(f)), target(next(halfedge(f))), as
+// CGAL::Polygon_mesh_processing::locate gives them).
 //
 // Returns one distance per vertex, indexed by the vertex index (the order of `vertices(mesh)`).
-// Vertices outside the connected component of `source` (other components, isolated vertices) get
+// Vertices outside the connected components of the sources (other components, isolated vertices) get
 // `+infinity`: they are found by a breadth-first search over the edges and are not queried.
 // SMSP itself reports a negative value for unreached vertices; such values are also mapped to `+infinity`.
 //
-// Throws `std::invalid_argument` if `source` is not a valid vertex of `mesh` or if `mesh` has garbage
+// Throws `std::invalid_argument` if a source vertex is not a valid vertex of `mesh` or if `mesh` has garbage
 // (removed elements not yet collected).
 // \pre `CGAL::is_triangle_mesh(mesh)`
-template <class Point>
-std::vector<double>
-shortest_path_reference_distances(const CGAL::Surface_mesh<Point>& mesh,
-                                  typename CGAL::Surface_mesh<Point>::Vertex_index source)
-{
-  typedef CGAL::Surface_mesh<Point> Mesh;
-  typedef typename Mesh::Vertex_index Vertex_index;
-  typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
-  typedef CGAL::Surface_mesh_shortest_path_traits<Kernel, Mesh> Traits;
-  typedef CGAL::Surface_mesh_shortest_path<Traits> Shortest_path;
-
-  if(mesh.has_garbage())
-    throw std::invalid_argument("shortest_path_reference_distances: the mesh has garbage");
-  const std::size_t n = static_cast<std::size_t>(mesh.number_of_vertices());
-  if(!(static_cast<std::size_t>(source) < n) || mesh.is_removed(source))
-    throw std::invalid_argument("shortest_path_reference_distances: invalid source vertex");
-
-  std::vector<double> distances(n, std::numeric_limits<double>::infinity());
-  distances[static_cast<std::size_t>(source)] = 0.;
-  if(mesh.is_isolated(source))
-    return distances;
-
-  // Connected component of the source, by a breadth-first search over the edges.
-  std::vector<unsigned char> in_component(n, 0);
-  std::vector<Vertex_index> component;
-  component.reserve(n);
-  in_component[static_cast<std::size_t>(source)] = 1;
-  component.push_back(source);
-  for(std::size_t i = 0; i < component.size(); ++i)
-  {
-    for(typename Mesh::Halfedge_index h : CGAL::halfedges_around_target(mesh.halfedge(component[i]), mesh))
-    {
-      const Vertex_index w = mesh.source(h);
-      if(!in_component[static_cast<std::size_t>(w)])
-      {
-        in_component[static_cast<std::size_t>(w)] = 1;
-        component.push_back(w);
-      }
-    }
-  }
-
-  Shortest_path shortest_path(mesh);
-  shortest_path.add_source_point(source);
-  shortest_path.build_sequence_tree();
-  for(Vertex_index v : component)
-  {
-    const double d = CGAL::to_double(shortest_path.shortest_distance_to_source_points(v).first);
-    distances[static_cast<std::size_t>(v)] = (d < 0. || std::isnan(d)) ? std::numeric_limits<double>::infinity() : d;
-  }
-  distances[static_cast<std::size_t>(source)] = 0.;
-  return distances;
-}
-
-// Result of `compare_distances()`.
-// The same from several sources at once (the distance to the nearest one): mesh vertices, and points of the
-// surface given as face locations (a face and barycentric coordinates with respect to source(halfedge(f)),
-// target(halfedge(f)), target(next(halfedge(f))), as CGAL::Polygon_mesh_processing::locate gives them).
-// Vertices outside the connected components of the sources get +infinity.
 template <class Point>
 std::vector<double>
 shortest_path_reference_distances(
@@ -161,6 +106,19 @@ shortest_path_reference_distances(
   return distances;
 }
 
+// The same from one source vertex.
+template <class Point>
+std::vector<double>
+shortest_path_reference_distances(const CGAL::Surface_mesh<Point>& mesh,
+                                  typename CGAL::Surface_mesh<Point>::Vertex_index source)
+{
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  return shortest_path_reference_distances(
+    mesh, std::vector<typename Mesh::Vertex_index>(1, source),
+    std::vector<std::pair<typename Mesh::Face_index, std::array<double, 3> > >());
+}
+
+// Result of `compare_distances()`.
 struct Distance_comparison
 {
   // Largest |a[i] - b[i]| over the entries that are finite in both vectors.

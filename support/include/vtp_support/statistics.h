@@ -24,6 +24,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstring>
+#include <initializer_list>
 #include <ostream>
 #include <string>
 #include <type_traits>
@@ -114,13 +116,17 @@ inline std::string json_value(double x) { return std::isfinite(x) ? double_to_st
 inline std::string json_value(int x) { return std::to_string(x); }
 inline std::string json_value(std::size_t x) { return std::to_string(x); }
 
-// The statistics as the members of a JSON object: `"name": value` pairs separated by ", ", each preceded by
-// `separator` but the first (so that they can follow other members: pass ", ").
+// The statistics as the members of a JSON object: `"name": value` pairs separated by ", ", the first preceded by
+// `first_separator` (so that they can follow other members: pass ", "). The statistics named in `except` are
+// left out (a client that writes a member of that name itself, with its own meaning).
 inline void write_statistics_json(std::ostream& os, const CGAL::VTP_geodesics::Propagation_statistics& s,
-                                  const char* first_separator = "")
+                                  const char* first_separator = "", std::initializer_list<const char*> except = {})
 {
   const char* separator = first_separator;
   for_each_statistic(s, [&](const char* name, const auto& value, Statistic_unit) {
+    for(const char* e : except)
+      if(std::strcmp(name, e) == 0)
+        return;
     os << separator << '"' << name << "\": " << json_value(value);
     separator = ", ";
   });

@@ -13,17 +13,13 @@
 // The nearest point of a mesh's surface to a position, as a face location usable as a source or a target of
 // the library (shared by vtp_geodesics --source-point and the Python module's locate()): one AABB tree of the
 // faces, CGAL::Polygon_mesh_processing::locate_with_AABB_tree, and the cleanup of its barycentric coordinates.
+// Compiled once, in the library VTP_geodesics_support (src/surface_locator.cpp: CGAL's AABB tree and locate are
+// slow to compile).
 
 #include <vtp_support/read_mesh.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/Polygon_mesh_processing/locate.h>
-
-#include <algorithm>
 #include <array>
-#include <cmath>
+#include <memory>
 #include <utility>
 
 namespace vtp_support {
@@ -34,10 +30,8 @@ public:
   typedef std::pair<Mesh::Face_index, std::array<double, 3> > Face_location;
 
   // Builds the tree of the faces of `mesh`, which must outlive the locator and not change.
-  explicit Surface_locator(const Mesh& mesh) : m_mesh(mesh)
-  {
-    CGAL::Polygon_mesh_processing::build_AABB_tree(mesh, m_tree);
-  }
+  explicit Surface_locator(const Mesh& mesh);
+  ~Surface_locator();
   Surface_locator(const Surface_locator&) = delete;
   Surface_locator& operator=(const Surface_locator&) = delete;
 
@@ -46,43 +40,15 @@ public:
   // takes them): PMP::locate's coordinates may be off by a few ulps (slightly negative, sum not exactly 1; a point
   // on an edge may come out 1e-16 inside the face, which the library takes as the edge point). Returns false if
   // there is no such location (the nearest face is degenerate: no coordinates at all).
-  bool locate(const Point_3& p, Face_location& location) const
-  {
-    const CGAL::Polygon_mesh_processing::Face_location<Mesh, double> l =
-      CGAL::Polygon_mesh_processing::locate_with_AABB_tree(p, m_tree, m_mesh);
-    std::array<double, 3> b = l.second;
-    double sum = 0.;
-    bool finite = true;
-    for(double& x : b)
-    {
-      finite = finite && std::isfinite(x);
-      sum += (std::max)(0., x);
-    }
-    if(!finite || !(sum > 0.5 && sum < 1.5) || l.first == Mesh::null_face())
-      return false;
-    for(double& x : b)
-      x = (std::max)(0., x) / sum;
-    location = Face_location(l.first, b);
-    return true;
-  }
+  bool locate(const Point_3& p, Face_location& location) const;
 
   // The point a face location denotes.
-  std::array<double, 3> point_of(const Face_location& l) const
-  {
-    const Mesh::Halfedge_index h = m_mesh.halfedge(l.first);
-    const Point_3 q[3] = { m_mesh.point(m_mesh.source(h)), m_mesh.point(m_mesh.target(h)),
-                           m_mesh.point(m_mesh.target(m_mesh.next(h))) };
-    std::array<double, 3> r;
-    for(int j = 0; j < 3; ++j)
-      r[std::size_t(j)] = l.second[0] * q[0][j] + l.second[1] * q[1][j] + l.second[2] * q[2][j];
-    return r;
-  }
+  std::array<double, 3> point_of(const Face_location& l) const;
 
 private:
-  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive> > Tree;
+  struct Tree;
   const Mesh& m_mesh;
-  Tree m_tree;
+  std::unique_ptr<Tree> m_tree;
 };
 
 } // namespace vtp_support

@@ -10,6 +10,8 @@
 #ifndef VTP_SUPPORT_TRIANGLE_MESH_FROM_SOUP_H
 #define VTP_SUPPORT_TRIANGLE_MESH_FROM_SOUP_H
 
+#include <vtp_support/soup_repair_report.h>
+
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -31,50 +33,6 @@
 #include <vector>
 
 namespace vtp_support {
-
-// What `triangle_mesh_from_soup()` did to make a triangle mesh out of a polygon soup.
-struct Soup_repair_report
-{
-  // true when the soup was not a valid polygon mesh and went through the repair
-  bool repaired = false;
-  // repair_polygon_soup(): coincident points merged, net number of faces removed (fewer than three
-  // distinct points, or duplicates) or added (pinched faces split), points left in no face removed
-  std::size_t merged_points = 0;
-  std::size_t removed_faces = 0;
-  std::size_t split_faces = 0;
-  std::size_t removed_isolated_points = 0;
-  // orient_polygon_soup(): faces reversed, non-manifold edges cut, vertices duplicated (and copies added)
-  std::size_t reversed_faces = 0;
-  std::size_t non_manifold_edges = 0;
-  std::size_t duplicated_vertices = 0;
-  std::size_t vertex_copies = 0;
-  // triangulate_faces(): faces with more than three vertices, split into triangles
-  std::size_t triangulated_faces = 0;
-
-  // "triangulated 12 faces; duplicated 3 non-manifold vertices", or an empty string if nothing was done.
-  std::string summary() const
-  {
-    std::string s;
-    auto add = [&s](std::size_t n, const std::string& verb, const char* singular, const char* plural) {
-      if(n == 0)
-        return;
-      if(!s.empty())
-        s += "; ";
-      s += verb + " " + std::to_string(n) + " " + (n == 1 ? singular : plural);
-    };
-    add(merged_points, "merged", "duplicate point", "duplicate points");
-    add(removed_faces, "removed", "degenerate or duplicate face", "degenerate or duplicate faces");
-    add(split_faces, "split", "pinched face", "pinched faces");
-    add(removed_isolated_points, "removed", "isolated point", "isolated points");
-    add(reversed_faces, "reoriented", "face", "faces");
-    add(non_manifold_edges, "cut", "non-manifold edge", "non-manifold edges");
-    add(duplicated_vertices, "duplicated", "non-manifold vertex", "non-manifold vertices");
-    if(vertex_copies > duplicated_vertices)
-      s += " (" + std::to_string(vertex_copies) + " copies)";
-    add(triangulated_faces, "triangulated", "face", "faces");
-    return s;
-  }
-};
 
 // Checks what no repair can fix: the soup has points and faces, finite coordinates and indices in range. Throws
 // `CGAL::VTP_geodesics::Invalid_input_error` with a one-line message that says which vertex or face is wrong.
@@ -258,22 +216,6 @@ triangle_mesh_from_soup(std::vector<Point> points,
     copy_begin.push_back(copies.size());
   }
   return report;
-}
-
-// Reports per-vertex values of the mesh built by `triangle_mesh_from_soup()` on the points of the soup:
-// the minimum over the copies of each point, `+infinity` for a point without copy.
-// `value(v)` gives the value of mesh vertex `v`.
-template <class Vertex_index, class Value_of_vertex>
-std::vector<double> values_on_soup_points(const std::vector<std::size_t>& copy_begin,
-                                          const std::vector<Vertex_index>& copies,
-                                          const Value_of_vertex& value)
-{
-  std::vector<double> result(copy_begin.empty() ? 0 : copy_begin.size() - 1,
-                             std::numeric_limits<double>::infinity());
-  for(std::size_t i = 0; i < result.size(); ++i)
-    for(std::size_t k = copy_begin[i]; k < copy_begin[i + 1]; ++k)
-      result[i] = (std::min)(result[i], static_cast<double>(value(copies[k])));
-  return result;
 }
 
 } // namespace vtp_support

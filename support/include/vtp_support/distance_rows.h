@@ -1,4 +1,17 @@
-// vtp_distance_matrix: computing the rows (the one place where the library is called).
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the applications of the VTP_geodesics package (not installed with the library).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#ifndef VTP_SUPPORT_DISTANCE_ROWS_H
+#define VTP_SUPPORT_DISTANCE_ROWS_H
+
+// Rows of a distance matrix: the computation of vtp_distance_matrix, also timed by the benchmark's
+// matrix_benchmark.
 //
 //   compute_rows(input, sources, rows, method, threads, sink)
 // computes, for each row r of `rows`, the distances from the file vertex sources[r] to every vertex of the
@@ -12,10 +25,8 @@
 // copies at once, in one multi-source run, as in vtp_geodesics; a file vertex that the repair removed reaches
 // nothing. The source itself is at distance 0 in its row.
 
-#ifndef VTP_DISTANCE_MATRIX_ROW_BATCH_H
-#define VTP_DISTANCE_MATRIX_ROW_BATCH_H
-
-#include "mesh_input.h"
+#include <vtp_support/methods.h>
+#include <vtp_support/read_mesh.h>
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
 #include <CGAL/VTP_geodesics/parameters.h>
@@ -27,65 +38,37 @@
 #include <limits>
 #include <vector>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
+namespace vtp_support {
 
-namespace vtp_matrix {
-
+// How the rows are computed: a sequential method of the table (each row is one sequential propagation; the
+// rows run in parallel), its lambda (approximate methods only), a distance limit.
 struct Row_method
 {
-  bool approximate = false;  // AVTP instead of VTP
-  bool virtual_sources = false;  // VSP instead of VTP
-  int per_vertex = 1;            // its virtual sources per vertex (1 or 2)
-  double lambda = CGAL::VTP_geodesics::recommended_lambda;
+  const Method_info* method = find_method("vtp");
+  double lambda = default_lambda;
   double max_distance = std::numeric_limits<double>::infinity();  // the distance limit (none: +inf)
 };
 
-// The number of threads when none is asked for: OpenMP's default.
-inline int default_thread_count()
-{
-#ifdef _OPENMP
-  return omp_get_max_threads();
-#else
-  return 1;
-#endif
-}
-
 // Throws whatever the library or the sink threw (once one threw, no new row starts).
 template <class Sink>
-void compute_rows(const Mesh_input& input, const std::vector<std::int64_t>& sources,
+void compute_rows(const Input_mesh& input, const std::vector<std::int64_t>& sources,
                   const std::vector<std::int64_t>& rows, const Row_method& method, int threads, Sink&& sink)
 {
   typedef CGAL::VTP_geodesics::Geodesic_distance_solver<Mesh> Solver;
   if(rows.empty())
     return;
-  const double infinity = std::numeric_limits<double>::infinity();
-  const auto np = CGAL::VTP_geodesics::parameters::number_of_threads((std::max)(threads, 1))
-                    .lambda(method.approximate ? method.lambda : infinity)
-                    .maximum_distance(method.max_distance)
-                    .virtual_sources(method.virtual_sources)
-                    .virtual_sources_per_vertex(method.per_vertex);
+  const auto np = method_parameters(*method.method, method.lambda, (std::max)(threads, 1))
+                    .maximum_distance(method.max_distance);
   Solver solver(input.mesh, CGAL::VTP_geodesics::parameters::number_of_threads((std::max)(threads, 1)));
 
-  // The solver's index of each mesh vertex (by Surface_mesh index), and the file's vertex of each column.
+  // The solver's index of each mesh vertex (by Surface_mesh index).
   std::vector<std::size_t> id(input.mesh.number_of_vertices());
   for(Vertex_index v : input.mesh.vertices())
     id[static_cast<std::size_t>(v)] = solver.vertex_id(v);
   std::vector<double> file_row(input.file_vertices);
-  // a row of the solver (indexed by vertex_id) to file order: the minimum over the copies of each vertex
+  // a row of the solver (indexed by vertex_id) to file order
   auto to_file_order = [&](const std::vector<double>& d, std::int64_t source) {
-    if(input.direct)
-      for(std::size_t i = 0; i < input.file_vertices; ++i)
-        file_row[i] = d[id[i]];
-    else
-      for(std::size_t i = 0; i < input.file_vertices; ++i)
-      {
-        double m = infinity;
-        for(std::size_t k = input.copy_begin[i]; k < input.copy_begin[i + 1]; ++k)
-          m = (std::min)(m, d[id[static_cast<std::size_t>(input.copies[k])]]);
-        file_row[i] = m;
-      }
+    input.on_file_vertices([&](Vertex_index v) { return d[id[static_cast<std::size_t>(v)]]; }, file_row);
     file_row[static_cast<std::size_t>(source)] = 0.;
   };
 
@@ -94,7 +77,8 @@ void compute_rows(const Mesh_input& input, const std::vector<std::int64_t>& sour
   std::vector<std::int64_t> batch_rows, other_rows;
   for(std::int64_t r : rows)
   {
-    const std::vector<Vertex_index> copies = input.mesh_vertices_of(static_cast<std::size_t>(sources[static_cast<std::size_t>(r)]));
+    const std::vector<Vertex_index> copies =
+      input.mesh_vertices_of(static_cast<std::size_t>(sources[static_cast<std::size_t>(r)]));
     if(copies.size() == 1)
     {
       batch_sources.push_back(copies[0]);
@@ -122,7 +106,7 @@ void compute_rows(const Mesh_input& input, const std::vector<std::int64_t>& sour
     const std::vector<Vertex_index> copies = input.mesh_vertices_of(static_cast<std::size_t>(source));
     if(copies.empty())
     {
-      std::fill(file_row.begin(), file_row.end(), infinity);
+      std::fill(file_row.begin(), file_row.end(), std::numeric_limits<double>::infinity());
       file_row[static_cast<std::size_t>(source)] = 0.;
     }
     else
@@ -134,6 +118,6 @@ void compute_rows(const Mesh_input& input, const std::vector<std::int64_t>& sour
   }
 }
 
-} // namespace vtp_matrix
+} // namespace vtp_support
 
-#endif // VTP_DISTANCE_MATRIX_ROW_BATCH_H
+#endif // VTP_SUPPORT_DISTANCE_ROWS_H

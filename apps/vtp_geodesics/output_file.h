@@ -7,8 +7,8 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef VTP_SUPPORT_OUTPUT_FILE_H
-#define VTP_SUPPORT_OUTPUT_FILE_H
+#ifndef VTP_GEODESICS_APP_OUTPUT_FILE_H
+#define VTP_GEODESICS_APP_OUTPUT_FILE_H
 
 // Output files that never destroy anything (POSIX):
 //
@@ -44,7 +44,7 @@
 #include <sys/types.h>
 #include <unistd.h>
 
-namespace vtp_support {
+namespace vtp_geodesics_app {
 
 // Error of an output file; the message is one line that names the file.
 struct Output_error : std::runtime_error
@@ -55,7 +55,7 @@ struct Output_error : std::runtime_error
 namespace output_detail {
 
 using vtp_support::folder_of;
-inline std::string base_of(const std::string& path) { return file_name_of(path); }
+inline std::string base_of(const std::string& path) { return vtp_support::file_name_of(path); }
 
 // If `path` names a file descriptor of this process through /proc (/proc/self/fd/N, /dev/fd/N, which is a
 // link to /proc/self/fd), returns N; else -1.
@@ -344,6 +344,39 @@ private:
   std::unique_ptr<std::ostream> m_stream;
 };
 
-} // namespace vtp_support
+// The output files of one run: opened and written one after the other, then all committed together (nothing
+// is replaced unless every file was written).
+class Output_files
+{
+public:
+  // Opens `name` (see Output_file), calls write(stream), and closes the file.
+  template <class Write>
+  void write(const std::string& name, const Write& write)
+  {
+    m_files.emplace_back(new Output_file(name));
+    write(m_files.back()->stream());
+    m_files.back()->close();
+  }
 
-#endif // VTP_SUPPORT_OUTPUT_FILE_H
+  // Commits every file, in the order they were written.
+  void commit()
+  {
+    for(const std::unique_ptr<Output_file>& f : m_files)
+      f->commit();
+  }
+
+  bool writes_to_stdout() const
+  {
+    for(const std::unique_ptr<Output_file>& f : m_files)
+      if(f->writes_to_stdout())
+        return true;
+    return false;
+  }
+
+private:
+  std::vector<std::unique_ptr<Output_file> > m_files;
+};
+
+} // namespace vtp_geodesics_app
+
+#endif // VTP_GEODESICS_APP_OUTPUT_FILE_H

@@ -7,18 +7,18 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef VTP_SUPPORT_COLOUR_MAP_H
-#define VTP_SUPPORT_COLOUR_MAP_H
+#ifndef VTP_GEODESICS_APP_COLOUR_MAP_H
+#define VTP_GEODESICS_APP_COLOUR_MAP_H
 
 // The colour map of distances: matplotlib's perceptually uniform "viridis" (dark blue at 0, yellow at the
 // largest distance), sampled at 256 points into a header generated at configure time (see
-// support/make_colour_map.py); unreachable vertices are grey.
+// make_colour_map.py); unreachable vertices are grey.
 
-#include <vtp_support/generated_colour_map.h>
+#include "generated_colour_map.h"
 
 #include <cmath>
 
-namespace vtp_support {
+namespace vtp_geodesics_app {
 
 struct Rgb
 {
@@ -56,6 +56,6 @@ inline Rgb colour_of_distance(double d, double max_distance)
 inline const char* colour_map_name() { return generated::colour_map_name; }
 inline const char* colour_map_source() { return generated::colour_map_source; }
 
-} // namespace vtp_support
+} // namespace vtp_geodesics_app
 
-#endif // VTP_SUPPORT_COLOUR_MAP_H
+#endif // VTP_GEODESICS_APP_COLOUR_MAP_H

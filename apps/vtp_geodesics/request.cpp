@@ -1,0 +1,145 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the applications of the VTP_geodesics package (not installed with the library).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+// The request made from the command line (see request.h).
+
+#include "request.h"
+
+#include <vtp_support/number_format.h>
+
+#include <algorithm>
+#include <memory>
+#include <string>
+
+namespace vtp_geodesics_app {
+
+namespace {
+
+// Throws unless every vertex of `vertices` is a vertex of the file.
+void check_vertices(const std::vector<std::size_t>& vertices, const vtp_support::Input_mesh& input, const char* what)
+{
+  for(std::size_t v : vertices)
+    if(v >= input.file_vertices)
+      throw Tool_error(std::string(what) + " vertex " + std::to_string(v) + " is out of range (the mesh has "
+                       + std::to_string(input.file_vertices) + " vertices)");
+}
+
+std::string point_text(const std::array<double, 3>& p)
+{
+  return vtp_support::double_to_string(p[0]) + "," + vtp_support::double_to_string(p[1]) + ","
+         + vtp_support::double_to_string(p[2]);
+}
+
+// The paths (see Request): to a source vertex, its point; from another vertex, all its copies (the run starts
+// the path at the copy nearest to a source); from a point, its location.
+void add_paths(const Arguments& args, const vtp_support::Input_mesh& input,
+               const std::vector<Located_point>& path_points, Request& r)
+{
+  r.paths.assign(args.path_to.size() + path_points.size(), std::vector<std::array<double, 3> >());
+  r.traced.assign(r.paths.size(), -1);
+  for(std::size_t k = 0; k < args.path_to.size(); ++k)
+  {
+    const std::size_t v = args.path_to[k];
+    if(std::find(args.sources.begin(), args.sources.end(), v) != args.sources.end())
+    {
+      const vtp_support::Point_3& p = input.file_point(v);
+      r.paths[k].push_back({ { p.x(), p.y(), p.z() } });
+      continue;
+    }
+    Run_request::Path path;
+    path.name = "vertex " + std::to_string(v) + " (--path-to)";
+    path.copies = input.mesh_vertices_of(v);
+    if(path.copies.empty())
+      throw Tool_error("no path from " + path.name + ": no source reaches it (it is in no face of the mesh)");
+    r.traced[k] = static_cast<long long>(r.run.paths.size());
+    r.run.paths.push_back(path);
+  }
+  for(std::size_t j = 0; j < path_points.size(); ++j)
+  {
+    Run_request::Path path;
+    path.name = "point " + point_text(args.path_to_points[j]) + " (--path-to-point)";
+    path.is_point = true;
+    path.location = path_points[j].location;
+    r.traced[args.path_to.size() + j] = static_cast<long long>(r.run.paths.size());
+    r.run.paths.push_back(path);
+  }
+}
+
+} // namespace
+
+Request make_request(const Arguments& args, const vtp_support::Method_info& method,
+                     const vtp_support::Input_mesh& input)
+{
+  check_vertices(args.sources, input, "source");
+  check_vertices(args.targets, input, "target");
+  check_vertices(args.path_to, input, "path");
+  if(args.has_first)
+    check_vertices(std::vector<std::size_t>(1, args.first), input, "--first");
+
+  // Points, located on the mesh of the computation (the repaired mesh, if the file needed a repair).
+  std::unique_ptr<Point_locator> locator;
+  if(!args.source_points.empty() || !args.target_points.empty() || !args.path_to_points.empty())
+    locator.reset(new Point_locator(input.mesh));
+  auto locate_all = [&locator](const std::vector<std::array<double, 3> >& points, const char* option) {
+    std::vector<Located_point> located;
+    for(const std::array<double, 3>& p : points)
+      located.push_back(locator->locate(p, option));
+    return located;
+  };
+  Request r;
+  r.source_points = locate_all(args.source_points, "--source-point");
+  const std::vector<Located_point> target_points = locate_all(args.target_points, "--target-point");
+  const std::vector<Located_point> path_points = locate_all(args.path_to_points, "--path-to-point");
+
+  // The mesh vertices standing for a file vertex: one, several if the repair duplicated it (as a source or a
+  // target, all are), none if the repair removed it (a vertex in no face: only itself is reachable).
+  Run_request& run = r.run;
+  run.method = &method;
+  run.threads = args.threads;
+  run.has_lambda = args.has_lambda;
+  run.lambda = args.lambda;
+  run.lambda_g = args.lambda_g;
+  for(std::size_t i = 0; i < args.sources.size(); ++i)
+    for(vtp_support::Vertex_index v : input.mesh_vertices_of(args.sources[i]))
+    {
+      run.source_vertices.push_back(v);
+      run.source_vertex_labels.push_back(i);
+    }
+  for(std::size_t j = 0; j < r.source_points.size(); ++j)
+  {
+    run.source_locations.push_back(r.source_points[j].location);
+    run.source_location_labels.push_back(args.sources.size() + j);
+  }
+  run.want_labels = args.several_sources() || !args.labels.empty() || args.farthest_points > 0 || args.colour_labels;
+  run.max_distance = args.max_distance;
+  for(std::size_t v : args.targets)
+    for(vtp_support::Vertex_index c : input.mesh_vertices_of(v))
+      run.target_vertices.push_back(c);
+  for(const Located_point& p : target_points)
+    run.target_locations.push_back(p.location);
+  run.stop_at_targets = args.has_targets();
+  add_paths(args, input, path_points, r);
+  run.check_cgal = args.check_cgal;
+  if(args.farthest_points > 0)
+  {
+    run.farthest_points = args.farthest_points;
+    run.radius = args.radius;
+    if(args.has_first)
+    {
+      const std::vector<vtp_support::Vertex_index> copies = input.mesh_vertices_of(args.first);
+      if(copies.empty())
+        throw Tool_error("--first vertex " + std::to_string(args.first) + " is in no face of the mesh");
+      run.has_first = true;
+      run.first = copies.front();
+    }
+  }
+  return r;
+}
+
+} // namespace vtp_geodesics_app
