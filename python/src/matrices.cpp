@@ -144,11 +144,7 @@ void Core_solver::run_rows(const std::vector<Vertex_index>& rows, double max_dis
     };
     try
     {
-#ifdef _OPENMP
-      m_solver->compute_each<CGAL::Parallel_tag>(rows, sink, np);
-#else
-      m_solver->compute_each<CGAL::Sequential_tag>(rows, sink, np);
-#endif
+      vtp_support::compute_each_on_threads(*m_solver, rows, sink, np);
     }
     catch(const Python_error_pending&)
     {

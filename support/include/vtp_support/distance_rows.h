@@ -92,11 +92,7 @@ void compute_rows(const Input_mesh& input, const std::vector<std::int64_t>& sour
     to_file_order(d, source);
     sink(row, source, static_cast<const std::vector<double>&>(file_row));
   };
-#ifdef _OPENMP
-  solver.compute_each<CGAL::Parallel_tag>(batch_sources, row_sink, np);
-#else
-  solver.compute_each<CGAL::Sequential_tag>(batch_sources, row_sink, np);
-#endif
+  compute_each_on_threads(solver, batch_sources, row_sink, np);
 
   // The other rows (sources cut by the repair, or removed by it), one multi-source run each.
   const CGAL::Constant_property_map<Vertex_index, double> no_map;

@@ -130,6 +130,19 @@ decltype(auto) with_method(const Method_info& m, double lambda, int threads, Cal
 #endif
 }
 
+// The batches: solver.compute_each(sources, sink, np), one row per source, the rows on the threads of `np` (each
+// row on one thread, whatever the method: compute_each() runs the sequential scheduling of each row; its
+// Parallel_tag is that of the rows), or one after another in a program built without OpenMP.
+template <class Solver, class Sources, class Sink, class NamedParameters>
+void compute_each_on_threads(Solver& solver, const Sources& sources, Sink&& sink, const NamedParameters& np)
+{
+#ifdef _OPENMP
+  solver.template compute_each<CGAL::Parallel_tag>(sources, std::forward<Sink>(sink), np);
+#else
+  solver.template compute_each<CGAL::Sequential_tag>(sources, std::forward<Sink>(sink), np);
+#endif
+}
+
 } // namespace vtp_support
 
 #endif // VTP_SUPPORT_METHODS_H
