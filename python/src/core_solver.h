@@ -14,7 +14,9 @@
 // The declarations its files share; each file defines one topic, and the Python names of that topic:
 //
 //   module.cpp     PYBIND11_MODULE: the module's attributes, the method table, the topics below registered
-//   solver.cpp     Core_solver(V, F, threads): the Surface_mesh and the per-mesh preprocessing; statistics()
+//   solver.cpp     Core_solver(V, F, threads, repair): the Surface_mesh and the per-mesh preprocessing; statistics()
+//   repair.cpp     the repair of V and F that are not a valid mesh (the tools' repair), and the caller's indices:
+//                  sources, targets and results mapped between the vertices and faces of V and F and the mesh's
 //   queries.cpp    distances(), path(), distance(), locate()
 //   matrices.cpp   matrix_dense(), matrix_sparse(): rows on all cores, Ctrl-C and progress every 0.2 s
 //   sampling.cpp   farthest_point_sampling(), with the Voronoi cell areas
@@ -38,6 +40,13 @@
 // Barycentric coordinates seen from Python are with respect to the corners of the face as given in F (F[f, 0],
 // F[f, 1], F[f, 2]); the library's are with respect to source(halfedge(f)), target(halfedge(f)),
 // target(next(halfedge(f))): io.cpp converts them both ways.
+//
+// The caller's indices: every index that Python gives or gets is a row of V or of F. When V and F form a valid
+// mesh, mesh vertex i is row i of V and mesh face j is row j of F. Otherwise (with repair), the mesh is the one
+// the tools make of the same file (vtp_support::triangle_mesh_from_soup()), and repair.cpp maps: a vertex of V
+// stands for its copies in the mesh (several for a vertex the repair split, none for one it dropped); a source
+// or a target is all its copies; a result is the least over its copies (+inf, label -1 without copy, 0 at a
+// source); a face of F stands for the mesh face of the same corners (none if it was degenerate).
 
 #include <vtp_support/fast_off_reader.h>
 #include <vtp_support/methods.h>
@@ -50,9 +59,11 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -90,9 +101,16 @@ class Core_solver
 {
 public:
   // solver.cpp
-  Core_solver(const Double_array& V, const Index_array& F, int threads);
-  std::size_t number_of_vertices() const { return m_mesh.number_of_vertices(); }
-  std::size_t number_of_faces() const { return m_mesh.number_of_faces(); }
+  Core_solver(const Double_array& V, const Index_array& F, int threads, bool repair, bool through_pinches);
+  // of V and F (the caller's)
+  std::size_t number_of_vertices() const { return m_n; }
+  std::size_t number_of_faces() const { return m_m; }
+  // what the repair did ("" if V and F form a valid mesh); the mesh's counts; the vertices of V split
+  std::string repairs() const { return m_repairs; }
+  std::size_t mesh_vertices() const { return m_mesh.number_of_vertices(); }
+  std::size_t mesh_faces() const { return m_mesh.number_of_faces(); }
+  py::tuple vertex_copies() const;
+  std::size_t join_runs() const { return m_join_runs; }
   double mean_edge_length() const { return m_solver->mean_edge_length(); }
   double preprocessing_seconds() const { return m_solver->preprocessing_seconds(); }
   py::dict statistics() const;
@@ -122,28 +140,79 @@ public:
 
 private:
   // solver.cpp
-  std::string build_mesh(const double* v, std::size_t n, const std::int64_t* f, std::size_t m);
+  std::string build_mesh(const double* v, std::size_t n, const std::int64_t* f, std::size_t m, bool& repairable);
   int threads_or_default(int threads) const;
   // Sets the sources of the next computation (the mutex held).
   void set_sources(const std::vector<Vertex_index>& vertices, const std::vector<Face_location>& points);
 
+  // repair.cpp
+  std::string repair_mesh(const double* v, std::size_t n, const std::int64_t* f, std::size_t m);
+  void map_faces(const std::int64_t* f, std::size_t m);
+  std::size_t canonical_of(std::size_t caller_vertex) const;
+  // The mesh vertices standing for vertex i of V (i checked), appended to `out`, with `label` to `labels`.
+  void append_copies(std::size_t i, std::vector<Vertex_index>& out) const;
+  // Distances (and labels) of the mesh vertices on the vertices of V, into d (and lab, if not null): the least
+  // over the copies (its copy's label), +inf (-1) without copy.
+  void to_caller(const std::vector<double>& mesh_d, const std::vector<std::size_t>* mesh_labels, double* d,
+                 std::int64_t* lab) const;
+  // Joins the copies of the split vertices (through_pinches): the field `d` (per mesh vertex, with its labels
+  // if not null) is lowered until no copy of a vertex is above another, by runs from known distances:
+  // `run_from(copies, field)` computes, from the sources `copies` and the known distances `field` (>= 0), the
+  // least of both into `field`. Returns the number of runs.
+  std::size_t join_copies(std::vector<double>& d, std::vector<std::size_t>* labels,
+                          const std::function<void(const std::vector<Vertex_index>&, std::vector<double>&)>& run_from);
+  // The field of sources on the vertices of V (repaired mesh; queries.cpp).
+  void field_on_caller(const std::vector<std::size_t>& source_vertices, const std::vector<Face_location>& source_points,
+                       const std::vector<std::size_t>& target_vertices, double max_distance,
+                       const vtp_support::Method_info& method, double lam, int threads, double* d, std::int64_t* lab);
+  std::size_t caller_of(Vertex_index v) const
+  {
+    return m_caller_of.empty() ? std::size_t(v) : m_caller_of[std::size_t(v)];
+  }
+  // The least of `mesh_d` over the copies of vertex j of V (+inf without copy).
+  double caller_value(const std::vector<double>& mesh_d, std::size_t j) const
+  {
+    if(m_repairs.empty())
+      return mesh_d[j];
+    double r = infinity;
+    for(std::size_t k = m_copy_begin[j]; k < m_copy_begin[j + 1]; ++k)
+      r = (std::min)(r, mesh_d[std::size_t(m_copies[k])]);
+    return r;
+  }
+
   // io.cpp
-  Vertex_index vertex_of(std::int64_t i, const char* what) const;
-  std::vector<Vertex_index> vertices_of(const Index_array& a, const char* what) const;
+  std::size_t vertex_of(std::int64_t i, const char* what) const;         // checked, a vertex of V
+  std::vector<std::size_t> vertices_of(const Index_array& a, const char* what) const;
   std::vector<Face_location> locations_of(const Index_array& faces, const Double_array& bary, const char* what) const;
   Face_location location_of(std::int64_t face, const Double_array& bary, const char* what) const;
   std::array<int, 3> corner_order(Face_index f) const;
   std::array<double, 3> from_user_barycentric(Face_index f, const std::array<double, 3>& b) const;
   std::array<double, 3> to_user_barycentric(const Face_location& l) const;
+  std::int64_t to_user_face(Face_index f) const;
 
   // matrices.cpp
   template <class Write>
-  void run_rows(const std::vector<Vertex_index>& rows, double max_distance, const std::string& method_name,
+  void run_rows(const std::vector<std::size_t>& sources, double max_distance, const std::string& method_name,
                 double lam, int threads, bool progress, Write&& write);
 
   Mesh m_mesh;
+  std::size_t m_n = 0, m_m = 0;                                   // rows of V and F
   // F as given, for barycentric coordinates; empty when each face's halfedge starts at its first corner in F
+  // (or when the mesh was repaired: then m_caller_faces)
   std::vector<vtp_support::fast_off_detail::Triangle> m_triangles;
+  // Repaired (m_repairs not empty; see repair.cpp): the copies of vertex i of V are
+  // m_copies[m_copy_begin[i] .. m_copy_begin[i + 1]); m_caller_of: the vertex of V of each mesh vertex;
+  // m_caller_faces: F; m_mesh_face_of: the mesh face of each face of F (-1: none); m_caller_face_of: a face of F
+  // of each mesh face. All empty when V and F form a valid mesh.
+  std::string m_repairs;
+  bool m_through_pinches = false;
+  std::size_t m_join_runs = 0;                                    // of the last computation (through_pinches)
+  std::vector<std::size_t> m_copy_begin;
+  std::vector<Vertex_index> m_copies;
+  std::vector<std::size_t> m_caller_of;
+  std::vector<vtp_support::fast_off_detail::Triangle> m_caller_faces;
+  std::vector<std::int64_t> m_mesh_face_of;
+  std::vector<std::size_t> m_caller_face_of;
   std::unique_ptr<Solver> m_solver;
   std::unique_ptr<vtp_support::Surface_locator> m_locator;        // of locate(), built on first use
   VTP::Propagation_statistics m_statistics;                       // of the last computation

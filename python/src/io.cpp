@@ -23,18 +23,18 @@ namespace vtp_python {
 // ---------------------------------------------------------------------------------------------------------------
 // Arrays of vertex indices and face locations (read within their sizes: their shapes are checked in Python)
 // ---------------------------------------------------------------------------------------------------------------
-Vertex_index Core_solver::vertex_of(std::int64_t i, const char* what) const
+std::size_t Core_solver::vertex_of(std::int64_t i, const char* what) const
 {
   const std::size_t n = number_of_vertices();
   if(i < 0 || i >= static_cast<std::int64_t>(n))
     value_error(std::string(what) + ": vertex index " + std::to_string(i) + " out of range [0, " + std::to_string(n)
                 + ")");
-  return Vertex_index(static_cast<Mesh::size_type>(i));
+  return static_cast<std::size_t>(i);
 }
 
-std::vector<Vertex_index> Core_solver::vertices_of(const Index_array& a, const char* what) const
+std::vector<std::size_t> Core_solver::vertices_of(const Index_array& a, const char* what) const
 {
-  std::vector<Vertex_index> r;
+  std::vector<std::size_t> r;
   r.reserve(static_cast<std::size_t>(a.size()));
   const std::int64_t* p = a.data();
   for(py::ssize_t i = 0; i < a.size(); ++i)
@@ -61,6 +61,24 @@ std::vector<Face_location> Core_solver::locations_of(const Index_array& faces, c
     if(!(std::isfinite(sum) && bi[0] >= -1e-9 && bi[1] >= -1e-9 && bi[2] >= -1e-9 && std::abs(sum - 1.) <= 1e-9))
       value_error(std::string(what) + ": the barycentric coordinates of point " + std::to_string(i)
                   + " must be finite, non-negative and of sum 1");
+    if(!m_repairs.empty())
+    {
+      // the corners of face f[i] of F in the library's order of its mesh face
+      const std::int64_t mf = m_mesh_face_of[static_cast<std::size_t>(f[i])];
+      if(mf < 0)
+        value_error(std::string(what) + ": face " + std::to_string(f[i])
+                    + " of F is not in the mesh (the repair removed it as degenerate)");
+      const Face_index face(static_cast<Mesh::size_type>(mf));
+      const Halfedge_index h = m_mesh.halfedge(face);
+      const Vertex_index lib[3] = { m_mesh.source(h), m_mesh.target(h), m_mesh.target(m_mesh.next(h)) };
+      std::array<double, 3> lb = { { 0., 0., 0. } };
+      for(std::size_t c = 0; c < 3; ++c)
+        for(std::size_t k = 0; k < 3; ++k)
+          if(canonical_of(m_caller_faces[static_cast<std::size_t>(f[i])][k]) == m_caller_of[std::size_t(lib[c])])
+            lb[c] = bi[k];
+      r.push_back(Face_location(face, lb));
+      continue;
+    }
     const Face_index face(static_cast<Mesh::size_type>(f[i]));
     r.push_back(Face_location(face, from_user_barycentric(face, { { bi[0], bi[1], bi[2] } })));
   }
@@ -81,6 +99,19 @@ Face_location Core_solver::location_of(std::int64_t face, const Double_array& ba
 // Position in the face's row of F of each corner of the library's order.
 std::array<int, 3> Core_solver::corner_order(Face_index f) const
 {
+  if(!m_repairs.empty())
+  {
+    // the mesh face's corners in the order of a face of F with the same corners
+    const auto& t = m_caller_faces[m_caller_face_of[static_cast<std::size_t>(f)]];
+    const Halfedge_index h = m_mesh.halfedge(f);
+    const Vertex_index lib[3] = { m_mesh.source(h), m_mesh.target(h), m_mesh.target(m_mesh.next(h)) };
+    std::array<int, 3> pos = { { 0, 1, 2 } };
+    for(int i = 0; i < 3; ++i)
+      for(int k = 0; k < 3; ++k)
+        if(m_caller_of[static_cast<std::size_t>(lib[i])] == canonical_of(t[std::size_t(k)]))
+          pos[std::size_t(i)] = k;
+    return pos;
+  }
   if(m_triangles.empty())
     return { { 0, 1, 2 } };
   const Halfedge_index h = m_mesh.halfedge(f);
@@ -100,6 +131,13 @@ std::array<double, 3> Core_solver::from_user_barycentric(Face_index f, const std
   return { { b[std::size_t(pos[0])], b[std::size_t(pos[1])], b[std::size_t(pos[2])] } };
 }
 
+// The face of F of a mesh face.
+std::int64_t Core_solver::to_user_face(Face_index f) const
+{
+  return static_cast<std::int64_t>(m_repairs.empty() ? static_cast<std::size_t>(f)
+                                                     : m_caller_face_of[static_cast<std::size_t>(f)]);
+}
+
 std::array<double, 3> Core_solver::to_user_barycentric(const Face_location& l) const
 {
   const std::array<int, 3> pos = corner_order(l.first);
@@ -115,7 +153,9 @@ std::array<double, 3> Core_solver::to_user_barycentric(const Face_location& l) c
 namespace {
 
 // The mesh of a file: (V (n, 3), F (m, 3), the repairs done, the reader's name, whether it was read as is).
-py::tuple read_mesh(const std::string& path, int threads)
+// `as_in_file`: the vertices and triangles of the file as they are (not repaired; Solver(V, F) repairs them as
+// the tools do); a file with faces of more than three vertices is refused then.
+py::tuple read_mesh(const std::string& path, int threads, bool as_in_file)
 {
   vtp_support::Input_mesh input;
   std::string error;
@@ -136,6 +176,26 @@ py::tuple read_mesh(const std::string& path, int threads)
   }
   if(!error.empty())
     value_error(error);
+  if(as_in_file && !input.direct)
+  {
+    const std::size_t n = input.file_points.size(), m = input.file_polygons.size();
+    for(std::size_t j = 0; j < m; ++j)
+      if(input.file_polygons[j].size() != 3)
+        value_error("read_mesh('" + path + "', repair=False): face " + std::to_string(j) + " has "
+                    + std::to_string(input.file_polygons[j].size())
+                    + " vertices; only triangles can be returned as they are (repair=True triangulates them)");
+    py::array_t<double> V({ static_cast<py::ssize_t>(n), py::ssize_t(3) });
+    py::array_t<std::int64_t> F({ static_cast<py::ssize_t>(m), py::ssize_t(3) });
+    double* v = V.mutable_data();
+    std::int64_t* f = F.mutable_data();
+    for(std::size_t i = 0; i < n; ++i)
+      for(int k = 0; k < 3; ++k)
+        v[3 * i + std::size_t(k)] = input.file_points[i][k];
+    for(std::size_t j = 0; j < m; ++j)
+      for(std::size_t k = 0; k < 3; ++k)
+        f[3 * j + k] = static_cast<std::int64_t>(input.file_polygons[j][k]);
+    return py::make_tuple(V, F, std::string(), input.reader, false);
+  }
   const Mesh& mesh = input.mesh;
   const std::size_t n = mesh.number_of_vertices(), m = mesh.number_of_faces();
   py::array_t<double> V({ static_cast<py::ssize_t>(n), py::ssize_t(3) });
@@ -255,7 +315,7 @@ py::tuple symmetric_min_csr(const Double_array& data, const Index_array& indices
 
 void define_io(py::module_& m)
 {
-  m.def("read_mesh", &read_mesh, py::arg("path"), py::arg("threads"));
+  m.def("read_mesh", &read_mesh, py::arg("path"), py::arg("threads"), py::arg("as_in_file"));
   m.def("symmetric_min_csr", &symmetric_min_csr, py::arg("data"), py::arg("indices"), py::arg("indptr"));
 }
 

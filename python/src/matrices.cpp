@@ -110,24 +110,27 @@ private:
   bool m_progress;
 };
 
-// The columns of the matrix: the indices of the vertices listed as targets.
-std::vector<std::size_t> column_ids(const std::vector<Vertex_index>& listed)
-{
-  std::vector<std::size_t> r;
-  for(Vertex_index v : listed)
-    r.push_back(static_cast<std::size_t>(v));
-  return r;
-}
-
 } // namespace
 
-// Rows from `rows` on `threads` threads through compute_each(); `write(i, distances)` is called serially.
+// Rows from the vertices `sources` of V on `threads` threads through compute_each(); `write(i, distances)` is
+// called serially, with the row i of `sources` and the distances of the mesh vertices (on a repaired mesh, once
+// per copy of the source: the row is the least of them).
 template <class Write>
-void Core_solver::run_rows(const std::vector<Vertex_index>& rows, double max_distance,
+void Core_solver::run_rows(const std::vector<std::size_t>& sources, double max_distance,
                            const std::string& method_name, double lam, int threads, bool progress, Write&& write)
 {
   const vtp_support::Method_info& method = method_named(method_name, lam);
   check_limit(max_distance);
+  if(m_through_pinches && !m_repairs.empty())
+    value_error("matrices are not computed through the vertices that the repair split (the solver was made with "
+                "through_pinches=True): use distances() row by row, or through_pinches=False");
+  std::vector<Vertex_index> rows;
+  std::vector<std::size_t> row_of;
+  for(std::size_t i = 0; i < sources.size(); ++i)
+  {
+    append_copies(sources[i], rows);
+    row_of.resize(rows.size(), i);
+  }
   if(rows.empty())
     return;
   Interrupt_check check(rows.size(), progress);
@@ -139,7 +142,7 @@ void Core_solver::run_rows(const std::vector<Vertex_index>& rows, double max_dis
     const auto np = vtp_support::method_parameters(method, lam, threads_or_default(threads))
                       .maximum_distance(max_distance);
     auto sink = [&](std::size_t i, Vertex_index, const std::vector<double>& d) {
-      write(i, d);
+      write(row_of[i], d);
       check.row_done();
     };
     try
@@ -162,15 +165,30 @@ py::array Core_solver::matrix_dense(const Index_array& sources, const Index_arra
                                     double max_distance, bool single, const std::string& method_name, double lam,
                                     int threads, bool progress)
 {
-  const std::vector<Vertex_index> rows = vertices_of(sources, "sources");
-  const std::vector<std::size_t> cols = all_columns ? std::vector<std::size_t>()
-                                                    : column_ids(vertices_of(columns, "targets"));
+  const std::vector<std::size_t> rows = vertices_of(sources, "sources");
+  const std::vector<std::size_t> cols = all_columns ? std::vector<std::size_t>() : vertices_of(columns, "targets");
   const std::size_t nc = all_columns ? number_of_vertices() : cols.size();
   const std::vector<py::ssize_t> shape = { static_cast<py::ssize_t>(rows.size()), static_cast<py::ssize_t>(nc) };
   py::array out = single ? py::array(py::array_t<float>(shape)) : py::array(py::array_t<double>(shape));
   void* data = out.mutable_data();
   auto fill = [&](auto* o) {
     typedef typename std::remove_pointer<decltype(o)>::type T;
+    if(!m_repairs.empty())
+    {
+      // the least over the copies of the source and of each column; 0 at the source, +inf without copy
+      std::fill(o, o + rows.size() * nc, static_cast<T>(infinity));
+      run_rows(rows, max_distance, method_name, lam, threads, progress,
+               [&](std::size_t i, const std::vector<double>& d) {
+                 T* row = o + i * nc;
+                 for(std::size_t j = 0; j < nc; ++j)
+                   row[j] = (std::min)(row[j], static_cast<T>(caller_value(d, all_columns ? j : cols[j])));
+               });
+      for(std::size_t i = 0; i < rows.size(); ++i)
+        for(std::size_t j = 0; j < nc; ++j)
+          if((all_columns ? j : cols[j]) == rows[i])
+            o[i * nc + j] = T(0);
+      return;
+    }
     run_rows(rows, max_distance, method_name, lam, threads, progress,
              [&](std::size_t i, const std::vector<double>& d) {
                T* row = o + i * nc;
@@ -197,10 +215,10 @@ py::tuple Core_solver::matrix_sparse(const Index_array& sources, const Index_arr
 {
   if(!(max_distance < infinity))
     value_error("a sparse matrix needs a finite max_distance");
-  const std::vector<Vertex_index> rows = vertices_of(sources, "sources");
-  const std::vector<std::size_t> cols = all_columns ? std::vector<std::size_t>()
-                                                    : column_ids(vertices_of(columns, "targets"));
+  const std::vector<std::size_t> rows = vertices_of(sources, "sources");
+  const std::vector<std::size_t> cols = all_columns ? std::vector<std::size_t>() : vertices_of(columns, "targets");
   const std::size_t nc = all_columns ? number_of_vertices() : cols.size();
+  const bool repaired = !m_repairs.empty();
   // the entries of each row, kept in the output's type (float32 output: no float64 copy of the entries)
   auto compute = [&](auto value_type) {
     typedef decltype(value_type) T;
@@ -210,9 +228,31 @@ py::tuple Core_solver::matrix_sparse(const Index_array& sources, const Index_arr
              [&](std::size_t i, const std::vector<double>& d) {
                std::vector<std::uint32_t>& c = row_columns[i];
                std::vector<T>& v = row_values[i];
+               if(repaired && !c.empty())
+               {
+                 // another copy of the source: the least of both rows
+                 std::vector<std::uint32_t> c2;
+                 std::vector<T> v2;
+                 std::size_t k = 0;
+                 for(std::size_t j = 0; j < nc; ++j)
+                 {
+                   const double x = caller_value(d, all_columns ? j : cols[j]);
+                   const bool here = k < c.size() && c[k] == j;
+                   if(x <= max_distance || here)
+                   {
+                     c2.push_back(static_cast<std::uint32_t>(j));
+                     v2.push_back(here ? (std::min)(v[k], static_cast<T>(x)) : static_cast<T>(x));
+                   }
+                   if(here)
+                     ++k;
+                 }
+                 c.swap(c2);
+                 v.swap(v2);
+                 return;
+               }
                for(std::size_t j = 0; j < nc; ++j)
                {
-                 const double x = d[all_columns ? j : cols[j]];
+                 const double x = repaired ? caller_value(d, all_columns ? j : cols[j]) : d[all_columns ? j : cols[j]];
                  if(x <= max_distance)
                  {
                    c.push_back(static_cast<std::uint32_t>(j));
@@ -220,6 +260,20 @@ py::tuple Core_solver::matrix_sparse(const Index_array& sources, const Index_arr
                  }
                }
              });
+    if(repaired) // a source in no face: 0 in its own column, nothing else
+      for(std::size_t r = 0; r < rows.size(); ++r)
+        if(m_copy_begin[rows[r]] == m_copy_begin[rows[r] + 1])
+          for(std::size_t j = 0; j < nc; ++j)
+            if((all_columns ? j : cols[j]) == rows[r])
+            {
+              const auto at = std::lower_bound(row_columns[r].begin(), row_columns[r].end(),
+                                               static_cast<std::uint32_t>(j));
+              if(at == row_columns[r].end() || *at != j)
+              {
+                row_values[r].insert(row_values[r].begin() + (at - row_columns[r].begin()), T(0));
+                row_columns[r].insert(at, static_cast<std::uint32_t>(j));
+              }
+            }
     std::size_t nnz = 0;
     for(const auto& c : row_columns)
       nnz += c.size();

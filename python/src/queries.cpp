@@ -19,6 +19,7 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <iterator>
 
 namespace vtp_python {
@@ -30,9 +31,9 @@ py::tuple Core_solver::distances(const Index_array& sources, const Index_array& 
 {
   const vtp_support::Method_info& method = method_named(method_name, lam);
   check_limit(max_distance);
-  const std::vector<Vertex_index> source_vertices = vertices_of(sources, "sources");
+  const std::vector<std::size_t> source_vertices = vertices_of(sources, "sources");
   const std::vector<Face_location> source_points = locations_of(point_faces, point_bary, "points");
-  const std::vector<Vertex_index> target_vertices = vertices_of(targets, "targets");
+  const std::vector<std::size_t> target_vertices = vertices_of(targets, "targets");
   if(source_vertices.empty() && source_points.empty())
     value_error("no source: give at least one vertex in sources or one point in points");
   const std::size_t n = number_of_vertices();
@@ -42,15 +43,30 @@ py::tuple Core_solver::distances(const Index_array& sources, const Index_array& 
   double* d = out.mutable_data();
   std::int64_t* lab = labels_out.mutable_data();
   double* td = target_out.mutable_data();
+  if(!m_repairs.empty())
+  {
+    {
+      py::gil_scoped_release release;
+      std::lock_guard<std::mutex> lock(m_mutex);
+      field_on_caller(source_vertices, source_points, target_vertices, max_distance, method, lam, threads, d,
+                      want_labels ? lab : nullptr);
+      for(std::size_t i = 0; i < target_vertices.size(); ++i)
+        td[i] = d[target_vertices[i]];
+    }
+    return py::make_tuple(out, want_labels ? py::object(labels_out) : py::object(py::none()), target_out);
+  }
   {
     py::gil_scoped_release release;
     std::lock_guard<std::mutex> lock(m_mutex);
     // isolated vertices are never reached: not targets of the stop rule (their distance is +inf)
     std::vector<Vertex_index> live_targets;
-    for(Vertex_index t : target_vertices)
-      if(!m_mesh.is_isolated(t))
-        live_targets.push_back(t);
-    set_sources(source_vertices, source_points);
+    for(std::size_t t : target_vertices)
+      if(!m_mesh.is_isolated(Vertex_index(static_cast<Mesh::size_type>(t))))
+        live_targets.push_back(Vertex_index(static_cast<Mesh::size_type>(t)));
+    std::vector<Vertex_index> mesh_sources;
+    for(std::size_t s : source_vertices)
+      mesh_sources.push_back(Vertex_index(static_cast<Mesh::size_type>(s)));
+    set_sources(mesh_sources, source_points);
     const auto vdm = boost::make_iterator_property_map(d, get(boost::vertex_index, m_mesh));
     std::vector<std::size_t> labels;
     vtp_support::with_method(method, lam, threads_or_default(threads), [&](auto tag, const auto& method_np) {
@@ -74,9 +90,98 @@ py::tuple Core_solver::distances(const Index_array& sources, const Index_array& 
         lab[i] = (labels[i] == VTP::no_source || !(d[i] < infinity)) ? -1 : static_cast<std::int64_t>(labels[i]);
     std::size_t k = 0;
     for(std::size_t i = 0; i < target_vertices.size(); ++i)
-      td[i] = m_mesh.is_isolated(target_vertices[i]) ? infinity : m_solver->target_distance(k++);
+      td[i] = m_mesh.is_isolated(Vertex_index(static_cast<Mesh::size_type>(target_vertices[i])))
+                ? infinity
+                : m_solver->target_distance(k++);
   }
   return py::make_tuple(out, want_labels ? py::object(labels_out) : py::object(py::none()), target_out);
+}
+
+// A repaired mesh (the mutex held, the GIL released): the field of the sources (vertices of V: all their copies;
+// face locations) on the vertices of V, into d (n) and lab (n, if not null): the least over the copies of a
+// vertex, its copy's label; 0 (and the first label) at a source vertex; +inf (-1) at a vertex in no face. The
+// propagation stops at the targets (vertices of V: all their copies) and at the limit; with through_pinches, the
+// copies of the split vertices are joined (paths through them), and targets and limit then bound the result,
+// not the work.
+void Core_solver::field_on_caller(const std::vector<std::size_t>& source_vertices,
+                                  const std::vector<Face_location>& source_points,
+                                  const std::vector<std::size_t>& target_vertices, double max_distance,
+                                  const vtp_support::Method_info& method, double lam, int threads, double* d,
+                                  std::int64_t* lab)
+{
+  const std::size_t n = number_of_vertices(), nm = m_mesh.number_of_vertices();
+  std::vector<Vertex_index> mesh_sources;
+  std::vector<std::size_t> label_of_source;
+  for(std::size_t i = 0; i < source_vertices.size(); ++i)
+  {
+    append_copies(source_vertices[i], mesh_sources);
+    label_of_source.resize(mesh_sources.size(), i);
+  }
+  for(std::size_t j = 0; j < source_points.size(); ++j)
+    label_of_source.push_back(source_vertices.size() + j);
+  const bool join = m_through_pinches;
+  std::vector<Vertex_index> live_targets;
+  if(!join)
+    for(std::size_t t : target_vertices)
+    {
+      std::vector<Vertex_index> copies;
+      append_copies(t, copies);
+      for(Vertex_index c : copies)
+        if(!m_mesh.is_isolated(c))
+          live_targets.push_back(c);
+    }
+  const double limit = join ? infinity : max_distance;
+  std::vector<double> mesh_d(nm, infinity);
+  std::vector<std::size_t> labels;
+  if(lab != nullptr)
+    labels.assign(nm, VTP::no_source);
+  const auto index = get(boost::vertex_index, m_mesh);
+  const int t = threads_or_default(threads);
+  if(!label_of_source.empty())
+  {
+    set_sources(mesh_sources, source_points);
+    vtp_support::with_method(method, lam, t, [&](auto tag, const auto& method_np) {
+      typedef decltype(tag) Tag;
+      const auto vdm = boost::make_iterator_property_map(mesh_d.begin(), index);
+      const auto np = method_np.maximum_distance(limit)
+                        .targets(live_targets)
+                        .stop_at_targets(!live_targets.empty())
+                        .statistics(m_statistics);
+      if(lab != nullptr)
+        m_solver->template compute<Tag>(vdm, np.nearest_source_map(boost::make_iterator_property_map(
+                                               labels.begin(), index)));
+      else
+        m_solver->template compute<Tag>(vdm, np);
+    });
+    if(lab != nullptr)
+      for(std::size_t& l : labels)
+        if(l != VTP::no_source)
+          l = label_of_source[l];
+    if(join)
+    {
+      m_join_runs = join_copies(mesh_d, lab != nullptr ? &labels : nullptr,
+                                [&](const std::vector<Vertex_index>& copies, std::vector<double>& field) {
+                                  set_sources(copies, std::vector<Face_location>());
+                                  vtp_support::with_method(method, lam, t, [&](auto tag, const auto& method_np) {
+                                    typedef decltype(tag) Tag;
+                                    const auto fm = boost::make_iterator_property_map(field.begin(), index);
+                                    m_solver->template compute<Tag>(fm, method_np.initial_distances(fm));
+                                  });
+                                });
+      if(max_distance < infinity)
+        for(double& x : mesh_d)
+          if(x > max_distance)
+            x = infinity;
+    }
+  }
+  to_caller(mesh_d, lab != nullptr ? &labels : nullptr, d, lab);
+  for(std::size_t i = source_vertices.size(); i-- > 0;)
+  {
+    d[source_vertices[i]] = 0.;
+    if(lab != nullptr)
+      lab[source_vertices[i]] = static_cast<std::int64_t>(i);
+  }
+  (void)n;
 }
 
 // The geodesic path to a target (a vertex if target_vertex >= 0, else the face location), from the sources.
@@ -86,35 +191,58 @@ py::tuple Core_solver::path(std::int64_t target_vertex, std::int64_t target_face
                             const Double_array& point_bary, double max_distance)
 {
   check_limit(max_distance);
-  const std::vector<Vertex_index> source_vertices = vertices_of(sources, "sources");
+  const std::vector<std::size_t> source_vertices = vertices_of(sources, "sources");
   const std::vector<Face_location> source_points = locations_of(point_faces, point_bary, "points");
   if(source_vertices.empty() && source_points.empty())
     value_error("no source: give at least one vertex in sources or one point in points");
+  if(m_through_pinches && !m_repairs.empty())
+    value_error("no path: paths are not traced through the vertices that the repair split (the solver was made "
+                "with through_pinches=True)");
   const bool at_vertex = target_vertex >= 0;
-  Vertex_index tv;
+  std::vector<Vertex_index> tv, mesh_sources;
   Face_location tl;
   if(at_vertex)
-    tv = vertex_of(target_vertex, "target");
+  {
+    append_copies(vertex_of(target_vertex, "target"), tv);
+    if(tv.empty())
+      value_error("no path: target vertex " + std::to_string(target_vertex)
+                  + " is in no face of the mesh (the repair removed it), no source reaches it");
+  }
   else
     tl = location_of(target_face, target_bary, "target");
+  for(std::size_t s : source_vertices)
+    append_copies(s, mesh_sources);
+  if(mesh_sources.empty() && source_points.empty())
+    value_error("no path: the source vertices are in no face of the mesh (the repair removed them)");
   std::vector<Point_3> points;
   std::vector<Face_location> locations;
   double distance = infinity;
   {
     py::gil_scoped_release release;
     std::lock_guard<std::mutex> lock(m_mutex);
-    set_sources(source_vertices, source_points);
+    set_sources(mesh_sources, source_points);
     const CGAL::Constant_property_map<Vertex_index, double> no_map;
     const auto np = VTP::parameters::maximum_distance(max_distance).record_paths(true).stop_at_targets(true)
                       .statistics(m_statistics);
     if(at_vertex)
     {
-      if(m_mesh.is_isolated(tv))
+      // every copy of the target (a copy in no face: the target is isolated), the path from the nearest
+      std::vector<Vertex_index> live;
+      for(Vertex_index c : tv)
+        if(!m_mesh.is_isolated(c))
+          live.push_back(c);
+      if(live.empty())
         throw VTP::Invalid_input_error("no path: the target is an isolated vertex, which no source reaches");
-      m_solver->compute<CGAL::Sequential_tag>(no_map, np.targets(tv));
-      distance = m_solver->target_distance(0);
-      m_solver->shortest_path_points(tv, std::back_inserter(points));
-      m_solver->shortest_path_locations(tv, std::back_inserter(locations));
+      m_solver->compute<CGAL::Sequential_tag>(no_map, np.targets(live));
+      Vertex_index best = live.front();
+      for(std::size_t k = 0; k < live.size(); ++k)
+        if(m_solver->target_distance(k) < distance)
+        {
+          distance = m_solver->target_distance(k);
+          best = live[k];
+        }
+      m_solver->shortest_path_points(best, std::back_inserter(points));
+      m_solver->shortest_path_locations(best, std::back_inserter(locations));
     }
     else
     {
@@ -137,7 +265,7 @@ py::tuple Core_solver::path(std::int64_t target_vertex, std::int64_t target_face
   for(std::size_t i = 0; i < locations.size(); ++i)
   {
     const Face_location& l = locations[locations.size() - 1 - i];
-    pf[i] = static_cast<std::int64_t>(static_cast<std::size_t>(l.first));
+    pf[i] = to_user_face(l.first);
     const std::array<double, 3> b = to_user_barycentric(l);
     for(int j = 0; j < 3; ++j)
       pb[3 * i + std::size_t(j)] = b[std::size_t(j)];
@@ -152,23 +280,43 @@ double Core_solver::distance(std::int64_t a_vertex, std::int64_t a_face, const D
                              const std::string& method_name, double lam)
 {
   const vtp_support::Method_info& method = method_named(method_name, lam);
-  Vertex_index av, bv;
+  std::vector<Vertex_index> av, bv;
   Face_location al, bl;
   if(a_vertex >= 0)
-    av = vertex_of(a_vertex, "a");
+    append_copies(vertex_of(a_vertex, "a"), av);
   else
     al = location_of(a_face, a_bary, "a");
   if(b_vertex >= 0)
-    bv = vertex_of(b_vertex, "b");
+    append_copies(vertex_of(b_vertex, "b"), bv);
   else
     bl = location_of(b_face, b_bary, "b");
   py::gil_scoped_release release;
   std::lock_guard<std::mutex> lock(m_mutex);
-  if(b_vertex >= 0 && m_mesh.is_isolated(bv))
-    return a_vertex == b_vertex ? 0. : infinity;
+  if(a_vertex >= 0 && a_vertex == b_vertex)
+    return 0.;
+  if(!m_repairs.empty() && m_through_pinches && b_vertex >= 0)
+  {
+    // the whole field, its copies joined (a target point: its distance is not joined)
+    std::vector<double> d(number_of_vertices());
+    std::vector<Face_location> points;
+    std::vector<std::size_t> sources;
+    if(a_vertex >= 0)
+      sources.push_back(static_cast<std::size_t>(a_vertex));
+    else
+      points.push_back(al);
+    field_on_caller(sources, points, std::vector<std::size_t>(), infinity, method, lam, 0, d.data(), nullptr);
+    return d[static_cast<std::size_t>(b_vertex)];
+  }
+  std::vector<Vertex_index> live;
+  for(Vertex_index c : bv)
+    if(!m_mesh.is_isolated(c))
+      live.push_back(c);
+  if((b_vertex >= 0 && live.empty()) || (a_vertex >= 0 && av.empty()))
+    return infinity;
   m_solver->clear_sources();
   if(a_vertex >= 0)
-    m_solver->add_source(av);
+    for(Vertex_index c : av)
+      m_solver->add_source(c);
   else
     m_solver->add_source(al);
   const CGAL::Constant_property_map<Vertex_index, double> no_map;
@@ -176,11 +324,14 @@ double Core_solver::distance(std::int64_t a_vertex, std::int64_t a_face, const D
     typedef decltype(tag) Tag;
     const auto np = method_np.stop_at_targets(true).statistics(m_statistics);
     if(b_vertex >= 0)
-      m_solver->template compute<Tag>(no_map, np.targets(bv));
+      m_solver->template compute<Tag>(no_map, np.targets(live));
     else
       m_solver->template compute<Tag>(no_map, np.targets(bl));
   });
-  return m_solver->target_distance(0);
+  double r = infinity;
+  for(std::size_t k = 0; k < m_solver->number_of_targets(); ++k)
+    r = (std::min)(r, m_solver->target_distance(k));
+  return r;
 }
 
 // Nearest points of the surface to the rows of P (k, 3): (faces (k,), barycentric (k, 3)).
@@ -210,7 +361,7 @@ py::tuple Core_solver::locate(const Double_array& P)
         break;
       }
       const std::array<double, 3> u = to_user_barycentric(l);
-      fo[i] = static_cast<std::int64_t>(static_cast<std::size_t>(l.first));
+      fo[i] = to_user_face(l.first);
       for(int j = 0; j < 3; ++j)
         bo[3 * i + std::size_t(j)] = u[std::size_t(j)];
     }

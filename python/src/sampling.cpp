@@ -27,10 +27,20 @@ py::tuple Core_solver::farthest_point_sampling(std::int64_t k, std::int64_t firs
     value_error("k must be >= 0, got " + std::to_string(k));
   if(!(radius >= 0.))
     value_error("radius must be >= 0, got " + std::to_string(radius));
+  if(m_through_pinches && !m_repairs.empty())
+    value_error("farthest-point sampling does not go through the vertices that the repair split (the solver was "
+                "made with through_pinches=True)");
   const bool has_first = first >= 0;
   Vertex_index first_vertex;
   if(has_first)
-    first_vertex = vertex_of(first, "first");
+  {
+    // a vertex of V: its first copy
+    std::vector<Vertex_index> copies;
+    append_copies(vertex_of(first, "first"), copies);
+    if(copies.empty())
+      value_error("first: vertex " + std::to_string(first) + " is in no face of the mesh (the repair removed it)");
+    first_vertex = copies.front();
+  }
   VTP::Farthest_point_samples<Vertex_index> r;
   VTP::Voronoi_cell_areas cells;
   {
@@ -52,16 +62,13 @@ py::tuple Core_solver::farthest_point_sampling(std::int64_t k, std::int64_t firs
     areas(static_cast<py::ssize_t>(s)), uncertainty(static_cast<py::ssize_t>(s));
   for(std::size_t i = 0; i < s; ++i)
   {
-    samples.mutable_data()[i] = static_cast<std::int64_t>(std::size_t(r.samples[i]));
+    samples.mutable_data()[i] = static_cast<std::int64_t>(caller_of(r.samples[i]));
     radii.mutable_data()[i] = r.radii[i];
     areas.mutable_data()[i] = cells.areas[i];
     uncertainty.mutable_data()[i] = cells.uncertainty[i];
   }
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    distances.mutable_data()[i] = r.distances[i];
-    labels.mutable_data()[i] = r.labels[i] == VTP::no_source ? -1 : static_cast<std::int64_t>(r.labels[i]);
-  }
+  // on the vertices of V (the least over the copies of a vertex, and that copy's label)
+  to_caller(r.distances, &r.labels, distances.mutable_data(), labels.mutable_data());
   return py::make_tuple(samples, radii, distances, labels, areas, uncertainty);
 }
 

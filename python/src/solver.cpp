@@ -45,7 +45,8 @@ void check_limit(double max_distance)
     value_error("max_distance must be >= 0 (inf for none), got " + std::to_string(max_distance));
 }
 
-Core_solver::Core_solver(const Double_array& V, const Index_array& F, int threads) : m_threads(threads)
+Core_solver::Core_solver(const Double_array& V, const Index_array& F, int threads, bool repair, bool through_pinches)
+  : m_through_pinches(through_pinches), m_threads(threads)
 {
   // V is (n, 3) and F is (m, 3) (checked in Python): their rows are read within their sizes
   const std::size_t n = static_cast<std::size_t>(V.size()) / 3, m = static_cast<std::size_t>(F.size()) / 3;
@@ -55,13 +56,18 @@ Core_solver::Core_solver(const Double_array& V, const Index_array& F, int thread
     value_error("the mesh has no faces");
   if(n >= (std::size_t(1) << 31) - 1 || m >= ((std::size_t(1) << 31) - 1) / 3)
     value_error("the mesh is too large (at most 2^31 - 2 vertices and (2^31 - 1) / 3 faces)");
+  m_n = n;
+  m_m = m;
   const double* v = V.data();
   const std::int64_t* f = F.data();
   std::string error;
   {
     py::gil_scoped_release release;
     const auto t0 = std::chrono::steady_clock::now();
-    error = build_mesh(v, n, f, m);
+    bool repairable = false;
+    error = build_mesh(v, n, f, m, repairable);
+    if(!error.empty() && repairable && repair)
+      error = repair_mesh(v, n, f, m);
     m_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if(error.empty())
     {
@@ -77,7 +83,7 @@ Core_solver::Core_solver(const Double_array& V, const Index_array& F, int thread
   }
   if(!error.empty())
     value_error(error);
-  for(std::size_t i = 0; i < n; ++i)
+  for(std::size_t i = 0; i < m_mesh.number_of_vertices(); ++i)
     if(m_solver->vertex_id(Vertex_index(static_cast<Mesh::size_type>(i))) != i)
       value_error("internal error: the solver numbers the vertices differently from V");
 }
@@ -101,9 +107,12 @@ py::dict Core_solver::statistics() const
   return d;
 }
 
-// Checks V and F and builds the mesh; returns the problem, or an empty string.
-std::string Core_solver::build_mesh(const double* v, std::size_t n, const std::int64_t* f, std::size_t m)
+// Checks V and F and builds the mesh; returns the problem, or an empty string (`repairable`: the problem is one
+// that the repair fixes).
+std::string Core_solver::build_mesh(const double* v, std::size_t n, const std::int64_t* f, std::size_t m,
+                                    bool& repairable)
 {
+  repairable = false;
   for(std::size_t i = 0; i < n; ++i)
     if(!(std::isfinite(v[3 * i]) && std::isfinite(v[3 * i + 1]) && std::isfinite(v[3 * i + 2])))
       return "vertex " + std::to_string(i) + " has a non-finite coordinate (NaN or infinity)";
@@ -131,16 +140,23 @@ std::string Core_solver::build_mesh(const double* v, std::size_t n, const std::i
     for(int k = 0; k < 3; ++k)
       triangles[j][std::size_t(k)] = static_cast<std::uint32_t>(f[3 * j + std::size_t(k)]);
     if(f[3 * j] == f[3 * j + 1] || f[3 * j + 1] == f[3 * j + 2] || f[3 * j + 2] == f[3 * j])
+    {
+      repairable = true;
       return "face " + std::to_string(j) + " has a repeated vertex (" + std::to_string(f[3 * j]) + ", "
-             + std::to_string(f[3 * j + 1]) + ", " + std::to_string(f[3 * j + 2]) + ")";
+             + std::to_string(f[3 * j + 1]) + ", " + std::to_string(f[3 * j + 2])
+             + ") (Solver(V, F, repair=True) removes such faces)";
+    }
   }
   m_mesh.reserve(static_cast<Mesh::size_type>(n), 0, 0);
   for(std::size_t i = 0; i < n; ++i)
     m_mesh.add_vertex(Point_3(v[3 * i], v[3 * i + 1], v[3 * i + 2]));
   std::string reason;
   if(!vtp_support::fast_off_detail::build_triangle_mesh(triangles, m_mesh, reason, m_threads))
+  {
+    repairable = true;
     return "the faces do not form a manifold, consistently oriented triangle mesh: " + reason
-           + " (read_mesh() repairs such files)";
+           + " (Solver(V, F, repair=True) repairs them as the tool does)";
+  }
   if(m_mesh.number_of_faces() != m)
     return "internal error: the mesh has " + std::to_string(m_mesh.number_of_faces()) + " faces, F has "
            + std::to_string(m);
@@ -180,9 +196,15 @@ void Core_solver::set_sources(const std::vector<Vertex_index>& vertices, const s
 
 void define_solver(py::class_<Core_solver>& c)
 {
-  c.def(py::init<const Double_array&, const Index_array&, int>(), py::arg("V"), py::arg("F"), py::arg("threads"))
+  c.def(py::init<const Double_array&, const Index_array&, int, bool, bool>(), py::arg("V"), py::arg("F"),
+         py::arg("threads"), py::arg("repair"), py::arg("through_pinches"))
     .def_property_readonly("number_of_vertices", &Core_solver::number_of_vertices)
     .def_property_readonly("number_of_faces", &Core_solver::number_of_faces)
+    .def_property_readonly("repairs", &Core_solver::repairs)
+    .def_property_readonly("mesh_vertices", &Core_solver::mesh_vertices)
+    .def_property_readonly("mesh_faces", &Core_solver::mesh_faces)
+    .def("vertex_copies", &Core_solver::vertex_copies)
+    .def_property_readonly("join_runs", &Core_solver::join_runs)
     .def_property_readonly("mean_edge_length", &Core_solver::mean_edge_length)
     .def_property_readonly("preprocessing_seconds", &Core_solver::preprocessing_seconds)
     .def("statistics", &Core_solver::statistics);

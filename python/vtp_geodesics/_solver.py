@@ -2,6 +2,8 @@
 queries by topic in ``_queries`` (distances, paths, one distance, locating points), ``_matrices`` (distance
 matrices) and ``_sampling`` (farthest-point sampling)."""
 
+import warnings as _warnings
+
 from . import _core
 from ._arguments import check_threads, mesh_arrays
 from ._matrices import Matrices
@@ -10,7 +12,7 @@ from ._sampling import Sampling
 
 
 class Solver(Queries, Matrices, Sampling):
-    """Geodesic distances on one triangle mesh: ``Solver(V, F, *, threads=0)``.
+    """Geodesic distances on one triangle mesh: ``Solver(V, F, *, threads=0, repair=True, through_pinches=False)``.
 
     The constructor checks the mesh and does the per-mesh preprocessing once; every query then runs
     from there, any number of times, with the GIL released (other Python threads keep running).
@@ -20,18 +22,48 @@ class Solver(Queries, Matrices, Sampling):
     V : array-like (n, 3) of numbers
         Vertex coordinates (any real dtype, any memory order; converted to float64).
     F : array-like (m, 3) of integers
-        Triangles as 0-based vertex indices (any integer dtype). Faces must form a manifold triangle mesh
-        with a consistent orientation (boundaries, several components and isolated vertices are fine).
+        Triangles as 0-based vertex indices (any integer dtype). Boundaries, several components and
+        vertices in no face are fine; faces that do not form a manifold, consistently oriented triangle
+        mesh are repaired (see ``repair``).
     threads : int, keyword only
         Threads of the preprocessing and the default of the parallel methods and of ``matrix()``; 0 (the
         default) means all cores (OpenMP's default).
+    repair : bool, keyword only, default True
+        If V and F do not form a valid mesh (a non-manifold vertex or edge, a face with a repeated vertex,
+        duplicate faces, coincident vertices, inconsistent orientation), repair them as the command-line
+        tool repairs a file, and say what was done in a ``UserWarning``: coincident vertices merged,
+        degenerate and duplicate faces removed, faces reoriented, the surface cut at non-manifold edges and
+        vertices (their vertices split into copies). **Every index stays the caller's**: results are given
+        on the rows of V and F, a split vertex gets the least distance of its copies (and that copy's
+        label), a vertex the repair dropped (in no face) gets ``inf`` (label -1) unless it is a source (0);
+        a split vertex given as a source or a target is all its copies; faces given or returned are rows
+        of F (a face removed as degenerate cannot be given). A valid mesh costs nothing more: the repair
+        runs only when the check fails. The default is True because the tool and ``read_mesh()`` repair by
+        default, and arrays from scanners and converters often need it; ``repair=False`` raises
+        ``ValueError`` naming the problem instead.
+    through_pinches : bool, keyword only, default False
+        What a vertex split by the repair (a pinch: a non-manifold vertex, or the end of a non-manifold
+        edge) means for distances. False (the default, as the tool and MMP/gdist): its copies are apart, no
+        geodesic passes through the pinch from one sheet to another. True (as CGAL's
+        Surface_mesh_shortest_path and the reference VTP on the same arrays): paths may pass through it;
+        the copies are joined by runs from the distances already known, one per split vertex that a
+        source reaches, each costing the region it lowers (a path crossing a non-manifold edge still
+        passes through its end points only). With True, ``distances()`` and ``distance()`` join;
+        ``path()``, ``matrix()`` and ``farthest_point_sampling()`` raise ``ValueError`` on a mesh with
+        split vertices; with a limit or targets, the whole field is computed, then limited.
 
     Raises
     ------
     ValueError
         Wrong shapes, no vertex or no face, a NaN or infinite coordinate, a vertex index out of range
-        (with a hint when the faces look 1-indexed), a face with a repeated vertex, a non-manifold vertex
-        or edge, inconsistent orientation; the message names the vertex or face.
+        (with a hint when the faces look 1-indexed), faces that the repair cannot make a mesh (no face
+        left); with ``repair=False``, a face with a repeated vertex, a non-manifold vertex or edge,
+        inconsistent orientation. The message names the vertex or face.
+
+    Warns
+    -----
+    UserWarning
+        When V and F were repaired, saying what was done (also in ``repairs``).
     TypeError
         Non-numeric arrays, or F not of an integer dtype.
 
@@ -52,12 +84,28 @@ class Solver(Queries, Matrices, Sampling):
         the library's statistics of the last computation, as a dict.
     """
 
-    def __init__(self, V, F, *, threads=0):
+    def __init__(self, V, F, *, threads=0, repair=True, through_pinches=False):
         V, F = mesh_arrays(V, F)
         self._threads = check_threads(threads)
-        self._core = _core.Solver(V, F, self._threads)
+        self._core = _core.Solver(V, F, self._threads, bool(repair), bool(through_pinches))
         self._n = V.shape[0]
         self._m = F.shape[0]
+        if self._core.repairs:
+            _warnings.warn("Solver(V, F): the faces do not form a valid triangle mesh and were repaired as the "
+                           "tool repairs a file: %s; the results are on the rows of V and F (a split vertex gets "
+                           "the least distance of its copies, a vertex in no face inf)" % self._core.repairs,
+                           UserWarning, stacklevel=2)
+
+    @property
+    def repairs(self):
+        """What the repair did to V and F (as in the warning), or "" if they form a valid mesh."""
+        return self._core.repairs
+
+    def vertex_copies(self):
+        """The mesh vertices of each vertex of V: ``(begin int64 (n + 1,), copies int64)``, the copies of vertex
+        i being ``copies[begin[i]:begin[i + 1]]`` (one each for a valid mesh; several for a vertex the repair
+        split, none for one it dropped). The mesh vertices are those of the repaired mesh (internal)."""
+        return self._core.vertex_copies()
 
     @property
     def number_of_vertices(self):

@@ -35,21 +35,34 @@ V0, F0 = plane_grid(6, 6)
 ])
 def test_bad_mesh(V, F, exc, match):
     with pytest.raises(exc, match=match):
-        vtp_geodesics.Solver(V, F)
+        vtp_geodesics.Solver(V, F, repair=False)
+    if match == "repeated vertex":                               # repaired by default (test_repair.py)
+        with pytest.warns(UserWarning, match="removed 1 degenerate"):
+            vtp_geodesics.Solver(V, F)
+    else:
+        with pytest.raises(exc, match=match):
+            vtp_geodesics.Solver(V, F)
 
 
 def test_non_manifold():
+    # the error with repair=False; by default, the repair and its warning (test_repair.py checks the results)
     V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1]], dtype=float)
     fin = np.array([[0, 1, 2], [1, 0, 3], [0, 1, 4]])         # three faces on edge 0-1
     with pytest.raises(ValueError, match="manifold|oriented"):
+        vtp_geodesics.Solver(V, fin, repair=False)
+    with pytest.warns(UserWarning, match="non-manifold edge"):
         vtp_geodesics.Solver(V, fin)
     Vb = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [-1, 0, 0], [-1, -1, 0]], dtype=float)
     bowtie = np.array([[0, 1, 2], [0, 3, 4]])                 # two fans at vertex 0
-    with pytest.raises(ValueError, match="not manifold"):
+    with pytest.raises(ValueError, match="not manifold.*repair=True"):
+        vtp_geodesics.Solver(Vb, bowtie, repair=False)
+    with pytest.warns(UserWarning, match="non-manifold vertex"):
         vtp_geodesics.Solver(Vb, bowtie)
     flipped = np.array(F0)
     flipped[0] = flipped[0, ::-1]                              # inconsistent orientation
     with pytest.raises(ValueError, match="manifold|oriented"):
+        vtp_geodesics.Solver(V0, flipped, repair=False)
+    with pytest.warns(UserWarning, match="reoriented"):
         vtp_geodesics.Solver(V0, flipped)
 
 
