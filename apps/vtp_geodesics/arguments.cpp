@@ -195,6 +195,13 @@ const vtp_support::Option_table<Arguments>& option_table()
       "--max-distance, its distances beyond the limit count as inf; with\n"
       "--target, only the vertices whose distance is final are compared)",
       [](Arguments& a, const std::string&, const std::string&) { a.check_cgal = true; } },
+    { "--through-pinches", nullptr,
+      "let shortest paths pass through the vertices that the repair of\n"
+      "the input split (non-manifold vertices, ends of non-manifold\n"
+      "edges): the copies of each are joined (default: they are apart);\n"
+      "one more run per such vertex reached. Not with --path-to,\n"
+      "--path-to-point, --target-point nor --farthest-points",
+      [](Arguments& a, const std::string&, const std::string&) { a.through_pinches = true; } },
     { "--method", "M", nullptr, // help made from the table of methods in print_usage()
       [](Arguments& a, const std::string&, const std::string& v) { a.method = v; } },
     { "--threads", "T",
@@ -260,6 +267,8 @@ void check_arguments(const Arguments& a)
     throw Tool_error("--target-output needs --target or --target-point");
   if(!a.path_output.empty() && !a.has_paths())
     throw Tool_error("--path-output needs --path-to or --path-to-point");
+  if(a.through_pinches && (a.has_paths() || !a.target_points.empty() || a.farthest_points > 0))
+    throw Tool_error("--through-pinches takes no --path-to, --path-to-point, --target-point nor --farthest-points");
   if(a.has_picture_colour && a.picture.empty())
     throw Tool_error("--picture-colour needs --picture");
   if(a.has_paths() && a.path_output.empty() && a.picture.empty())
@@ -323,7 +332,8 @@ void print_usage(std::ostream& os, const std::string& default_mesh)
         "    coincident points are merged, degenerate and duplicate faces removed, and the surface\n"
         "    is cut at non-manifold vertices and edges, which duplicates their vertices.\n"
         "The distances are then computed on the repaired surface (a shortest path does not go from\n"
-        "one side of a cut to the other) and mapped back to the vertices of the file: a duplicated\n"
+        "one side of a cut to the other; with --through-pinches, it may pass through the vertices\n"
+        "the cut split) and mapped back to the vertices of the file: a duplicated\n"
         "vertex gets the smallest distance over its copies (and the nearest source of that copy;\n"
         "as a source or a target, all its copies are; a path starts from its nearest copy), merged\n"
         "points share their distance, and a vertex left in no face is unreachable (\"inf\", label\n"

@@ -53,6 +53,7 @@ struct Arguments
   bool has_view = false;
   std::array<double, 3> view = { { 0., 0., -1. } };
   bool check_cgal = false;
+  bool through_pinches = false;           // --through-pinches
   std::string method = "vtp";
   int threads = 0;
   bool has_threads = false;

@@ -126,6 +126,20 @@ Request make_request(const Arguments& args, const vtp_support::Method_info& meth
   run.stop_at_targets = args.has_targets();
   add_paths(args, input, path_points, r);
   run.check_cgal = args.check_cgal;
+  if(args.through_pinches && !input.direct)
+  {
+    // the copies of each split vertex, once (coincident vertices of the file that the repair merged share them)
+    std::vector<unsigned char> seen(input.mesh.number_of_vertices(), 0);
+    for(std::size_t i = 0; i < input.file_vertices; ++i)
+    {
+      const std::vector<vtp_support::Vertex_index> copies = input.mesh_vertices_of(i);
+      if(copies.size() > 1 && !seen[std::size_t(copies.front())])
+      {
+        seen[std::size_t(copies.front())] = 1;
+        run.joined_copies.push_back(copies);
+      }
+    }
+  }
   if(args.farthest_points > 0)
   {
     run.farthest_points = args.farthest_points;

@@ -21,6 +21,7 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <vtp_support/join_copies.h>
 #include <vtp_support/shortest_path_reference.h>
 
 #ifdef _OPENMP
@@ -165,10 +166,11 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
       typedef decltype(tag) Tag;
       // the distances stay in the solver (read with distances()): nothing to write through a map
       const CGAL::Constant_property_map<vtp_support::Vertex_index, double> no_map;
+      const bool join = !request.joined_copies.empty();
       const auto np = method_np.lambda_g(request.lambda_g)
-                        .maximum_distance(request.max_distance)
+                        .maximum_distance(join ? infinity : request.max_distance)
                         .targets(targets)
-                        .stop_at_targets(request.stop_at_targets)
+                        .stop_at_targets(request.stop_at_targets && !join)
                         .record_paths(!request.paths.empty());
       if(request.want_labels)
         solver.compute<Tag>(no_map, np.nearest_source_map(boost::make_iterator_property_map(
@@ -185,6 +187,29 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
       r.labels.resize(r.mesh_vertices);
       for(std::size_t i = 0; i < r.mesh_vertices; ++i)
         r.labels[i] = labels[i] == VTP::no_source ? -1 : static_cast<int>(label_of_source[labels[i]]);
+    }
+    if(!request.joined_copies.empty())
+    {
+      // through the split vertices: runs from the known distances, then the limit
+      r.join_runs = vtp_support::join_copies(
+        request.joined_copies, r.distances, request.want_labels ? &r.labels : nullptr,
+        [&](const std::vector<vtp_support::Vertex_index>& copies, std::vector<double>& field) {
+          solver.clear_sources();
+          for(vtp_support::Vertex_index c : copies)
+            solver.add_source(c);
+          vtp_support::with_method(method, lambda, request.threads, [&](auto tag, const auto& method_np) {
+            typedef decltype(tag) Tag;
+            const auto fm = boost::make_iterator_property_map(field.begin(), get(boost::vertex_index, mesh));
+            solver.compute<Tag>(fm, method_np.lambda_g(request.lambda_g).initial_distances(fm));
+          });
+        });
+      for(std::size_t i = 0; i < r.distances.size(); ++i)
+        if(r.distances[i] > request.max_distance)
+        {
+          r.distances[i] = infinity;
+          if(request.want_labels)
+            r.labels[i] = -1;
+        }
     }
   }
 

@@ -59,6 +59,9 @@ struct Run_request
   };
   std::vector<Path> paths;
   bool check_cgal = false;                // also run CGAL::Surface_mesh_shortest_path
+  // --through-pinches: the copies of each vertex that the repair split, joined after the run (which then goes
+  // to the end: max_distance and the targets bound the result, not the work)
+  std::vector<std::vector<vtp_support::Vertex_index> > joined_copies;
   // Farthest-point sampling (instead of the sources above): up to farthest_points samples, from `first` (or
   // the vertex farthest from vertex 0), until the covering radius is <= radius.
   std::size_t farthest_points = 0;
@@ -75,6 +78,7 @@ struct Run_result
   std::vector<std::vector<std::array<double, 3> > > paths; // per path: its points, target first, source last
   std::vector<double> reference;          // CGAL::Surface_mesh_shortest_path's, if check_cgal
   double cgal_seconds = 0.;
+  std::size_t join_runs = 0;              // --through-pinches: the runs that joined the copies
   // The library's statistics of the propagation (with farthest-point sampling, those it gives for the whole
   // sampling); default values when nothing ran (no source).
   CGAL::VTP_geodesics::Propagation_statistics statistics;

@@ -63,7 +63,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -155,12 +154,6 @@ private:
   // over the copies (its copy's label), +inf (-1) without copy.
   void to_caller(const std::vector<double>& mesh_d, const std::vector<std::size_t>* mesh_labels, double* d,
                  std::int64_t* lab) const;
-  // Joins the copies of the split vertices (through_pinches): the field `d` (per mesh vertex, with its labels
-  // if not null) is lowered until no copy of a vertex is above another, by runs from known distances:
-  // `run_from(copies, field)` computes, from the sources `copies` and the known distances `field` (>= 0), the
-  // least of both into `field`. Returns the number of runs.
-  std::size_t join_copies(std::vector<double>& d, std::vector<std::size_t>* labels,
-                          const std::function<void(const std::vector<Vertex_index>&, std::vector<double>&)>& run_from);
   // The field of sources on the vertices of V (repaired mesh; queries.cpp).
   void field_on_caller(const std::vector<std::size_t>& source_vertices, const std::vector<Face_location>& source_points,
                        const std::vector<std::size_t>& target_vertices, double max_distance,
@@ -213,6 +206,7 @@ private:
   std::vector<vtp_support::fast_off_detail::Triangle> m_caller_faces;
   std::vector<std::int64_t> m_mesh_face_of;
   std::vector<std::size_t> m_caller_face_of;
+  std::vector<std::vector<Vertex_index> > m_split;                // the copies of each split vertex of V
   std::unique_ptr<Solver> m_solver;
   std::unique_ptr<vtp_support::Surface_locator> m_locator;        // of locate(), built on first use
   VTP::Propagation_statistics m_statistics;                       // of the last computation

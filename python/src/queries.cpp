@@ -12,6 +12,8 @@
 
 #include "core_solver.h"
 
+#include <vtp_support/join_copies.h>
+
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 
@@ -159,7 +161,7 @@ void Core_solver::field_on_caller(const std::vector<std::size_t>& source_vertice
           l = label_of_source[l];
     if(join)
     {
-      m_join_runs = join_copies(mesh_d, lab != nullptr ? &labels : nullptr,
+      m_join_runs = vtp_support::join_copies(m_split, mesh_d, lab != nullptr ? &labels : nullptr,
                                 [&](const std::vector<Vertex_index>& copies, std::vector<double>& field) {
                                   set_sources(copies, std::vector<Face_location>());
                                   vtp_support::with_method(method, lam, t, [&](auto tag, const auto& method_np) {

@@ -53,6 +53,10 @@ std::string Core_solver::repair_mesh(const double* v, std::size_t n, const std::
     for(std::size_t k = m_copy_begin[i]; k < m_copy_begin[i + 1]; ++k)
       m_caller_of[std::size_t(m_copies[k])] = i;
   map_faces(f, m);
+  for(std::size_t i = 0; i < n; ++i)
+    if(m_copy_begin[i + 1] - m_copy_begin[i] > 1 && canonical_of(i) == i)
+      m_split.emplace_back(m_copies.begin() + std::ptrdiff_t(m_copy_begin[i]),
+                           m_copies.begin() + std::ptrdiff_t(m_copy_begin[i + 1]));
   return std::string();
 }
 
@@ -147,80 +151,6 @@ void Core_solver::to_caller(const std::vector<double>& mesh_d, const std::vector
     d[i] = best;
     if(lab != nullptr)
       lab[i] = best_label;
-  }
-}
-
-std::size_t Core_solver::join_copies(
-  std::vector<double>& d, std::vector<std::size_t>* labels,
-  const std::function<void(const std::vector<Vertex_index>&, std::vector<double>&)>& run_from)
-{
-  if(m_repairs.empty())
-    return 0;
-  // The split vertices of V, each taken once, nearest first (Dijkstra over them): when taken, its least copy is
-  // final (a path through a vertex not yet taken is at least as long), its other copies become sources at that
-  // distance, and the field is lowered by a run from the known distances, shifted by it.
-  std::vector<std::size_t> split;
-  for(std::size_t i = 0; i < m_n; ++i)
-    if(m_copy_begin[i + 1] - m_copy_begin[i] > 1 && canonical_of(i) == i)
-      split.push_back(i);
-  std::vector<unsigned char> taken(split.size(), 0);
-  std::size_t runs = 0;
-  std::vector<double> field(d.size()), before;
-  for(;;)
-  {
-    std::size_t best = split.size();
-    double best_d = infinity;
-    for(std::size_t s = 0; s < split.size(); ++s)
-      if(!taken[s])
-      {
-        double lo = infinity, hi = 0.;
-        for(std::size_t k = m_copy_begin[split[s]]; k < m_copy_begin[split[s] + 1]; ++k)
-        {
-          lo = (std::min)(lo, d[std::size_t(m_copies[k])]);
-          hi = (std::max)(hi, d[std::size_t(m_copies[k])]);
-        }
-        if(!(lo < infinity))
-          continue;
-        if(!(hi > lo)) // its copies are already joined; no later run lowers them
-        {
-          taken[s] = 1;
-          continue;
-        }
-        if(lo < best_d)
-        {
-          best_d = lo;
-          best = s;
-        }
-      }
-    if(best == split.size())
-      return runs;
-    taken[best] = 1;
-    const std::size_t i = split[best];
-    std::vector<Vertex_index> sources;
-    std::size_t from = std::size_t(m_copies[m_copy_begin[i]]);
-    for(std::size_t k = m_copy_begin[i]; k < m_copy_begin[i + 1]; ++k)
-    {
-      const std::size_t c = std::size_t(m_copies[k]);
-      if(d[c] > best_d)
-        sources.push_back(m_copies[k]);
-      else
-        from = c;
-    }
-    for(std::size_t v = 0; v < d.size(); ++v)
-      field[v] = d[v] > best_d ? d[v] - best_d : 0.;
-    before = field;
-    run_from(sources, field);
-    ++runs;
-    for(std::size_t v = 0; v < d.size(); ++v)
-    {
-      const double through = field[v] + best_d;
-      if(field[v] < before[v] && through < d[v])
-      {
-        d[v] = through;
-        if(labels != nullptr)
-          (*labels)[v] = (*labels)[from];
-      }
-    }
   }
 }
 

@@ -12,9 +12,13 @@ dtypes, lists, non-contiguous views).
 
 Where this module deliberately differs from gdist:
 
+- a mesh that is not a valid manifold mesh (non-manifold vertices or edges, duplicate, degenerate or flipped
+  triangles) is repaired as ``vtp_geodesics.Solver`` repairs it, with a ``UserWarning`` saying what was done,
+  and every index stays the caller's (a vertex the repair split gets the least distance of its copies, a
+  vertex in no face ``inf``), where gdist crashes or gives wrong numbers;
 - bad input raises ``ValueError`` or ``TypeError`` naming the problem (a triangle index out of range, a
-  negative index, a NaN coordinate, a non-manifold mesh, wrong shapes), where gdist crashes the interpreter
-  or returns wrong numbers silently;
+  negative index, a NaN coordinate, wrong shapes), where gdist crashes the interpreter or returns wrong
+  numbers silently;
 - the distances are exact (VTP) where gdist's MMP code fails on some real meshes;
 - ``local_gdist_matrix`` is symmetric (each pair holds the smaller of its two computed distances, which
   differ by rounding only) and every stored entry is ``<= max_distance``; the rows are computed on all

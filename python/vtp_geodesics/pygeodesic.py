@@ -11,8 +11,10 @@ Change one line::
 
 Where this module deliberately differs from pygeodesic:
 
-- bad input (indices out of range, wrong shapes, NaN coordinates, a non-manifold mesh) raises ``ValueError``
-  or ``TypeError``; pygeodesic prints an error and returns ``(None, None)``, or clamps indices into range;
+- a mesh that is not a valid manifold mesh (non-manifold vertices or edges, duplicate, degenerate or flipped
+  faces) is repaired as ``vtp_geodesics.Solver`` repairs it, with a ``UserWarning``, on the caller's indices;
+- bad input (indices out of range, wrong shapes, NaN coordinates) raises ``ValueError`` or ``TypeError``;
+  pygeodesic prints an error and returns ``(None, None)``, or clamps indices into range;
 - the distances are exact (VTP) on meshes where pygeodesic's MMP code crashes;
 - ``geodesicDistance`` returns ``(inf, empty (0, 3) array)`` when the target is not reachable.
 """
@@ -43,7 +45,8 @@ class PyGeodesicAlgorithmExact:
         points: (N, 3) vertex coordinates (any real dtype).
         faces: (M, 3) vertex indices of the triangles, 0-based (any integer dtype).
 
-    Raises ValueError / TypeError if the mesh cannot be used (pygeodesic prints an error instead).
+    A mesh that is not a valid manifold mesh is repaired (``UserWarning``; indices stay the caller's). Raises
+    ValueError / TypeError if the mesh cannot be used (pygeodesic prints an error instead).
     """
 
     def __init__(self, points, faces):

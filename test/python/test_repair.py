@@ -310,3 +310,24 @@ def test_through_pinches_joins_the_sheets():
     Vg, Fg = plane_grid(6, 6)
     assert np.array_equal(vtp_geodesics.Solver(Vg, Fg, through_pinches=True).distances(3),
                           vtp_geodesics.Solver(Vg, Fg).distances(3))
+
+
+@pytest.mark.parametrize("name", sorted(MESHES))
+def test_through_pinches_equals_the_tool(tool, tmp_path, name):
+    V, F = MESHES[name]()
+    sources = SOURCES[name][2]
+    off, out, labels = tmp_path / "m.off", tmp_path / "d.txt", tmp_path / "l.txt"
+    write_off(off, V, F)
+    subprocess.run([tool, str(off), "--through-pinches", "--source", ",".join(map(str, sources)), "--output", str(out),
+                    "--labels", str(labels)], check=True, capture_output=True)
+    d, lab = solver_of(V, F, through_pinches=True).distances(sources, return_labels=True)
+    assert np.array_equal(d, read_tool_text(out)) and np.array_equal(lab, read_tool_labels(labels))
+    assert np.all(d <= solver_of(V, F).distances(sources))
+    # with a limit: the joined field, limited
+    limit = np.max(d[np.isfinite(d)]) / 2
+    subprocess.run([tool, str(off), "--through-pinches", "--source", ",".join(map(str, sources)), "--max-distance",
+                    repr(limit), "--output", str(out)], check=True, capture_output=True)
+    assert np.array_equal(read_tool_text(out), np.where(d <= limit, d, math.inf))
+    r = subprocess.run([tool, str(off), "--through-pinches", "--path-to", "5", "--path-output", str(out)],
+                       capture_output=True, text=True)
+    assert r.returncode == 2 and "--through-pinches takes no --path-to" in r.stderr
