@@ -296,9 +296,12 @@ double Core_solver::distance(std::int64_t a_vertex, std::int64_t a_face, const D
   std::lock_guard<std::mutex> lock(m_mutex);
   if(a_vertex >= 0 && a_vertex == b_vertex)
     return 0.;
-  if(!m_repairs.empty() && m_through_pinches && b_vertex >= 0)
+  if(!m_repairs.empty() && m_through_pinches && b_vertex < 0)
+    throw VTP::Invalid_input_error("the distance to a point of a face is not joined through the vertices that the "
+                                   "repair split (the solver was made with through_pinches=True): give a vertex");
+  if(!m_repairs.empty() && m_through_pinches)
   {
-    // the whole field, its copies joined (a target point: its distance is not joined)
+    // the whole field, its copies joined
     std::vector<double> d(number_of_vertices());
     std::vector<Face_location> points;
     std::vector<std::size_t> sources;
