@@ -134,6 +134,13 @@ vtp_cli_test(nonmanifold_vertex 0 "${cli_dir}/nmv.txt" ""
 vtp_cli_test(nonmanifold_vertex_cut 0 "${cli_dir}/nmv1.txt" ""
              LINES 8 VALUES "0=1|1=0|4=inf|5=inf|6=inf|7=inf" NOTE "duplicated 1 non-manifold vertex"
              "${cli_data}/nonmanifold_vertex.off" --source 1 --output "${cli_dir}/nmv1.txt")
+#   --through-pinches: the copies of vertex 0 are one point; from vertex 1, the other tetrahedron is reached
+#   through it (vertex 0 at 1, its neighbours 4, 5, 6 at 2); refused with paths
+vtp_cli_test(nonmanifold_vertex_through 0 "${cli_dir}/nmv2.txt" ""
+             LINES 8 VALUES "0=1|1=0|4=2|5=2|6=2|7=inf" NOTE "duplicated 1 non-manifold vertex"
+             "${cli_data}/nonmanifold_vertex.off" --through-pinches --source 1 --output "${cli_dir}/nmv2.txt")
+vtp_cli_test(through_pinches_no_paths 2 "${bad_output}.40" "" ERROR "--through-pinches takes no --path-to"
+             "${cli_data}/nonmanifold_vertex.off" --through-pinches --path-to 5 --path-output "${bad_output}.40")
 #   nonmanifold_edge.off: three triangles sharing the edge (0,1) of length 1; every other vertex is at
 #   distance 1 from vertex 0
 vtp_cli_test(nonmanifold_edge 0 "${cli_dir}/nme.txt" "" LINES 5 VALUES "0=0|1=1|2=1|3=1|4=1"
