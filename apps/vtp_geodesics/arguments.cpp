@@ -200,7 +200,8 @@ const vtp_support::Option_table<Arguments>& option_table()
       "the input split (non-manifold vertices, ends of non-manifold\n"
       "edges): the copies of each are joined (default: they are apart);\n"
       "one more run per such vertex reached. Not with --path-to,\n"
-      "--path-to-point, --target-point nor --farthest-points",
+      "--path-to-point, --target-point, --farthest-points nor\n"
+      "--check-cgal",
       [](Arguments& a, const std::string&, const std::string&) { a.through_pinches = true; } },
     { "--method", "M", nullptr, // help made from the table of methods in print_usage()
       [](Arguments& a, const std::string&, const std::string& v) { a.method = v; } },
@@ -267,8 +268,9 @@ void check_arguments(const Arguments& a)
     throw Tool_error("--target-output needs --target or --target-point");
   if(!a.path_output.empty() && !a.has_paths())
     throw Tool_error("--path-output needs --path-to or --path-to-point");
-  if(a.through_pinches && (a.has_paths() || !a.target_points.empty() || a.farthest_points > 0))
-    throw Tool_error("--through-pinches takes no --path-to, --path-to-point, --target-point nor --farthest-points");
+  if(a.through_pinches && (a.has_paths() || !a.target_points.empty() || a.farthest_points > 0 || a.check_cgal))
+    throw Tool_error("--through-pinches takes no --path-to, --path-to-point, --target-point, --farthest-points nor "
+                     "--check-cgal (whose reference runs on the cut surface)");
   if(a.has_picture_colour && a.picture.empty())
     throw Tool_error("--picture-colour needs --picture");
   if(a.has_paths() && a.path_output.empty() && a.picture.empty())

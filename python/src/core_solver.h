@@ -14,7 +14,8 @@
 // The declarations its files share; each file defines one topic, and the Python names of that topic:
 //
 //   module.cpp     PYBIND11_MODULE: the module's attributes, the method table, the topics below registered
-//   solver.cpp     Core_solver(V, F, threads, repair): the Surface_mesh and the per-mesh preprocessing; statistics()
+//   solver.cpp     Core_solver(V, F, threads, repair, through_pinches): the Surface_mesh and the per-mesh
+//                  preprocessing; statistics()
 //   repair.cpp     the repair of V and F that are not a valid mesh (the tools' repair), and the caller's indices:
 //                  sources, targets and results mapped between the vertices and faces of V and F and the mesh's
 //   queries.cpp    distances(), path(), distance(), locate()
@@ -104,7 +105,8 @@ public:
   // of V and F (the caller's)
   std::size_t number_of_vertices() const { return m_n; }
   std::size_t number_of_faces() const { return m_m; }
-  // what the repair did ("" if V and F form a valid mesh); the mesh's counts; the vertices of V split
+  // what the repair did ("" if V and F form a valid mesh); the mesh's counts; the copies of the vertices of V
+  // (repair.cpp); the joining runs of the last computation (through_pinches)
   std::string repairs() const { return m_repairs; }
   std::size_t mesh_vertices() const { return m_mesh.number_of_vertices(); }
   std::size_t mesh_faces() const { return m_mesh.number_of_faces(); }
@@ -148,7 +150,7 @@ private:
   std::string repair_mesh(const double* v, std::size_t n, const std::int64_t* f, std::size_t m);
   void map_faces(const std::int64_t* f, std::size_t m);
   std::size_t canonical_of(std::size_t caller_vertex) const;
-  // The mesh vertices standing for vertex i of V (i checked), appended to `out`, with `label` to `labels`.
+  // The mesh vertices standing for vertex i of V (i checked), appended to `out`.
   void append_copies(std::size_t i, std::vector<Vertex_index>& out) const;
   // Distances (and labels) of the mesh vertices on the vertices of V, into d (and lab, if not null): the least
   // over the copies (its copy's label), +inf (-1) without copy.
