@@ -338,3 +338,52 @@ def test_through_pinches_equals_the_tool(tool, tmp_path, name):
     r = subprocess.run([tool, str(off), "--through-pinches", "--path-to", "5", "--path-output", str(out)],
                        capture_output=True, text=True)
     assert r.returncode == 2 and "--through-pinches takes no --path-to" in r.stderr
+
+
+def test_through_pinches_against_a_dijkstra_over_the_pinches():
+    """Three grids: A and B touch at two vertices, B and C at one. The joined distance of a vertex is the least,
+    over the pinches, of the distance of the pinch plus the distance on the sheet, where the distances of the
+    pinches come from Dijkstra's algorithm on the graph of pinches and the distances within each sheet."""
+    grids = [plane_grid(6, 6, jitter=0.25, seed=s) for s in (4, 5, 6)]
+    frames = [rotation([0, 0, 1], 0.0), rotation([1, 2, 3], 1.3), rotation([3, -1, 2], 2.1)]
+    # pinches: (sheet, vertex of its grid) glued together: the second sheet's faces use the first's vertex (the
+    # second's own is then in no face)
+    glue = [((0, 14), (1, 7)), ((0, 21), (1, 28)), ((1, 22), (2, 15))]
+    offsets = [0, 36, 72]
+    V = np.vstack([g[0] @ R.T + 10 * k for k, (g, R) in enumerate(zip(grids, frames))])
+    index = np.arange(108)
+    for (a, va), (b, vb) in glue:
+        index[offsets[b] + vb] = offsets[a] + va
+    F = np.vstack([index[g[1] + o] for g, o in zip(grids, offsets)])
+    joined = solver_of(V, F, through_pinches=True)
+    s = 3                                                    # in sheet A
+    d = joined.distances(s)
+    # the oracle: per sheet, distances from the source and from each pinch of the sheet
+    sheets = [np.unique(index[np.arange(36) + o]) for o in offsets]
+    pinches = sorted(set(int(index[offsets[a] + va]) for (a, va), _ in glue))
+    def on_sheet(k, src):
+        return sheet_distances(V, F, sheets[k], src)
+    best = {p: math.inf for p in pinches}
+    for p in pinches:
+        if p in sheets[0]:
+            best[p] = on_sheet(0, s)[p]
+    done = set()
+    while len(done) < len(pinches):                          # Dijkstra over the pinches
+        p = min((q for q in pinches if q not in done), key=lambda q: best[q])
+        done.add(p)
+        for k in range(3):
+            if p in sheets[k]:
+                dk = on_sheet(k, p)
+                for q in pinches:
+                    if q in sheets[k]:
+                        best[q] = min(best[q], best[p] + dk[q])
+    expected = np.full(len(V), math.inf)
+    expected[sheets[0]] = on_sheet(0, s)[sheets[0]]
+    for p in pinches:
+        for k in range(3):
+            if p in sheets[k]:
+                expected[sheets[k]] = np.minimum(expected[sheets[k]], best[p] + on_sheet(k, p)[sheets[k]])
+    reached = np.isfinite(expected)
+    assert np.array_equal(reached, np.isfinite(d)) and reached[sheets[2]].all()
+    assert np.allclose(d[reached], expected[reached], rtol=1e-12, atol=1e-12)
+    assert 2 <= joined._core.join_runs <= 3                  # one run per pinch reached whose copies differ
