@@ -53,7 +53,8 @@ struct Corner_tables
 // The outgoing corners of each vertex are sorted by target (as 64-bit keys target << 32 | corner, so that the
 // sort and the searches read contiguous memory); the opposite of every corner is found once, and the fans follow
 // from the array of opposites. The loops over vertices that write only their own entries run on `threads`
-// OpenMP threads (0: OpenMP's default); the result does not depend on their number.
+// OpenMP threads (0: OpenMP's default), in chunks taken as they come (a thread that the system has descheduled holds
+// back only its chunk); the result does not depend on their number.
 inline bool check_triangle_mesh(const std::vector<Triangle>& triangles, std::size_t n, std::string& reason,
                                 int threads = 1, Corner_tables* tables = nullptr)
 {
@@ -93,7 +94,7 @@ inline bool check_triangle_mesh(const std::vector<Triangle>& triangles, std::siz
   }
   bool repeated_edge = false;
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1) reduction(|| : repeated_edge)
+#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) if(threads > 1) reduction(|| : repeated_edge)
 #endif
   for(long long vl = 0; vl < nl; ++vl)
   {
@@ -114,7 +115,7 @@ inline bool check_triangle_mesh(const std::vector<Triangle>& triangles, std::siz
   // of a -> b and b -> a is found from the smaller vertex a, which writes both entries: no entry is written twice.
   std::vector<std::uint32_t> opposite(nc, none);
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1)
+#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) if(threads > 1)
 #endif
   for(long long al = 0; al < nl; ++al)
   {
@@ -143,7 +144,7 @@ inline bool check_triangle_mesh(const std::vector<Triangle>& triangles, std::siz
   std::vector<std::uint32_t> last_in(n, none);
   bool manifold = true;
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1) reduction(&& : manifold)
+#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) if(threads > 1) reduction(&& : manifold)
 #endif
   for(long long vl = 0; vl < nl; ++vl)
   {
@@ -227,7 +228,7 @@ bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_m
       halfedge_of[c] = 2 * ne++;
   mesh.resize(static_cast<size_type>(n), static_cast<size_type>(ne), static_cast<size_type>(triangles.size()));
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1)
+#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) if(threads > 1)
 #endif
   for(long long cl = 0; cl < ncl; ++cl)
   {
@@ -240,7 +241,7 @@ bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_m
     }
   }
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1)
+#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) if(threads > 1)
 #endif
   for(long long cl = 0; cl < ncl; ++cl)
   {
@@ -261,7 +262,7 @@ bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_m
 
   // Faces: each writes its own three halfedges.
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1)
+#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) if(threads > 1)
 #endif
   for(long long fl = 0; fl < nfl; ++fl)
   {
@@ -279,7 +280,7 @@ bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_m
   // Vertices: a border vertex's halfedge is its incoming border halfedge, followed by the outgoing one; an
   // interior vertex's is its halfedge in its last face.
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1)
+#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) if(threads > 1)
 #endif
   for(long long vl = 0; vl < nl; ++vl)
   {
