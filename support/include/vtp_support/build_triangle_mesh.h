@@ -50,8 +50,8 @@ struct Corner_tables
 // CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh()). Returns false, with the reason, if not;
 // fills `tables` (if given) if so.
 //
-// The outgoing corners of each vertex are sorted by target (as 64-bit keys target << 32 | corner, so that the
-// sort and the searches read contiguous memory); the opposite of every corner is found once, and the fans follow
+// The outgoing corners of each vertex are listed (as 64-bit keys target << 32 | corner, so that the searches read
+// contiguous memory; long lists sorted by target); the opposite of every corner is found once, and the fans follow
 // from the array of opposites. The loops over vertices that write only their own entries run on `threads`
 // OpenMP threads (0: OpenMP's default), in chunks taken as they come (a thread that the system has descheduled holds
 // back only its chunk); the result does not depend on their number.
@@ -92,6 +92,9 @@ inline bool check_triangle_mesh(const std::vector<Triangle>& triangles, std::siz
     for(std::uint32_t c = 0; c < nc; ++c)
       out[fill[source_of(c)]++] = (std::uint64_t(target_of(c)) << 32) | c;
   }
+  // The lists of most vertices are short (6 corners on average): they are searched as they are, in the order of
+  // their corners; only those longer than `short_list` are sorted by target (then searched by bisection).
+  const std::uint32_t short_list = 16;
   bool repeated_edge = false;
 #ifdef _OPENMP
 #pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) if(threads > 1) reduction(|| : repeated_edge)
@@ -101,9 +104,16 @@ inline bool check_triangle_mesh(const std::vector<Triangle>& triangles, std::siz
     const std::size_t v = static_cast<std::size_t>(vl);
     std::uint64_t* first = out.data() + begin[v];
     std::uint64_t* last = out.data() + begin[v + 1];
-    std::sort(first, last);
-    for(std::uint64_t* k = first; k + 1 < last; ++k)
-      repeated_edge = repeated_edge || (k[0] >> 32) == (k[1] >> 32);
+    if(last - first > std::ptrdiff_t(short_list))
+    {
+      std::sort(first, last);
+      for(std::uint64_t* k = first; k + 1 < last; ++k)
+        repeated_edge = repeated_edge || (k[0] >> 32) == (k[1] >> 32);
+    }
+    else
+      for(std::uint64_t* k = first; k < last; ++k)
+        for(std::uint64_t* j = first; j < k; ++j)
+          repeated_edge = repeated_edge || (k[0] >> 32) == (j[0] >> 32);
   }
   if(repeated_edge)
   {
@@ -126,10 +136,14 @@ inline bool check_triangle_mesh(const std::vector<Triangle>& triangles, std::siz
       const std::uint32_t b = static_cast<std::uint32_t>(out[k] >> 32);
       if(b < a)
         continue;
-      const std::uint64_t key = std::uint64_t(a) << 32;
       const std::uint64_t* first = out.data() + begin[b];
       const std::uint64_t* last = out.data() + begin[b + 1];
-      const std::uint64_t* it = std::lower_bound(first, last, key);
+      const std::uint64_t* it = first;
+      if(last - first > std::ptrdiff_t(short_list))
+        it = std::lower_bound(first, last, std::uint64_t(a) << 32);
+      else
+        while(it != last && (*it >> 32) != a)
+          ++it;
       if(it != last && (*it >> 32) == a)
       {
         opposite[c] = static_cast<std::uint32_t>(*it);
