@@ -38,13 +38,14 @@ void* allocate(std::size_t n)
   if(n == 0)
     n = 1;
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-  if(n >= large_block && n <= static_cast<std::size_t>(-1) - huge_page)
+  if(n >= large_block)
   {
-    const std::size_t bytes = (n + huge_page - 1) / huge_page * huge_page;
     void* p = nullptr;
-    if(posix_memalign(&p, huge_page, bytes) != 0)
+    if(posix_memalign(&p, huge_page, n) != 0)
       return nullptr;
-    madvise(p, bytes, MADV_HUGEPAGE);  // a hint: where it is refused, the memory is plain
+    // a hint (where it is refused, the memory is plain), on the whole huge pages of the block only: its last,
+    // partly used 2 MB stay on small pages, which the resident memory counts only as they are touched
+    madvise(p, n / huge_page * huge_page, MADV_HUGEPAGE);
     return p;
   }
 #endif
