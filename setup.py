@@ -24,7 +24,8 @@ extension = Pybind11Extension(
     "vtp_geodesics._core",
     # the module (its sources by topic), and the compiled part of the support layer (CMake: the static library
     # VTP_geodesics_support)
-    sorted(glob.glob("python/src/*.cpp")) + ["support/src/read_mesh.cpp", "support/src/surface_locator.cpp"],
+    sorted(glob.glob("python/src/*.cpp")) + ["support/src/read_mesh.cpp", "support/src/surface_locator.cpp",
+                                                  "support/src/huge_page_new.cpp"],
     include_dirs=["include", "support/include"],  # the library; the support layer (readers, method table)
     define_macros=[("NDEBUG", None), ("CGAL_USE_GMPXX", "1"), ("CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP", None)],
     extra_compile_args=["-O3", "-frounding-math", "-fopenmp"],

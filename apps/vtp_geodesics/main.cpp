@@ -134,8 +134,8 @@ int run(int argc, char** argv)
   const Clock::time_point write_start = Clock::now();
   Output_files files;
   write_outputs(files, args, input, request, result, results);
-  report.write_seconds = seconds_since(write_start);
-  report.total_seconds = seconds_since(start);
+  report.stages.write = seconds_since(write_start);
+  report.stages.total = seconds_since(start);
   report.peak_rss_mb = peak_rss_mb();
   if(!args.stats_json.empty())
     files.write(args.stats_json, [&report](std::ostream& os) { os << stats_json(report); });

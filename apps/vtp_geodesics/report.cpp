@@ -52,8 +52,10 @@ Report make_report(const std::string& mesh_file, const Arguments& args, const vt
   report.max_distance_limit = args.max_distance;
   report.run = &run;
   report.results = &results;
-  report.read_seconds = input.read_seconds;
-  report.repair_seconds = input.repair_seconds;
+  report.stages.read = input.read_seconds;
+  report.stages.repair = input.repair_seconds;
+  report.stages.preprocessing = run.preprocessing_seconds;
+  report.stages.propagation = run.statistics.seconds;
   return report;
 }
 
@@ -76,14 +78,11 @@ std::string stats_json(const Report& r)
      << ", \"targets\": " << f.target_distances.size()
      << ", \"paths\": " << f.paths.size()
      << ", \"method\": " << json_value(r.method)
-     << ", \"preprocessing_threads\": " << s.preprocessing_threads
-     << ", \"read_seconds\": " << json_value(r.read_seconds)
-     << ", \"repair_seconds\": " << json_value(r.repair_seconds)
-     << ", \"preprocessing_seconds\": " << json_value(s.preprocessing_seconds)
-     << ", \"propagation_seconds\": " << json_value(s.statistics.seconds)
-     << ", \"write_seconds\": " << json_value(r.write_seconds)
-     << ", \"total_seconds\": " << json_value(r.total_seconds)
-     << ", \"peak_rss_mb\": " << json_value(r.peak_rss_mb)
+     << ", \"preprocessing_threads\": " << s.preprocessing_threads;
+  // the stages from the file to the answer, from their description (vtp_support/statistics.h): read_seconds,
+  // repair_seconds, ..., total_seconds, outside_propagation_ratio
+  vtp_support::write_stages_json(os, r.stages, ", ");
+  os << ", \"peak_rss_mb\": " << json_value(r.peak_rss_mb)
      << ", \"reached_vertices\": " << f.reached_vertices
      << ", \"max_distance\": " << json_value(f.max_distance)
      << ", \"mean_edge_length\": " << json_value(s.mean_edge_length)
@@ -122,7 +121,7 @@ void print_summary(std::ostream& os, const Report& r)
      << "vertices: " << r.vertices << ", faces: " << r.faces << (r.sources == 1 ? ", source: " : ", sources: ")
      << r.sources_text << "\n"
      << "method: " << r.method << ", propagation: " << st.seconds
-     << " s, preprocessing: " << s.preprocessing_seconds << " s, reading: " << r.read_seconds + r.repair_seconds
+     << " s, preprocessing: " << s.preprocessing_seconds << " s, reading: " << r.stages.read + r.stages.repair
      << " s\n"
      << "max distance: " << f.max_distance << " (" << f.reached_vertices << " of " << r.vertices
      << " vertices reached" << (st.stopped_early ? "; stopped early" : "") << ")\n"

@@ -19,6 +19,7 @@
 
 #include <vtp_support/methods.h>
 #include <vtp_support/read_mesh.h>
+#include <vtp_support/statistics.h>
 
 #include <cstddef>
 #include <ostream>
@@ -41,11 +42,11 @@ struct Report
   double max_distance_limit = 0.;
   const Run_result* run = nullptr;         // the computation
   const File_results* results = nullptr;   // its results in the file's terms
-  double read_seconds = 0., repair_seconds = 0., write_seconds = 0., total_seconds = 0.;
+  vtp_support::Stage_seconds stages;      // from the file to the answer (write and total: set by main.cpp)
   double peak_rss_mb = 0.;
 };
 
-// The report of a run (but the times of writing and in all, and the peak memory).
+// The report of a run (but the stages of writing and in all, and the peak memory).
 Report make_report(const std::string& mesh_file, const Arguments& args, const vtp_support::Method_info& method,
                    const vtp_support::Input_mesh& input, const Run_result& run, const File_results& results);
 

@@ -20,6 +20,7 @@
 
 #include <vtp_support/command_line.h>
 #include <vtp_support/methods.h>
+#include <vtp_support/statistics.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -184,6 +185,13 @@ void print_table_row(const Mesh_info& mesh, std::size_t source, const Run_result
 // then midpoint subdivision. The vertices are numbered 0..n-1 in the end (garbage collected).
 // Returns the label of the mesh.
 std::string load_mesh(const std::string& file, const Arguments& args, Mesh& mesh);
+
+// file_to_answer.cpp: the stages from the OFF file `file` to the distances from `source` (exact VTP, the solver's
+// preprocessing on `threads` threads), as the tool goes through them, in a fresh child process; false if it failed.
+int default_threads();  // OpenMP's default, as the tool's
+bool file_to_answer(const std::string& file, std::size_t source, int threads, vtp_support::Stage_seconds& stages);
+void print_file_to_answer(const std::string& label, std::size_t source, int threads,
+                          const vtp_support::Stage_seconds& stages);
 
 // Writes `mesh` as an OFF file, vertices in index order; throws std::runtime_error.
 void write_off(const Mesh& mesh, const std::string& file);

@@ -15,6 +15,8 @@
 
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 
+#include <vtp_support/mesh_formats.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -152,11 +154,55 @@ std::array<double, 3> Core_solver::to_user_barycentric(const Face_location& l) c
 // ---------------------------------------------------------------------------------------------------------------
 namespace {
 
+// A plain ASCII OFF file of a valid triangle mesh (the common case for large meshes): parsed and checked, without
+// the halfedge structure that read_input_mesh() builds (Solver(V, F) builds its own): the same V and F. Returns
+// false for anything else (other formats, repairs, errors: read_input_mesh() reads them, and says what is wrong).
+bool read_valid_off(const std::string& path, int threads, py::tuple& result)
+{
+  if(vtp_support::lower_extension(path) != "off")
+    return false;
+  std::vector<double> xyz;
+  std::vector<vtp_support::fast_off_detail::Triangle> triangles;
+  {
+    py::gil_scoped_release release;
+    try
+    {
+      if(vtp_support::read_off_triangle_soup(path, xyz, triangles, threads).status
+         != vtp_support::Fast_off_result::MESH)
+        return false;
+    }
+    catch(const vtp_support::Fast_off_error&)
+    {
+      return false;
+    }
+  }
+  const std::size_t n = xyz.size() / 3, m = triangles.size();
+  py::array_t<double> V({ static_cast<py::ssize_t>(n), py::ssize_t(3) });
+  py::array_t<std::int64_t> F({ static_cast<py::ssize_t>(m), py::ssize_t(3) });
+  double* v = V.mutable_data();
+  std::int64_t* f = F.mutable_data();
+  {
+    py::gil_scoped_release release;
+    std::copy(xyz.begin(), xyz.end(), v);
+    std::vector<double>().swap(xyz);
+    for(std::size_t j = 0; j < m; ++j)
+      for(std::size_t k = 0; k < 3; ++k)
+        f[3 * j + k] = static_cast<std::int64_t>(triangles[j][k]);
+  }
+  result = py::make_tuple(V, F, std::string(), std::string("fast OFF reader"), true);
+  return true;
+}
+
 // The mesh of a file: (V (n, 3), F (m, 3), the repairs done, the reader's name, whether it was read as is).
 // `as_in_file`: the vertices and triangles of the file as they are (not repaired; Solver(V, F) repairs them as
 // the tools do); a file with faces of more than three vertices is refused then.
 py::tuple read_mesh(const std::string& path, int threads, bool as_in_file)
 {
+  {
+    py::tuple r;
+    if(read_valid_off(path, threads, r))
+      return r;
+  }
   vtp_support::Input_mesh input;
   std::string error;
   {

@@ -133,6 +133,12 @@ class Solver(Queries, Matrices, Sampling):
         output_seconds, preprocessing_seconds (the library's preprocessing in the constructor) and
         mesh_build_seconds (the constructor's checks of V and F and building of the mesh). After
         ``matrix()``, the sums over the rows (peaks are maxima).
+
+        The stages from the arrays to the answer, with the names of the tool's ``--stats-json``: read_seconds
+        and write_seconds (0: ``read_mesh()`` and the caller's outputs are timed by the caller),
+        repair_seconds (= mesh_build_seconds), preprocessing_seconds, propagation_seconds (= seconds),
+        other_seconds (0), total_seconds (their sum) and outside_propagation_ratio ((total - propagation) /
+        propagation).
         """
         return self._core.statistics()
 

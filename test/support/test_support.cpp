@@ -8,6 +8,7 @@
 #include <vtp_support/fast_off_reader.h>
 #include <vtp_support/number_format.h>
 #include <vtp_support/read_mesh.h>
+#include <vtp_support/statistics.h>
 
 #include <CGAL/IO/OFF.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -15,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -226,6 +228,126 @@ TEST(FastOffReader, DefiniteErrors)
       EXPECT_EQ(std::string(e.what()), c.second);
     }
   }
+}
+
+// The soup of a valid OFF file (read_off_triangle_soup(), Python's read_mesh()) is the mesh that
+// read_off_triangle_mesh() builds: the same points in the same order, face j the triangle that starts at
+// source(halfedge(j)); anything else is left to CGAL (the same reason) or is the same error.
+TEST(FastOffReader, SoupIsTheMeshOfTheFile)
+{
+  for(const char* name : { "elephant.off", "elephant-with-holes.off", "mech-holes-shark.off", "knot1.off",
+                           "sphere.off", "three_peaks.off", "degenerate_zero_length_edges.off" })
+  {
+    SCOPED_TRACE(name);
+    Mesh mesh;
+    ASSERT_EQ(vtp_support::read_off_triangle_mesh(mesh_dir + "/" + name, mesh).status,
+              vtp_support::Fast_off_result::MESH);
+    for(int threads : { 1, 2 })
+    {
+      std::vector<double> xyz;
+      std::vector<vtp_support::fast_off_detail::Triangle> triangles;
+      const vtp_support::Fast_off_result r =
+        vtp_support::read_off_triangle_soup(mesh_dir + "/" + name, xyz, triangles, threads);
+      ASSERT_EQ(r.status, vtp_support::Fast_off_result::MESH) << r.reason;
+      ASSERT_EQ(xyz.size(), 3 * mesh.number_of_vertices());
+      ASSERT_EQ(triangles.size(), mesh.number_of_faces());
+      for(Vertex_index v : mesh.vertices())
+        for(int k = 0; k < 3; ++k)
+          ASSERT_EQ(xyz[3 * std::size_t(v) + std::size_t(k)], mesh.point(v)[k]) << "vertex " << v;
+      for(Mesh::Face_index f : mesh.faces())
+      {
+        const Mesh::Halfedge_index h = mesh.halfedge(f);
+        const vtp_support::fast_off_detail::Triangle t = { { std::uint32_t(mesh.source(h)), std::uint32_t(mesh.target(h)),
+                                                             std::uint32_t(mesh.target(mesh.next(h))) } };
+        ASSERT_EQ(triangles[std::size_t(f)], t) << "face " << f;
+      }
+    }
+  }
+  const std::string folder = fresh_folder("fast_off_soup");
+  const char* const cases[] = {
+    "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n",                       // a quad
+    "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n",                                // a repeated vertex
+    "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n3 0 1 2\n3 0 1 3\n",               // the same oriented edge twice
+    "OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 0 3 4\n",       // a pinched vertex
+    "OFF\n3 1 0\n0 0 0\n1 0 0\n",                                                // truncated
+    "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",                                // truncated in the faces
+    "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n",                              // NaN
+    "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1e999 0\n3 0 1 2\n",                            // infinite
+    "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",                                // index out of range
+  };
+  int i = 0;
+  for(const char* c : cases)
+  {
+    SCOPED_TRACE(c);
+    const std::string file = folder + "/case" + std::to_string(i++) + ".off";
+    write_all(file, c);
+    std::string mesh_outcome, soup_outcome;
+    try
+    {
+      Mesh m;
+      const vtp_support::Fast_off_result r = vtp_support::read_off_triangle_mesh(file, m, 2);
+      mesh_outcome = r.status == vtp_support::Fast_off_result::MESH ? "mesh" : "not handled: " + r.reason;
+    }
+    catch(const vtp_support::Fast_off_error& e)
+    {
+      mesh_outcome = std::string("error: ") + e.what();
+    }
+    try
+    {
+      std::vector<double> xyz;
+      std::vector<vtp_support::fast_off_detail::Triangle> triangles;
+      const vtp_support::Fast_off_result r = vtp_support::read_off_triangle_soup(file, xyz, triangles, 2);
+      soup_outcome = r.status == vtp_support::Fast_off_result::MESH ? "mesh" : "not handled: " + r.reason;
+    }
+    catch(const vtp_support::Fast_off_error& e)
+    {
+      soup_outcome = std::string("error: ") + e.what();
+    }
+    EXPECT_NE(mesh_outcome, "mesh");
+    EXPECT_EQ(soup_outcome, mesh_outcome);
+  }
+}
+
+// The stages from the file to the answer: each named once, in seconds but the ratio; the time in no named stage
+// and the ratio follow from the others; the JSON has every name once.
+TEST(Statistics, StagesAddUp)
+{
+  vtp_support::Stage_seconds s;
+  s.read = 0.5;
+  s.repair = 0.25;
+  s.preprocessing = 1.;
+  s.propagation = 8.;
+  s.write = 0.125;
+  s.total = 10.;
+  EXPECT_EQ(s.other(), 0.125);
+  EXPECT_EQ(s.outside_propagation_ratio(), 0.25);
+  std::vector<std::string> names;
+  double sum = 0.;
+  vtp_support::for_each_stage(s, [&](const char* name, double value, vtp_support::Statistic_unit unit) {
+    names.push_back(name);
+    const std::string n = name;
+    if(unit == vtp_support::Statistic_unit::seconds)
+    {
+      EXPECT_EQ(n.substr(n.size() - 8), "_seconds");
+      if(n != "total_seconds")
+        sum += value;
+    }
+    else
+      EXPECT_EQ(n, "outside_propagation_ratio");
+  });
+  EXPECT_EQ(sum, s.total);
+  std::vector<std::string> sorted = names;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_TRUE(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end());
+  EXPECT_EQ(names.size(), 8u);
+  std::ostringstream os;
+  vtp_support::write_stages_json(os, s);
+  for(const std::string& n : names)
+    EXPECT_NE(os.str().find("\"" + n + "\": "), std::string::npos) << n;
+  EXPECT_NE(os.str().find("\"outside_propagation_ratio\": 0.25"), std::string::npos);
+  // a total below the sum of the stages (clocks read at other moments): nothing negative
+  s.total = 9.;
+  EXPECT_EQ(s.other(), 0.);
 }
 
 TEST(ReadInputMesh, TinyValuesUnderflowLikeCgal)

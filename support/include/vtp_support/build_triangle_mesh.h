@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #ifdef _OPENMP
@@ -36,30 +37,30 @@ namespace fast_off_detail {
 
 typedef std::array<std::uint32_t, 3> Triangle;
 
-// Checks that the triangles form a valid mesh and builds its halfedge structure in `mesh`, whose vertices are
-// already there. Returns false (and leaves `mesh` to be cleared) if the triangles are not a valid mesh.
-//
-// Corner 3f+k is the halfedge t[k] -> t[k+1] of face f. The outgoing corners of each vertex are sorted by target
-// (as 64-bit keys target << 32 | corner, so that the sort and the searches read contiguous memory); the opposite
-// of every corner is found once, and everything else follows from the array of opposites.
-//
-// The loops over vertices, corners and faces that write only their own entries run on `threads` OpenMP threads
-// (0: OpenMP's default); the mesh built does not depend on their number (it is the one that adding the edges in
-// the order of their first corner, then the faces in order, would give).
-template <class Point>
-bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_mesh<Point>& mesh,
-                         std::string& reason, int threads = 1)
+// What the check of the triangles finds, and the building of the halfedge structure uses: per corner 3f+k
+// (the halfedge t[k] -> t[k+1] of face f) its opposite corner, and per vertex the corner ending at it in its last
+// face (`none` for a vertex without face).
+struct Corner_tables
 {
-  typedef CGAL::Surface_mesh<Point> Mesh;
-  typedef typename Mesh::Vertex_index Vertex_index;
-  typedef typename Mesh::Halfedge_index Halfedge_index;
-  typedef typename Mesh::Face_index Face_index;
-  typedef typename Mesh::size_type size_type;
+  std::vector<std::uint32_t> opposite, last_in;
+};
+
+// Checks that the triangles (vertex indices below n) form a valid mesh: no face with a repeated vertex, no
+// directed edge twice, every vertex a single fan of faces (the rules of
+// CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh()). Returns false, with the reason, if not;
+// fills `tables` (if given) if so.
+//
+// The outgoing corners of each vertex are listed (as 64-bit keys target << 32 | corner, so that the searches read
+// contiguous memory; long lists sorted by target); the opposite of every corner is found once, and the fans follow
+// from the array of opposites. The loops over vertices that write only their own entries run on `threads`
+// OpenMP threads (0: OpenMP's default), in chunks taken as they come (a thread that the system has descheduled holds
+// back only its chunk); the result does not depend on their number.
+inline bool check_triangle_mesh(const std::vector<Triangle>& triangles, std::size_t n, std::string& reason,
+                                int threads = 1, Corner_tables* tables = nullptr)
+{
   const std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
-  const std::size_t n = mesh.number_of_vertices();
   const std::uint32_t nc = static_cast<std::uint32_t>(3 * triangles.size());
-  const long long nl = static_cast<long long>(n), ncl = static_cast<long long>(nc);
-  const long long nfl = static_cast<long long>(triangles.size());
+  const long long nl = static_cast<long long>(n);
 #ifdef _OPENMP
   if(threads <= 0)
     threads = omp_get_max_threads();
@@ -91,18 +92,28 @@ bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_m
     for(std::uint32_t c = 0; c < nc; ++c)
       out[fill[source_of(c)]++] = (std::uint64_t(target_of(c)) << 32) | c;
   }
+  // The lists of most vertices are short (6 corners on average): they are searched as they are, in the order of
+  // their corners; only those longer than `short_list` are sorted by target (then searched by bisection).
+  const std::uint32_t short_list = 16;
   bool repeated_edge = false;
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1) reduction(|| : repeated_edge)
+#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) if(threads > 1) reduction(|| : repeated_edge)
 #endif
   for(long long vl = 0; vl < nl; ++vl)
   {
     const std::size_t v = static_cast<std::size_t>(vl);
     std::uint64_t* first = out.data() + begin[v];
     std::uint64_t* last = out.data() + begin[v + 1];
-    std::sort(first, last);
-    for(std::uint64_t* k = first; k + 1 < last; ++k)
-      repeated_edge = repeated_edge || (k[0] >> 32) == (k[1] >> 32);
+    if(last - first > std::ptrdiff_t(short_list))
+    {
+      std::sort(first, last);
+      for(std::uint64_t* k = first; k + 1 < last; ++k)
+        repeated_edge = repeated_edge || (k[0] >> 32) == (k[1] >> 32);
+    }
+    else
+      for(std::uint64_t* k = first; k < last; ++k)
+        for(std::uint64_t* j = first; j < k; ++j)
+          repeated_edge = repeated_edge || (k[0] >> 32) == (j[0] >> 32);
   }
   if(repeated_edge)
   {
@@ -114,7 +125,7 @@ bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_m
   // of a -> b and b -> a is found from the smaller vertex a, which writes both entries: no entry is written twice.
   std::vector<std::uint32_t> opposite(nc, none);
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1)
+#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) if(threads > 1)
 #endif
   for(long long al = 0; al < nl; ++al)
   {
@@ -125,10 +136,14 @@ bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_m
       const std::uint32_t b = static_cast<std::uint32_t>(out[k] >> 32);
       if(b < a)
         continue;
-      const std::uint64_t key = std::uint64_t(a) << 32;
       const std::uint64_t* first = out.data() + begin[b];
       const std::uint64_t* last = out.data() + begin[b + 1];
-      const std::uint64_t* it = std::lower_bound(first, last, key);
+      const std::uint64_t* it = first;
+      if(last - first > std::ptrdiff_t(short_list))
+        it = std::lower_bound(first, last, std::uint64_t(a) << 32);
+      else
+        while(it != last && (*it >> 32) != a)
+          ++it;
       if(it != last && (*it >> 32) == a)
       {
         opposite[c] = static_cast<std::uint32_t>(*it);
@@ -143,7 +158,7 @@ bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_m
   std::vector<std::uint32_t> last_in(n, none);
   bool manifold = true;
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1) reduction(&& : manifold)
+#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) if(threads > 1) reduction(&& : manifold)
 #endif
   for(long long vl = 0; vl < nl; ++vl)
   {
@@ -175,8 +190,48 @@ bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_m
     reason = "a vertex is not manifold";
     return false;
   }
-  std::vector<std::uint64_t>().swap(out);
-  std::vector<std::uint32_t>().swap(begin);
+  if(tables != nullptr)
+  {
+    tables->opposite = std::move(opposite);
+    tables->last_in = std::move(last_in);
+  }
+  return true;
+}
+
+// Checks that the triangles form a valid mesh (check_triangle_mesh()) and builds its halfedge structure in
+// `mesh`, whose vertices are already there. Returns false (and leaves `mesh` to be cleared) if the triangles are
+// not a valid mesh.
+//
+// The loops over corners, faces and vertices that write only their own entries run on `threads` OpenMP threads
+// (0: OpenMP's default); the mesh built does not depend on their number (it is the one that adding the edges in
+// the order of their first corner, then the faces in order, would give).
+template <class Point>
+bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_mesh<Point>& mesh,
+                         std::string& reason, int threads = 1)
+{
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  typedef typename Mesh::Vertex_index Vertex_index;
+  typedef typename Mesh::Halfedge_index Halfedge_index;
+  typedef typename Mesh::Face_index Face_index;
+  typedef typename Mesh::size_type size_type;
+  const std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
+  const std::size_t n = mesh.number_of_vertices();
+  const std::uint32_t nc = static_cast<std::uint32_t>(3 * triangles.size());
+  const long long nl = static_cast<long long>(n), ncl = static_cast<long long>(nc);
+  const long long nfl = static_cast<long long>(triangles.size());
+#ifdef _OPENMP
+  if(threads <= 0)
+    threads = omp_get_max_threads();
+#endif
+  threads = (std::max)(1, threads);
+  Corner_tables tables;
+  if(!check_triangle_mesh(triangles, n, reason, threads, &tables))
+    return false;
+  std::vector<std::uint32_t>& opposite = tables.opposite;
+  const std::vector<std::uint32_t>& last_in = tables.last_in;
+  auto source_of = [&](std::uint32_t c) { return triangles[c / 3][c % 3]; };
+  auto target_of = [&](std::uint32_t c) { return triangles[c / 3][(c % 3 + 1) % 3]; };
+
 
   // Edges: one per pair of opposite corners (made by the first of the two) and per corner without opposite (then
   // its other halfedge is a border halfedge); edge e is the halfedges 2e (along its first corner) and 2e + 1.
@@ -187,7 +242,7 @@ bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_m
       halfedge_of[c] = 2 * ne++;
   mesh.resize(static_cast<size_type>(n), static_cast<size_type>(ne), static_cast<size_type>(triangles.size()));
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1)
+#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) if(threads > 1)
 #endif
   for(long long cl = 0; cl < ncl; ++cl)
   {
@@ -200,7 +255,7 @@ bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_m
     }
   }
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1)
+#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) if(threads > 1)
 #endif
   for(long long cl = 0; cl < ncl; ++cl)
   {
@@ -221,7 +276,7 @@ bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_m
 
   // Faces: each writes its own three halfedges.
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1)
+#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) if(threads > 1)
 #endif
   for(long long fl = 0; fl < nfl; ++fl)
   {
@@ -239,7 +294,7 @@ bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_m
   // Vertices: a border vertex's halfedge is its incoming border halfedge, followed by the outgoing one; an
   // interior vertex's is its halfedge in its last face.
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads) if(threads > 1)
+#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) if(threads > 1)
 #endif
   for(long long vl = 0; vl < nl; ++vl)
   {

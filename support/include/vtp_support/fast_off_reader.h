@@ -195,18 +195,18 @@ inline bool parse_index(const char*& p, const char* end, std::uint64_t& i)
 
 } // namespace fast_off_detail
 
-// Reads `file` into `mesh` (cleared first) if it is a plain ASCII OFF file of a valid triangle mesh (see the
-// top of this file), the halfedge structure built by `threads` threads (see build_triangle_mesh()). On
-// NOT_HANDLED, `mesh` must be cleared by the caller.
-template <class Point>
-Fast_off_result read_off_triangle_mesh(const std::string& file, CGAL::Surface_mesh<Point>& mesh, int threads = 1)
+namespace fast_off_detail {
+
+// Parses `file` if it is a plain ASCII OFF file of triangles: reserve(nv) once the header is read, then
+// add_point(x, y, z) for each vertex in order, and the triangles into `triangles`. Returns NOT_HANDLED (with the
+// reason) for what CGAL's reader must read instead; throws Fast_off_error for definite errors of the file.
+template <class Reserve, class Add_point>
+Fast_off_result parse_off_triangles(const std::string& file, const Reserve& reserve, const Add_point& add_point,
+                                    std::vector<Triangle>& triangles)
 {
-  using namespace fast_off_detail;
   typedef std::chrono::steady_clock Clock;
   const Clock::time_point t0 = Clock::now();
   Fast_off_result result;
-  mesh.clear();
-
   std::FILE* f = std::fopen(file.c_str(), "rb");
   if(f == nullptr)
     throw Fast_off_error(std::string("cannot open the file: ") + std::strerror(errno));
@@ -248,7 +248,7 @@ Fast_off_result read_off_triangle_mesh(const std::string& file, CGAL::Surface_me
   if(nv == 0)
     throw Fast_off_error("the mesh has no vertices");
 
-  mesh.reserve(static_cast<typename CGAL::Surface_mesh<Point>::size_type>(nv), 0, 0);
+  reserve(static_cast<std::size_t>(nv));
   for(std::uint64_t i = 0; i < nv; ++i)
   {
     next_content_line(r);
@@ -265,10 +265,10 @@ Fast_off_result read_off_triangle_mesh(const std::string& file, CGAL::Surface_me
     }
     if((p == r.end() && !r.at_end()) || !end_of_line(p, r.end()))
       return not_handled("unexpected vertex line");
-    mesh.add_vertex(Point(x[0], x[1], x[2]));
+    add_point(x[0], x[1], x[2]);
   }
 
-  std::vector<Triangle> triangles(static_cast<std::size_t>(nf));
+  triangles.resize(static_cast<std::size_t>(nf));
   for(std::uint64_t i = 0; i < nf; ++i)
   {
     next_content_line(r);
@@ -298,13 +298,64 @@ Fast_off_result read_off_triangle_mesh(const std::string& file, CGAL::Surface_me
     throw Fast_off_error("read error");
   if(nf == 0)
     throw Fast_off_error("the mesh has no faces");
-  const Clock::time_point t1 = Clock::now();
-  result.read_seconds = std::chrono::duration<double>(t1 - t0).count();
-
-  std::string reason;
-  if(!build_triangle_mesh(triangles, mesh, reason, threads))
-    return not_handled(reason);
   result.status = Fast_off_result::MESH;
+  result.read_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return result;
+}
+
+} // namespace fast_off_detail
+
+// Reads `file` into `mesh` (cleared first) if it is a plain ASCII OFF file of a valid triangle mesh (see the
+// top of this file), the halfedge structure built by `threads` threads (see build_triangle_mesh()). On
+// NOT_HANDLED, `mesh` must be cleared by the caller.
+template <class Point>
+Fast_off_result read_off_triangle_mesh(const std::string& file, CGAL::Surface_mesh<Point>& mesh, int threads = 1)
+{
+  using namespace fast_off_detail;
+  typedef std::chrono::steady_clock Clock;
+  mesh.clear();
+  std::vector<Triangle> triangles;
+  Fast_off_result result = parse_off_triangles(
+    file, [&mesh](std::size_t nv) { mesh.reserve(static_cast<typename CGAL::Surface_mesh<Point>::size_type>(nv), 0, 0); },
+    [&mesh](double x, double y, double z) { mesh.add_vertex(Point(x, y, z)); }, triangles);
+  if(result.status != Fast_off_result::MESH)
+    return result;
+  const Clock::time_point t1 = Clock::now();
+  if(!build_triangle_mesh(triangles, mesh, result.reason, threads))
+  {
+    result.status = Fast_off_result::NOT_HANDLED;
+    return result;
+  }
+  result.build_seconds = std::chrono::duration<double>(Clock::now() - t1).count();
+  return result;
+}
+
+// Reads `file` into `xyz` (3 coordinates per vertex) and `triangles` if it is a plain ASCII OFF file of a valid
+// triangle mesh (see the top of this file): the same vertices and faces as read_off_triangle_mesh() (and
+// read_input_mesh()), without building the halfedge structure (the mesh is only checked, by `threads` threads).
+// build_seconds is the time of the check.
+inline Fast_off_result read_off_triangle_soup(const std::string& file, std::vector<double>& xyz,
+                                              std::vector<fast_off_detail::Triangle>& triangles, int threads = 1)
+{
+  using namespace fast_off_detail;
+  typedef std::chrono::steady_clock Clock;
+  xyz.clear();
+  Fast_off_result result = parse_off_triangles(
+    file, [&xyz](std::size_t nv) { xyz.reserve(3 * nv); },
+    [&xyz](double x, double y, double z) {
+      xyz.push_back(x);
+      xyz.push_back(y);
+      xyz.push_back(z);
+    },
+    triangles);
+  if(result.status != Fast_off_result::MESH)
+    return result;
+  const Clock::time_point t1 = Clock::now();
+  if(!check_triangle_mesh(triangles, xyz.size() / 3, result.reason, threads))
+  {
+    result.status = Fast_off_result::NOT_HANDLED;
+    return result;
+  }
   result.build_seconds = std::chrono::duration<double>(Clock::now() - t1).count();
   return result;
 }

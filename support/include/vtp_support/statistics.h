@@ -40,7 +40,8 @@ enum class Statistic_unit
   seconds,  // wall-clock
   length,   // in the mesh's units
   flag,     // a bool
-  text      // a std::string
+  text,     // a std::string
+  ratio     // a quotient of two quantities of the same unit
 };
 
 inline const char* unit_name(Statistic_unit u)
@@ -53,6 +54,7 @@ inline const char* unit_name(Statistic_unit u)
     case Statistic_unit::length: return "mesh units";
     case Statistic_unit::flag: return "";
     case Statistic_unit::text: return "";
+    case Statistic_unit::ratio: return "";
   }
   return "";
 }
@@ -91,6 +93,49 @@ void for_each_statistic(Statistics& s, F&& f)
   f("output_seconds", s.output_seconds, U::seconds);
 }
 
+// The stages of a computation from a mesh file to its answer, wall-clock seconds: what a user waits for, of
+// which the propagation is only a part. The tool fills them all; the benchmark's file-to-answer run and the
+// Python module fill those they go through (0 for the others).
+struct Stage_seconds
+{
+  double read = 0.;           // parsing the file
+  double repair = 0.;         // checking the mesh, repairing it if needed, building its halfedge structure
+  double preprocessing = 0.;  // the solver's per-mesh arrays (numbering, lengths, angles)
+  double propagation = 0.;    // the computation asked for (the library's statistics' `seconds`)
+  double write = 0.;          // the output files
+  double total = 0.;          // from the start to the answer (at least the sum of the stages above)
+
+  // the time not in one of the named stages (arguments, sources, results put back in the file's order)
+  double other() const
+  {
+    const double rest = total - (read + repair + preprocessing + propagation + write);
+    return rest > 0. ? rest : 0.;
+  }
+  // the time outside the propagation, relative to the propagation (the bar of the file-to-answer time)
+  double outside_propagation_ratio() const
+  {
+    return propagation > 0. ? (total - propagation) / propagation : 0.;
+  }
+};
+
+// Calls f(name, value, unit) for each stage of `s`, then for the time not in a named stage ("other_seconds")
+// and for the time outside the propagation over the propagation ("outside_propagation_ratio"), in the order the
+// outputs list them: the tool's JSON, the benchmark's file-to-answer line and the Python statistics are written
+// from it. A new stage is one more line here (and one more field above).
+template <class F>
+void for_each_stage(const Stage_seconds& s, F&& f)
+{
+  typedef Statistic_unit U;
+  f("read_seconds", s.read, U::seconds);
+  f("repair_seconds", s.repair, U::seconds);
+  f("preprocessing_seconds", s.preprocessing, U::seconds);
+  f("propagation_seconds", s.propagation, U::seconds);
+  f("write_seconds", s.write, U::seconds);
+  f("other_seconds", s.other(), U::seconds);
+  f("total_seconds", s.total, U::seconds);
+  f("outside_propagation_ratio", s.outside_propagation_ratio(), U::ratio);
+}
+
 // A statistic as JSON text: numbers as numbers (non-finite ones as null), flags as true / false, text quoted.
 inline std::string json_value(const std::string& s)
 {
@@ -127,6 +172,16 @@ inline void write_statistics_json(std::ostream& os, const CGAL::VTP_geodesics::P
     for(const char* e : except)
       if(std::strcmp(name, e) == 0)
         return;
+    os << separator << '"' << name << "\": " << json_value(value);
+    separator = ", ";
+  });
+}
+
+// The stages as the members of a JSON object (see write_statistics_json()).
+inline void write_stages_json(std::ostream& os, const Stage_seconds& s, const char* first_separator = "")
+{
+  const char* separator = first_separator;
+  for_each_stage(s, [&](const char* name, double value, Statistic_unit) {
     os << separator << '"' << name << "\": " << json_value(value);
     separator = ", ";
   });

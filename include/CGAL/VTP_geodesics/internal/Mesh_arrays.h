@@ -241,20 +241,27 @@ struct Mesh_arrays
   }
 
   // Calls add(i, term(i)) for i = 0, ..., n - 1 in this order, the terms being computed by `threads`
-  // OpenMP threads a block at a time: sums made by `add` do not depend on the number of threads.
+  // OpenMP threads a block at a time: sums made by `add` do not depend on the number of threads. A block
+  // is one parallel region (up to 2^18 terms, 2 MB), its terms taken by the threads in chunks as they come
+  // (a thread that the system has descheduled holds back only the chunk it has taken: on a busy machine,
+  // every region's barrier waits for its late threads).
   template <class Term, class Add>
   static void computed_in_parallel_added_in_order(Index n, int threads, const Term& term, const Add& add)
   {
-    const Index block = Index(1) << 15;
+    const Index block = Index(1) << 18, chunk = Index(1) << 12;
     std::vector<double> value((std::min)(n, block));
+    Parallel_for loop(threads, Parallel_for::DYNAMIC);
     for(Index first = 0; first < n; first += block)
     {
       const Index last = (std::min)(n, first + block);
-      Parallel_for(threads).run(static_cast<long long>(last - first), [&](long long i, int) {
-        value[static_cast<std::size_t>(i)] = term(first + static_cast<Index>(i));
+      const Index chunks = (last - first + chunk - 1) / chunk;
+      loop.run(static_cast<long long>(chunks), [&](long long c, int) {
+        const Index begin = first + static_cast<Index>(c) * chunk, end = (std::min)(last, begin + chunk);
+        for(Index i = begin; i < end; ++i)
+          value[static_cast<std::size_t>(i - first)] = term(i);
       });
       for(Index i = first; i < last; ++i)
-        add(i, value[i - first]);
+        add(i, value[static_cast<std::size_t>(i - first)]);
     }
   }
 

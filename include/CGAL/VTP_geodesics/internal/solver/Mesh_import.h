@@ -215,10 +215,20 @@ void import_mesh(Mesh_index<TriangleMesh>& index, VertexPointMap vpm, const Trai
     double longest = 0.;
     std::size_t first_non_finite = (std::numeric_limits<std::size_t>::max)();
   };
-  Parallel_for loop(threads);
+  // The faces are taken by the threads in chunks as they come (a thread that the system has descheduled
+  // holds back only its chunk).
+  Parallel_for loop(threads, Parallel_for::DYNAMIC);
+  const std::size_t chunk = 4096;
+  const long long chunks = static_cast<long long>((nf + chunk - 1) / chunk);
+  auto in_chunks = [&](const auto& body) {
+    loop.run(chunks, [&](long long c, int t) {
+      const std::size_t first = static_cast<std::size_t>(c) * chunk, last = (std::min)(nf, first + chunk);
+      for(std::size_t i = first; i < last; ++i)
+        body(i, t);
+    });
+  };
   std::vector<Per_thread> per_thread(static_cast<std::size_t>(loop.threads()));
-  loop.run(static_cast<long long>(nf), [&](long long pl, int t) {
-    const std::size_t position = static_cast<std::size_t>(pl);
+  in_chunks([&](std::size_t position, int t) {
     const std::size_t f = static_cast<std::size_t>(id_of_position[position]);
     Per_thread& mine = per_thread[static_cast<std::size_t>(t)];
     halfedge_descriptor h = halfedge(by_position[position], tm);
@@ -264,8 +274,8 @@ void import_mesh(Mesh_index<TriangleMesh>& index, VertexPointMap vpm, const Trai
   const bool multiply = exponent > -500 && exponent < 500;
   const double down = std::ldexp(1., -exponent), down2 = std::ldexp(1., -2 * exponent);
   auto scaled = [&](double x, int e, double factor) { return multiply ? x * factor : std::ldexp(x, e); };
-  loop.run(static_cast<long long>(nf), [&](long long fl, int) {
-    Face_geometry& g = face_geometry[static_cast<std::size_t>(fl)];
+  in_chunks([&](std::size_t fi, int) {
+    Face_geometry& g = face_geometry[fi];
     const double longest_edge = (std::max)(g.length[0], (std::max)(g.length[1], g.length[2]));
     for(double& l : g.length)
       l = scaled(l, -exponent, down);
