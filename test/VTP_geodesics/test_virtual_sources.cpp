@@ -11,18 +11,22 @@
 
 #include <CGAL/VTP_geodesics.h>
 #include <CGAL/VTP_geodesics/internal/Huge_page_allocator.h>
+#include <CGAL/VTP_geodesics/internal/parallel/Round_team.h>
 
 #include <boost/property_map/property_map.hpp>
 
 #include <gtest/gtest.h>
 
 #include <array>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
 #include <limits>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -444,6 +448,54 @@ TEST_P(Virtual_sources, compute_each_parallel_tag_and_unreachable)
 }
 
 #ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+// A thread made late (it sleeps 1 ms before every fifth work item it takes, or the master before every
+// fifth phase it publishes too, as a thread that the system stops for another process): PVSP gives the
+// bits of VSP.
+namespace {
+
+std::atomic<int> late_vsp_thread{ -100 }, late_vsp_calls{ 0 };
+
+void late_vsp_hook(int t)
+{
+  const int late = late_vsp_thread.load();
+  if((t == late || t == -1 - late) && ++late_vsp_calls % 5 == 0)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+}
+
+} // namespace
+
+TEST_P(Virtual_sources, Parallel_rounds_give_the_same_bits_with_a_late_thread)
+{
+  const int nx = 280, ny = 260;
+  const Polygon_soup soup = planar_grid(nx, ny, 1.2, 1., 0.3, 7u);
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  Solver solver(mesh);
+  const std::vector<Vertex_index> sources = {Vertex_index(grid_vertex(nx, nx / 2, ny / 2)), Vertex_index(0)};
+  auto labelled = [&](std::vector<std::size_t>& labels) {
+    labels.assign(index_range(mesh), 99);
+    return boost::make_iterator_property_map(labels.begin(), get(boost::vertex_index, mesh));
+  };
+  std::vector<std::size_t> labels1, labels;
+  const std::vector<double> d1 = run(solver, mesh, sources, VSP.nearest_source_map(labelled(labels1)));
+  for(int threads : {2, 3})
+    for(int late : {0, 1})
+    {
+      const std::string what = std::to_string(threads) + " threads, thread " + std::to_string(late) + " late";
+      late_vsp_thread = late;
+      CGAL::VTP_geodesics::internal::round_team_test_hook() = &late_vsp_hook;
+      std::vector<double> d(index_range(mesh));
+      solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
+                                         sources, VSP.number_of_threads(threads).nearest_source_map(labelled(labels)));
+      CGAL::VTP_geodesics::internal::round_team_test_hook() = nullptr;
+      EXPECT_GT(late_vsp_calls.load(), 0) << what;
+      EXPECT_TRUE(identical(d, d1)) << what;
+      EXPECT_EQ(labels, labels1) << what;
+      const CGAL::VTP_geodesics::Propagation_statistics st = solver.statistics();
+      EXPECT_EQ(st.vertices_processed, num_vertices(mesh)) << what;
+      EXPECT_GT(st.parallel_rounds, 0u) << what;
+    }
+}
+
 // PVSP: the rounds give the same bits on any number of threads, and the same as VSP (one thread), with
 // several sources and labels, a source point, a distance limit and targets; on grids large enough for the
 // rounds to run on several threads, with exact ties (a regular grid) and without (jittered).

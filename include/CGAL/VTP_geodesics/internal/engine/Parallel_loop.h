@@ -51,10 +51,7 @@ namespace internal {
 // thread waits for another one to arrive (Round_team): each takes face units of the current round as
 // long as there are some, and the master goes on once every unit is finished. So a thread that does not
 // run (the machine is busy with other work) holds the others back only if it stopped in the middle of a
-// unit. When that happens often (the master waits for units in progress more than a quarter of the
-// time), the master runs the rounds alone for a while (10 ms, doubled each time up to 0.5 s) and then
-// tries the team again: on a busy machine the parallel scheduling then runs at the speed of the
-// sequential one, and on an idle one it keeps its speedup.
+// unit. When that happens often, the master runs the rounds alone for a while (Late_team in Round_team.h).
 class Parallel_loop
 {
 public:
@@ -74,9 +71,7 @@ public:
     m_in_selection = false;
     m_k_ad = 0;
     m_round_number = 0;
-    m_solo_until = std::chrono::steady_clock::time_point();
-    m_solo_length = 0.01;
-    m_window_phase = m_window_wait = 0.;
+    m_late.reset();
     selection_seconds = propagation_seconds = merge_seconds = 0.;
     rounds = parallel_rounds = 0;
 
@@ -171,26 +166,13 @@ private:
   {
     while(m_threads > 1 && next_parallel_round())
     {
+      call_round_team_test_hook(-1);
       m_sync.publish(m_round_number, m_units.size(), std::uint32_t(1) << (Stealing_range::ROUND_BITS - 1));
       const auto t0 = std::chrono::steady_clock::now();
       propagation_phase(0, m_round_number);
       const double wait = m_sync.wait_for_items();
-      m_window_phase += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      m_window_wait += wait;
-      if(m_window_phase > 2e-3)
-      {
-        // the master waited for units held by threads that did not run: alone for a while
-        if(m_window_wait > 0.25 * m_window_phase)
-        {
-          m_solo_until = std::chrono::steady_clock::now()
-                         + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                             std::chrono::duration<double>(m_solo_length));
-          m_solo_length = (std::min)(0.5, 2. * m_solo_length);
-        }
-        else
-          m_solo_length = 0.01;
-        m_window_phase = m_window_wait = 0.;
-      }
+      const auto t1 = std::chrono::steady_clock::now();
+      m_late.record(std::chrono::duration<double>(t1 - t0).count(), wait, t1);
       finish_round();
     }
     if(m_threads == 1)
@@ -239,7 +221,7 @@ private:
     // small arrays are not worth waking the team (same work, same result, one thread), nor are the
     // rounds while the master runs alone
     m_team = (n >= 4 * static_cast<std::size_t>(m_threads) && n <= Stealing_ranges::MAX_ITEMS
-              && std::chrono::steady_clock::now() >= m_solo_until) ? m_threads : 1;
+              && !m_late.alone(std::chrono::steady_clock::now())) ? m_threads : 1;
     ++rounds;
     if(m_team > 1)
       ++parallel_rounds;
@@ -319,6 +301,7 @@ private:
       return;
     }
     m_ranges.for_each_taken(p, static_cast<std::size_t>(m_threads), round, [&](std::size_t i) {
+      call_round_team_test_hook(t);
       propagate_unit(m_unit_order[i], s, p);
       m_sync.item_finished(t);
     });
@@ -379,10 +362,7 @@ private:
   long long m_k_ad = 1;
   bool m_in_selection = false;
   std::uint32_t m_round_number = 0;                // of the last round published
-  // the master alone until m_solo_until (see master())
-  std::chrono::steady_clock::time_point m_solo_until;
-  double m_solo_length = 0.01;
-  double m_window_phase = 0., m_window_wait = 0.;
+  Late_team m_late;                                // when the master runs the rounds alone
   std::chrono::steady_clock::time_point m_round_start;
   // face units of the current round (see start_round())
   std::vector<Index> m_unit_of_face;               // per face, NO_INDEX between rounds

@@ -14,6 +14,7 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -40,6 +41,21 @@ inline void spin_pause()
 #elif defined(_MSC_VER) && (defined(_M_X64) || defined(_M_IX86))
   _mm_pause();
 #endif
+}
+
+// A hook for the tests: when set, each thread of a team (PVTP, PAVTP, PVSP) calls it with its number before
+// each work item it takes, and the master before each round it publishes (with -1 - its number); a test
+// makes a thread late with it (sleeps), and the results must not change.
+inline std::atomic<void (*)(int)>& round_team_test_hook()
+{
+  static std::atomic<void (*)(int)> hook{ nullptr };
+  return hook;
+}
+
+inline void call_round_team_test_hook(int t)
+{
+  if(void (*f)(int) = round_team_test_hook().load(std::memory_order_relaxed))
+    f(t);
 }
 
 // The synchronisation of a team that works in rounds published by one thread (the master, thread 0),
@@ -187,6 +203,48 @@ private:
   alignas(64) std::atomic<int> m_sleepers{ 0 };
   std::mutex m_mutex;
   std::condition_variable m_wake;
+};
+
+// What the master of a team does when the team is late: when it waited for items under way (held by
+// threads the system stopped for other work) more than a quarter of the time of the parallel phases, over
+// at least 2 ms, it runs the rounds alone for a while (10 ms, doubled each time up to 0.5 s), then tries the
+// team again. On a machine busy with other work a parallel method then runs at the speed of the sequential
+// one; on an idle one it keeps its speedup. Which thread runs a round changes no result.
+class Late_team
+{
+public:
+  typedef std::chrono::steady_clock Clock;
+
+  void reset()
+  {
+    m_alone_until = Clock::time_point();
+    m_alone_length = 0.01;
+    m_phases = m_waits = 0.;
+  }
+
+  // whether the master runs the rounds alone at time `now`
+  bool alone(Clock::time_point now) const { return now < m_alone_until; }
+
+  // a round of the team, which took `seconds`, `waited` of them waiting for items, ended at `now`
+  void record(double seconds, double waited, Clock::time_point now)
+  {
+    m_phases += seconds;
+    m_waits += waited;
+    if(m_phases <= 2e-3)
+      return;
+    if(m_waits > 0.25 * m_phases)
+    {
+      m_alone_until = now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(m_alone_length));
+      m_alone_length = (std::min)(0.5, 2. * m_alone_length);
+    }
+    else
+      m_alone_length = 0.01;
+    m_phases = m_waits = 0.;
+  }
+
+private:
+  Clock::time_point m_alone_until;
+  double m_alone_length = 0.01, m_phases = 0., m_waits = 0.;
 };
 
 } // namespace internal

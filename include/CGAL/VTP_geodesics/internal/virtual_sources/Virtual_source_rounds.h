@@ -16,12 +16,17 @@
 
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
+#include <CGAL/VTP_geodesics/internal/parallel/Round_team.h>
+#include <CGAL/VTP_geodesics/internal/parallel/Stealing_ranges.h>
 #include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_buckets.h>
 #include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_field.h>
+
+#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace CGAL {
@@ -31,24 +36,26 @@ namespace internal {
 // The schedule of virtual source propagation (VSP on one thread, PVSP on several): rounds of buckets.
 //
 // The vertices waiting are kept in buckets of distances of a fixed width (Virtual_source_buckets.h). A
-// round takes every vertex of the lowest bucket at once (they are then final). Each vertex is owned by a
-// thread (blocks of 2^owner_bits consecutive indices, dealt round-robin: the solver numbers the vertices
-// along a space-filling curve, so most neighbours of a vertex have the same owner); each thread of the team
-// computes the offers of the vertices of the round it owns (Virtual_source_walks::take()), applies at once
-// those to its own vertices and keeps the others, by owner, for the second phase, in which each thread
-// applies the offers of the others to its own vertices; a thread puts the vertices it lowered in its own
-// buckets. A thread reads the distance of another's vertex only between the phases (the offers to it go
-// unfiltered). A vertex not taken keeps the least offer in a total order (distance first, then the virtual
-// source, see better()), and no offer depends on another of the same round: so neither the order of the
-// round nor the number of threads changes a bit of the distances, labels and paths (take() lets through
-// every offer not above the vertex's distance, so an offer that ties with one applied before it still meets
-// it in better()). A round that one thread runs alone (VSP, and the small rounds of PVSP) applies every
-// offer at once.
+// round takes every vertex of the lowest bucket at once (they are then final). The vertices are dealt in G
+// groups (blocks of 2^owner_bits consecutive indices, dealt round-robin; G is 8 per thread: the solver
+// numbers the vertices along a space-filling curve, so most neighbours of a vertex are in its group). A
+// round of the team has two phases, each of one work item per group, which the threads take (Round_team,
+// Stealing_ranges.h: own range first, then what the others have not taken; so a thread the system does not
+// run holds nobody back unless it stopped in the middle of an item). First phase, the item of group g: the
+// offers of the vertices of g in the round (Virtual_source_walks::take()), those to vertices of g applied at
+// once, the others kept by group; second phase: the offers kept for g applied. An item reads the distance
+// of a vertex of another group only between the phases (the offers to it go unfiltered). A vertex not
+// taken keeps the least offer in a total order (distance first, then the virtual source, see better()),
+// and no offer depends on another of the same round: so neither the order of the round, nor which thread
+// runs an item, nor the number of threads changes a bit of the distances, labels and paths (take() lets
+// through every offer not above the vertex's distance, so an offer that ties with one applied before it
+// still meets it in better()). A round that thread 0 runs alone (VSP, the small rounds of PVSP, those of
+// a late team: see master()) applies every offer at once.
 //
 // Vertices of one round cannot lower each other (a heap, taking them one at a time, would let them): a
-// cost in accuracy that the benchmark measures (with buckets of half a short edge it is small). Every offer is
-// still the length of a path on the surface (the same walks make them), so the distances are never below
-// the exact ones.
+// cost in accuracy that the benchmark measures (with buckets of half a short edge it is small). Every
+// offer is still the length of a path on the surface (the same walks make them), so the distances are
+// never below the exact ones.
 class Virtual_source_rounds
 {
 public:
@@ -75,44 +82,16 @@ public:
     m_capture.reset();
     const auto start = [&](int team) {
       m_team = team;
+      m_sync.reset(team);
       m_capture.run([&] { setup(front); });
     };
     run_team(threads, start, [&](int t) {
-      Clock::time_point t0, t1, t2;
-      for(;;)
-      {
-        if(t == 0)
-        {
-          // small rounds on thread 0 alone (the team waits at the barrier), until a large one or the end
-          for(;;)
-          {
-            t0 = Clock::now();
-            m_capture.run([&] { next_round(front); });
-            t1 = Clock::now();
-            selection_seconds += seconds(t0, t1);
-            if(m_done || m_capture.failed() || (m_team > 1 && m_batch.size() >= min_parallel))
-              break;
-            m_capture.run([&] { take_alone(front); });
-            propagation_seconds += seconds(t1, Clock::now());
-          }
-        }
-        barrier();
-        if(m_done || m_capture.failed())
-          break;
-        m_capture.run([&] { compute(front, t); });
-        barrier();
-        if(t == 0)
-        {
-          t2 = Clock::now();
-          propagation_seconds += seconds(t1, t2);
-        }
-        m_capture.run([&] { apply(front, t); });
-        barrier();
-        if(t == 0)
-          merge_seconds += seconds(t2, Clock::now());
-      }
+      if(t == 0)
+        master(front);
+      else
+        worker(front, t);
     });
-    peak_bytes = m_batch.capacity() * sizeof(Index) + m_buckets.peak_bytes();
+    peak_bytes = (m_batch.capacity() + m_by_group.capacity()) * sizeof(Index) + m_buckets.peak_bytes();
     for(const Offers& o : m_offers)
       for(const std::vector<Pending>& b : o)
         peak_bytes += b.capacity() * sizeof(Pending);
@@ -133,30 +112,15 @@ private:
     Index label;
   };
 
-  typedef std::vector<std::vector<Pending>> Offers;  // the offers of one thread, by owner
+  typedef std::vector<std::vector<Pending>> Offers;  // the offers of the item of one group, by group
 
-  static double seconds(Clock::time_point a, Clock::time_point b)
-  {
-    return std::chrono::duration<double>(b - a).count();
-  }
+  static double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
-  static void barrier()
-  {
-#ifdef _OPENMP
-#pragma omp barrier
-#endif
-  }
+  // the group of vertex v
+  std::size_t group(Index v) const { return static_cast<std::size_t>(v >> owner_bits) & (m_groups - 1); }
 
-  // the thread that owns vertex v (with a mask when the team is a power of two: a division costs as
-  // much as a good part of an offer, and take() asks for the owner of every vertex it offers to)
-  Index owner(Index v) const
-  {
-    const Index block = v >> owner_bits;
-    return m_team_mask >= 0 ? (block & m_team_mask) : block % static_cast<Index>(m_team);
-  }
-
-  // The sinks of take(): one thread alone (it reads and lowers every vertex), or thread t of the team in
-  // the first phase (it lowers its own vertices, keeps the offers to the others for their owners).
+  // The sinks of take(): one thread alone (it reads and lowers every vertex), or the item of group g in
+  // the first phase (it lowers the vertices of g, keeps the offers to the others for their groups).
   template <class Front>
   struct Alone_sink
   {
@@ -168,28 +132,23 @@ private:
   };
 
   template <class Front>
-  struct Team_sink
+  struct Group_sink
   {
     Virtual_source_rounds& rounds;
     Front& front;
     Ring& ring;
     Offers& offers;
-    Index t;
-    bool reads(Index v) const { return rounds.owner(v) == t; }
+    std::size_t g;
+    bool reads(Index v) const { return rounds.group(v) == g; }
     void operator()(Index v, double d, const Vertex_source& s, Index lab)
     {
-      const Index o = rounds.owner(v);
-      if(o == t)
+      const std::size_t o = rounds.group(v);
+      if(o == g)
       {
         rounds.lower(front, ring, v, d, s, lab);
         return;
       }
-      Pending p;
-      p.s = s;
-      p.d = d;
-      p.v = v;
-      p.label = lab;
-      offers[static_cast<std::size_t>(o)].push_back(p);
+      offers[o].push_back(Pending{ s, d, v, lab });
     }
   };
 
@@ -215,13 +174,116 @@ private:
   void setup(Front& front)
   {
     m_buckets.start(*front.m_mesh, keep_width, m_team, front.m_seeded);
-    m_team_mask = (m_team & (m_team - 1)) == 0 ? static_cast<Index>(m_team - 1) : Index(-1);
-    m_offers.resize(static_cast<std::size_t>(m_team));
+    // a power of two, 8 groups per thread (at most 256): items small enough to share a round evenly
+    for(m_groups = 1; m_team > 1 && m_groups < 8 * static_cast<std::size_t>(m_team) && m_groups < 256;)
+      m_groups *= 2;
+    m_offers.resize(m_groups);
     for(Offers& o : m_offers)
-      o.resize(static_cast<std::size_t>(m_team));
+    {
+      o.resize(m_groups);
+      for(std::vector<Pending>& b : o)
+        b.clear();
+    }
+    m_sent.assign(m_groups, 0);
+    m_ranges.resize(static_cast<std::size_t>(m_team));
+    m_round_number = 0;
+    m_late.reset();
     front.m_seeded.clear();
     m_remaining_targets = front.mark_targets(m_is_target);
     m_cutoff = front.m_settings.limit + m_buckets.span();
+  }
+
+  // Thread 0: chooses the rounds, runs the small ones alone, and those of a late team (Late_team in
+  // Round_team.h), publishes the phases of the others and takes its share of their items.
+  template <class Front>
+  void master(Front& front)
+  {
+    for(;;)
+    {
+      const Clock::time_point t0 = Clock::now();
+      m_capture.run([&] { next_round(front); });
+      const Clock::time_point t1 = Clock::now();
+      selection_seconds += seconds(t0, t1);
+      if(m_done || m_capture.failed())
+        break;
+      if(m_team == 1 || m_batch.size() < min_parallel || m_late.alone(t1))
+      {
+        m_capture.run([&] { take_alone(front); });
+        propagation_seconds += seconds(t1, Clock::now());
+        continue;
+      }
+      ++parallel_rounds;
+      sort_by_group();
+      double wait = run_phase(front, m_round_number + 1 + (m_round_number & 1));  // odd: computing
+      const Clock::time_point t2 = Clock::now();
+      propagation_seconds += seconds(t1, t2);
+      if(std::find(m_sent.begin(), m_sent.end(), 1) != m_sent.end())
+        wait += run_phase(front, m_round_number + 1);  // even: applying the offers kept
+      const Clock::time_point t3 = Clock::now();
+      merge_seconds += seconds(t2, t3);
+      m_late.record(seconds(t1, t3), wait, t3);
+    }
+    m_sync.finish();
+  }
+
+  // thread 0: publishes the phase `round` (one item per group), takes its items, waits for the others';
+  // returns the seconds it waited
+  template <class Front>
+  double run_phase(Front& front, std::uint32_t round)
+  {
+    CGAL_assertion(round > m_round_number);  // (at most 2 per round of 64 vertices or more: no wrap)
+    m_round_number = round;
+    call_round_team_test_hook(-1);
+    const std::size_t team = static_cast<std::size_t>(m_team);
+    for(std::size_t t = 0; t < team; ++t)
+      m_ranges[t].set(t * m_groups / team, (t + 1) * m_groups / team, round);
+    m_sync.publish(round, m_groups, std::uint32_t(1) << (Stealing_range::ROUND_BITS - 1));
+    take_items(front, 0, round);
+    return m_sync.wait_for_items();
+  }
+
+  // threads 1 ... T-1: the items they can take of each phase published
+  template <class Front>
+  void worker(Front& front, int t)
+  {
+    std::uint32_t seen = 0;
+    for(;;)
+    {
+      std::uint32_t round = m_sync.wait_for_round(seen);
+      if(round == 0)
+        return;
+      round = m_sync.start_taking(t, round);
+      take_items(front, t, round);
+      m_sync.stop_taking(t);
+      seen = round;
+    }
+  }
+
+  template <class Front>
+  void take_items(Front& front, int t, std::uint32_t round)
+  {
+    m_ranges.for_each_taken(static_cast<std::size_t>(t), static_cast<std::size_t>(m_team), round, [&](std::size_t g) {
+      call_round_team_test_hook(t);
+      if(round & 1)
+        m_capture.run([&] { compute(front, t, g); });
+      else
+        m_capture.run([&] { apply(front, t, g); });
+      m_sync.item_finished(t);
+    });
+  }
+
+  // thread 0: the vertices of the round by group (each group in the order of the round)
+  void sort_by_group()
+  {
+    m_group_begin.assign(m_groups + 1, 0);
+    for(Index v : m_batch)
+      ++m_group_begin[group(v) + 1];
+    for(std::size_t g = 0; g < m_groups; ++g)
+      m_group_begin[g + 1] += m_group_begin[g];
+    m_group_fill.assign(m_group_begin.begin(), m_group_begin.end() - 1);
+    m_by_group.resize(m_batch.size());
+    for(Index v : m_batch)
+      m_by_group[m_group_fill[group(v)]++] = v;
   }
 
   // thread 0: the vertices of the next round (m_batch, taken), or m_done
@@ -255,8 +317,6 @@ private:
       return;
     }
     ++rounds;
-    if(m_team > 1 && m_batch.size() >= min_parallel)
-      ++parallel_rounds;
     front.m_taken_count += m_batch.size();
     if(front.m_incremental)
       front.m_touched.insert(front.m_touched.end(), m_batch.begin(), m_batch.end());
@@ -286,45 +346,44 @@ private:
     });
   }
 
-  // thread t, first phase: the offers of its vertices of the round; those to its own vertices applied
+  // thread t, first phase, the item of group g: the offers of its vertices of the round; those to its own
+  // vertices applied, the others kept
   template <class Front>
-  void compute(Front& front, int t)
+  void compute(Front& front, int t, std::size_t g)
   {
-    Offers& offers = m_offers[static_cast<std::size_t>(t)];
+    Offers& offers = m_offers[g];
     for(std::vector<Pending>& b : offers)
       b.clear();
-    Team_sink<Front> sink{ *this, front, m_buckets.ring(t), offers, static_cast<Index>(t) };
-    take_batch(front, sink, static_cast<Index>(t));
+    Group_sink<Front> sink{ *this, front, m_buckets.ring(t), offers, g };
+    take_list(front, sink, m_by_group.data() + m_group_begin[g], m_group_begin[g + 1] - m_group_begin[g]);
+    m_sent[g] = std::any_of(offers.begin(), offers.end(), [](const std::vector<Pending>& b) { return !b.empty(); });
   }
 
-  // The vertices of the round (those of owner t; all if t is NO_INDEX) are taken in order, each a few
-  // places after asking the memory for its data (Virtual_source_walks::prefetch()): a pipeline of three
-  // stages, 12, 8 and 4 vertices ahead (on 1M-vertex meshes 12-15% faster than without).
+  // The vertices list[0 .. n) are taken in order, each a few places after asking the memory for its data
+  // (Virtual_source_walks::prefetch()): a pipeline of three stages, 12, 8 and 4 vertices ahead (on
+  // 1M-vertex meshes 12-15% faster than without).
   template <class Front, class Sink>
-  void take_batch(const Front& front, Sink& sink, Index t) const
+  static void take_list(const Front& front, Sink& sink, const Index* list, std::size_t n)
   {
-    const std::size_t n = m_batch.size();
-    const auto mine = [&](std::size_t k) { return k < n && (t == NO_INDEX || owner(m_batch[k]) == t); };
     for(std::size_t k = 0; k < n; ++k)
     {
-      if(mine(k + 12))
-        front.prefetch(m_batch[k + 12], 2);
-      if(mine(k + 8))
-        front.prefetch(m_batch[k + 8], 1);
-      if(mine(k + 4))
-        front.prefetch(m_batch[k + 4], 0);
-      if(mine(k))
-        front.take(m_batch[k], sink);
+      if(k + 12 < n)
+        front.prefetch(list[k + 12], 2);
+      if(k + 8 < n)
+        front.prefetch(list[k + 8], 1);
+      if(k + 4 < n)
+        front.prefetch(list[k + 4], 0);
+      front.take(list[k], sink);
     }
   }
 
-  // thread t: the offers of every thread to the vertices it owns
+  // thread t, second phase, the item of group g: the offers kept for the vertices of g
   template <class Front>
-  void apply(Front& front, int t)
+  void apply(Front& front, int t, std::size_t g)
   {
     Ring& ring = m_buckets.ring(t);
     for(const Offers& from : m_offers)
-      for(const Pending& p : from[static_cast<std::size_t>(t)])
+      for(const Pending& p : from[g])
         lower(front, ring, p.v, p.d, p.s, p.label);
   }
 
@@ -333,7 +392,7 @@ private:
   void take_alone(Front& front)
   {
     Alone_sink<Front> sink{ *this, front, m_buckets.ring(0) };
-    take_batch(front, sink, NO_INDEX);
+    take_list(front, sink, m_batch.data(), m_batch.size());
   }
 
   // the vertex v (not taken) keeps the offer (d, s) if it is better than its own
@@ -359,23 +418,28 @@ private:
     m_buckets.push(ring, v, d);
   }
 
-  // the vertices a thread owns come in blocks of 2^owner_bits; the least round the team runs (smaller
-  // ones cost less than the barriers: with 2 threads, 64 against 256 took the fastest of alternated first
-  // runs of pvsp from 0.569 to 0.500 s (then 0.431 to 0.417 s) on a 1M-vertex remeshing and from 0.079 to
-  // 0.069 s at 173K; no change beyond noise on a 1M Loop subdivision and at 156K; 32 was no better)
+  // the groups are made of blocks of 2^owner_bits vertices; the least round the team runs (smaller ones
+  // cost more than they share; measured with the former barriers, see performance.txt)
   static constexpr int owner_bits = 9;
   static constexpr std::size_t min_parallel = 64;
 
   Virtual_source_buckets m_buckets;  // the vertices waiting, a ring of buckets per thread
-  std::vector<Offers> m_offers;      // per thread
-  std::vector<Index> m_batch;  // the vertices of the round
+  std::vector<Offers> m_offers;      // per group
+  std::vector<unsigned char> m_sent; // per group: whether its item kept offers for other groups
+  std::vector<Index> m_batch;        // the vertices of the round
+  std::vector<Index> m_by_group;     // the same by group, group g at [m_group_begin[g], m_group_begin[g + 1])
+  std::vector<std::size_t> m_group_begin, m_group_fill;
   std::vector<unsigned char> m_is_target;
   std::size_t m_remaining_targets = 0;
   double m_cutoff = 0.;
   int m_team = 1;
-  Index m_team_mask = 0;  // m_team - 1 if m_team is a power of two, otherwise -1
+  std::size_t m_groups = 1;          // a power of two
   bool m_done = false;
   Exception_capture m_capture;  // an exception of the team, thrown again after the region
+  Round_team m_sync;                 // the team (see master())
+  Stealing_ranges m_ranges;
+  Late_team m_late;
+  std::uint32_t m_round_number = 0;  // of the last phase published
 };
 
 } // namespace internal
