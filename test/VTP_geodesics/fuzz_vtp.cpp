@@ -33,12 +33,19 @@
 //   vertex to the source whose length is the distance (1e-9 * scale; checked for VTP too), and for VSP
 //   with OpenMP the same bits on 2 and 3 threads (PVSP); from a point inside a face chosen by the input
 //   too, against VTP from that point.
+// - the paths from every vertex as the source (VTP, AVTP, VSP with one and two virtual sources per vertex):
+//   the path of every reached vertex has the length of its distance (1e-9 * scale), no path query throws.
+//   (Path defects show from a few sources of a mesh only: this finds them from far fewer inputs.)
+// The inputs on which these checks once failed (minimised) are kept in fuzz_corpus/ and replayed by the
+// ctest test fuzz_replay (vtp_fuzz_replay, fuzz_replay.cpp: the same checks without libFuzzer, built by
+// every build); a new failing input goes there once the defect is fixed (`vtp_fuzz -minimize_crash=1
+// -runs=3000 -exact_artifact_path=OUT INPUT` shrinks it first).
 // With the environment variable VTP_FUZZ_SKIP_DEGENERATE=1, meshes with a degenerate triangle (zero area
 // or zero-length edge) are skipped.
 //
 // Build and run (see README.md, section Robustness):
-//   cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-//         -DVTP_GEODESICS_BUILD_FUZZER=ON
+//   cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo
+//         -DVTP_GEODESICS_BUILD_FUZZER=ON      (one command)
 //   cmake --build build-fuzz --target vtp_fuzz
 //   mkdir -p fuzz-corpus && ./build-fuzz/bin/vtp_fuzz fuzz-corpus -max_total_time=600
 
@@ -441,6 +448,52 @@ void check_approximations(const Surface_mesh& mesh, Vertex_index s, const Source
   }
 }
 
+// The paths from every vertex as the source (see the comment at the top): for VTP, AVTP (lambda 0.5) and VSP with
+// one and two virtual sources per vertex, the path of every reached vertex starts at it and has the length of
+// its distance (1e-9 * scale), and no path query throws.
+void check_paths_from_every_vertex(const Surface_mesh& mesh)
+{
+  Solver solver(mesh);
+  for(Vertex_index s : vertices(mesh))
+    for(int method = 0; method < 4; ++method)
+    {
+      const std::string what = std::string("paths from every vertex, ")
+                               + (method == 0 ? "VTP" : method == 1 ? "AVTP (lambda 0.5)"
+                                                      : std::to_string(method - 1) + " virtual source(s) per vertex")
+                               + ", from vertex " + std::to_string(std::size_t(s)) + ": ";
+      const std::vector<double> d =
+          method == 0   ? run(solver, s, VP::record_paths(true))
+          : method == 1 ? run(solver, s, VP::lambda(0.5).record_paths(true))
+                        : run(solver, s, VP::virtual_sources(true).virtual_sources_per_vertex(method - 1).record_paths(true));
+      double scale = 0.;
+      for(double x : d)
+        if(std::isfinite(x))
+          scale = (std::max)(scale, x);
+      std::vector<Point_3> path;
+      for(Vertex_index v : vertices(mesh))
+      {
+        if(!std::isfinite(d[v]))
+          continue;
+        const std::string at = "vertex " + std::to_string(std::size_t(v));
+        path.clear();
+        try
+        {
+          solver.shortest_path_points(v, std::back_inserter(path));
+        }
+        catch(const std::exception& e)
+        {
+          fail(mesh, s, d, nullptr, what + "no path: " + e.what() + " at " + at);
+        }
+        double path_length = 0.;
+        for(std::size_t k = 1; k < path.size(); ++k)
+          path_length += std::sqrt(CGAL::squared_distance(path[k - 1], path[k]));
+        if(path.empty() || path.front() != mesh.point(v) || std::abs(path_length - d[v]) > 1e-9 * (std::max)(scale, 1e-300))
+          fail(mesh, s, d, nullptr, what + "the path does not start at the vertex or its length " + std::to_string(path_length)
+                                      + " is not the distance at " + at);
+      }
+    }
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
@@ -562,8 +615,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   }
 
-  // the approximations, from the source vertex and from a point inside a face
+  // the approximations, from the source vertex and from a point inside a face; the paths from every vertex
   check_approximations(mesh, s, s, d, tolerance, "from the vertex");
+  check_paths_from_every_vertex(mesh);
   if(num_faces(mesh) > 0)
   {
     const unsigned a = 1u + bytes.next() % 8u, b = 1u + bytes.next() % 8u, f = bytes.next() % num_faces(mesh);

@@ -1,8 +1,8 @@
 // vtp_stress: randomized cross-check of VTP (and PVTP) against CGAL::Surface_mesh_shortest_path, and of
-// virtual source propagation (VSP, PVSP) against VTP.
+// AVTP (PAVTP) and virtual source propagation (VSP, PVSP) against VTP; the paths of every method.
 //
 //   vtp_stress [--seed S] [--cases N] [--case K] [--min-vertices v] [--max-vertices V]
-//              [--sources P] [--methods vtp,pvtp,vsp,pvsp] [--timeout T] [--dump DIR] [--verbose]
+//              [--sources P] [--methods vtp,pvtp,avtp,pavtp,vsp,pvsp] [--timeout T] [--dump DIR] [--verbose]
 //
 // Case k of a run seeded with S draws its own mesh and sources from case_seed(S, k), so any case can be
 // replayed alone with `--seed S --case k`. The meshes (see vtp_random_meshes.h) are closed surfaces
@@ -28,6 +28,13 @@
 // run: the runs where they are not are counted), targets stop the run with the full run's distances, paths
 // have the length of the distance, and two sources are never below the exact distance to the source of each
 // vertex's label.
+// AVTP and PAVTP (windows reset every half mean edge, PAVTP on 2 threads) must never be below VTP by more than
+// the tolerance and reach the same vertices.
+// Paths, for every method (vtp, pvtp, avtp, pavtp, vsp, pvsp, vsp2, pvsp2; the parallel ones on 2 threads), from
+// a run recording them (check_every_path()): the path of every reached vertex starts at the vertex, ends at
+// the source and has the length of the vertex's distance within 1e-9 of it, and no path query throws; the
+// summary counts, per method, the runs, the paths, the queries that threw, the paths of another length and
+// the largest relative difference.
 // Any failure is printed with its seed and case (and whether CGAL, run on the midpoint subdivision of the
 // mesh, agrees with the method: CGAL itself errs on some meshes); the exit code is then 1. A case that runs longer than
 // --timeout seconds (default 120) is reported and ends the program with exit code 3. A crash prints the
@@ -82,6 +89,8 @@ struct Settings
   std::size_t sources = 2;
   bool vtp = true;
   bool pvtp = false;
+  bool avtp = true;
+  bool pavtp = false;
   bool vsp = true;
   bool pvsp = false;
   unsigned timeout = 120;
@@ -359,6 +368,22 @@ void dump_mesh(const Settings& settings, std::size_t index, const Surface_mesh& 
     std::cout << "  mesh written to " << file << std::endl;
 }
 
+// The methods whose every path is checked (check_every_path()), in the order of the summary.
+enum Path_method { PATHS_VTP, PATHS_PVTP, PATHS_AVTP, PATHS_PAVTP, PATHS_VSP, PATHS_PVSP, PATHS_VSP2, PATHS_PVSP2,
+                   NUMBER_OF_PATH_METHODS };
+const char* const path_method_name[NUMBER_OF_PATH_METHODS] = { "vtp", "pvtp", "avtp", "pavtp",
+                                                               "vsp", "pvsp", "vsp2", "pvsp2" };
+// the reset period of AVTP and PAVTP: half the mean edge (many resets on these small meshes)
+const double AVTP_LAMBDA = 0.5;
+// a path's length is its vertex's distance within this share of it
+const double PATH_TOLERANCE = 1e-9;
+
+struct Path_counts
+{
+  std::size_t runs = 0, paths = 0, throwing = 0, wrong = 0;
+  double worst = 0.;  // the largest |length - d| / d
+};
+
 struct Totals
 {
   std::size_t cases = 0, sources = 0, comparisons = 0, failures = 0, vertices = 0, query_checks = 0;
@@ -366,7 +391,10 @@ struct Totals
   double worst_vs_cgal = 0., worst_parallel = 0.;
   double vsp_worst_below = 0., vsp_worst_relative = 0.;  // (d_vtp - d_vsp) and |d_vsp - d_vtp| / d_vtp, largest
   std::string vsp_worst_relative_where;                  // the case, source and vertex of the latter
-  double cgal_seconds = 0., vtp_seconds = 0., pvtp_seconds = 0., vsp_seconds = 0.;
+  double cgal_seconds = 0., vtp_seconds = 0., pvtp_seconds = 0., vsp_seconds = 0., avtp_seconds = 0.;
+  std::size_t avtp_runs = 0;
+  double avtp_worst_below = 0.;  // the largest (d_vtp - d_avtp) / max distance
+  Path_counts paths[NUMBER_OF_PATH_METHODS];
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t0)
@@ -419,6 +447,54 @@ std::string check_paths(const std::string& name, const Surface_mesh& mesh,
   return std::string();
 }
 
+// Every path of the run of method m just made by `solver` from s, recording the paths: the path of every
+// reached vertex starts at the vertex, ends at the source and has the length of the vertex's distance d within
+// PATH_TOLERANCE * d; no path query throws. Counted in totals.paths[m]. Returns a description of the first
+// failure, or an empty string.
+std::string check_every_path(Path_method m, const Surface_mesh& mesh, Geodesic_distance_solver<Surface_mesh>& solver,
+                             Vertex_index s, Totals& totals)
+{
+  const std::vector<double> d = solver.distances();
+  Path_counts& counts = totals.paths[m];
+  ++counts.runs;
+  std::ostringstream failure;
+  failure.precision(17);
+  std::vector<vtp_test::Point_3> path;
+  for(std::size_t i = 0; i < d.size(); ++i)
+  {
+    if(!std::isfinite(d[i]))
+      continue;
+    const Vertex_index v(static_cast<Surface_mesh::size_type>(i));
+    ++counts.paths;
+    path.clear();
+    try
+    {
+      solver.shortest_path_points(v, std::back_inserter(path));
+    }
+    catch(const std::exception& e)
+    {
+      ++counts.throwing;
+      if(failure.str().empty())
+        failure << path_method_name[m] << " path from vertex " << i << " (distance " << d[i] << "): " << e.what();
+      continue;
+    }
+    double length = 0.;
+    for(std::size_t k = 1; k < path.size(); ++k)
+      length += std::sqrt(CGAL::squared_distance(path[k - 1], path[k]));
+    const double error = std::abs(length - d[i]);
+    if(d[i] > 0.)
+      counts.worst = (std::max)(counts.worst, error / d[i]);
+    if(path.empty() || path.front() != mesh.point(v) || path.back() != mesh.point(s) || !(error <= PATH_TOLERANCE * d[i]))
+    {
+      ++counts.wrong;
+      if(failure.str().empty())
+        failure << path_method_name[m] << " path from vertex " << i << ": " << path.size() << " points, length "
+                << length << ", distance " << d[i] << " (relative difference " << error / d[i] << ")";
+    }
+  }
+  return failure.str();
+}
+
 // The queries beyond one field, checked against the full run `full` from s (no reference needed): a distance
 // limit (the full run inside, +infinity outside), paths (length = distance, from the vertex to the source),
 // and two sources, s and s2 (the minimum of the single runs `full` and `second`, labels achieving it). Returns a
@@ -450,7 +526,9 @@ std::string check_queries(const Surface_mesh& mesh, Geodesic_distance_solver<Sur
   // paths of a few vertices
   ++totals.query_checks;
   solver.compute(vtp_test::Discard_map(), s, VP::record_paths(true));
-  const std::string path_failure = check_paths("", mesh, solver, s, full, tolerance);
+  std::string path_failure = check_every_path(PATHS_VTP, mesh, solver, s, totals);
+  if(path_failure.empty())
+    path_failure = check_paths("", mesh, solver, s, full, tolerance);
   if(!path_failure.empty())
     return path_failure;
   // two sources
@@ -522,12 +600,24 @@ std::string check_virtual_sources(const Settings& settings, const std::string& w
     }
     if(!failure.str().empty())
       return failure.str();
+    // every path (and a few again, with the tolerance of the distances)
+    ++totals.query_checks;
+    solver.compute(vtp_test::Discard_map(), s, vsp.record_paths(true));
+    std::string path_failure = check_every_path(per_vertex == 1 ? PATHS_VSP : PATHS_VSP2, mesh, solver, s, totals);
+    if(path_failure.empty())
+      path_failure = check_paths(name + " ", mesh, solver, s, d, tolerance);
+    if(!path_failure.empty())
+      return path_failure;
 #ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+    // (the run on 2 threads records the paths, which must not change its bits, and its paths are checked)
     if(settings.pvsp)
       for(int threads : { 2, 3 })
       {
         t0 = std::chrono::steady_clock::now();
-        solver.compute<CGAL::Parallel_tag>(vtp_test::Discard_map(), s, vsp.number_of_threads(threads));
+        if(threads == 2)
+          solver.compute<CGAL::Parallel_tag>(vtp_test::Discard_map(), s, vsp.number_of_threads(threads).record_paths(true));
+        else
+          solver.compute<CGAL::Parallel_tag>(vtp_test::Discard_map(), s, vsp.number_of_threads(threads));
         totals.vsp_seconds += seconds_since(t0);
         ++totals.vsp_runs;
         const std::vector<double>& dp = solver.distances();
@@ -538,6 +628,12 @@ std::string check_virtual_sources(const Settings& settings, const std::string& w
                     << " " << d[i] << " (not the same bits)";
             return failure.str();
           }
+        if(threads == 2)
+        {
+          path_failure = check_every_path(per_vertex == 1 ? PATHS_PVSP : PATHS_PVSP2, mesh, solver, s, totals);
+          if(!path_failure.empty())
+            return path_failure;
+        }
       }
 #else
     (void)settings;
@@ -579,12 +675,6 @@ std::string check_virtual_sources(const Settings& settings, const std::string& w
                 << ", full run " << d[std::size_t(targets[j])];
         return failure.str();
       }
-    // paths of a few vertices: from the vertex to the source, of the length of the distance
-    ++totals.query_checks;
-    solver.compute(vtp_test::Discard_map(), s, vsp.record_paths(true));
-    const std::string path_failure = check_paths(name + " ", mesh, solver, s, d, tolerance);
-    if(!path_failure.empty())
-      return path_failure;
     // two sources: labels in range, sources at 0 with their own label, never below the exact distance to
     // the labelled source, and reached where one of the sources reaches
     ++totals.query_checks;
@@ -716,7 +806,45 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
         std::cout << "vtp_stress: MISMATCH " << where << ": " << failure << "; " << reproduce << std::endl;
       }
     }
+    auto report = [&](const std::string& failure) {
+      if(failure.empty())
+        return;
+      ok = false;
+      std::cout << "vtp_stress: MISMATCH " << where << ": " << failure << "; " << reproduce << std::endl;
+    };
+    // AVTP (PAVTP): windows reset every AVTP_LAMBDA mean edges; never below VTP, the same vertices reached, and
+    // every path of the length of the distance
+    auto check_avtp = [&](auto tag, Path_method m) {
+      typedef decltype(tag) Tag;
+      namespace VP = CGAL::VTP_geodesics::parameters;
+      set_current_case(where + ", " + path_method_name[m] + "; " + reproduce);
+      t0 = std::chrono::steady_clock::now();
+      solver.compute<Tag>(vtp_test::Discard_map(), s, VP::lambda(AVTP_LAMBDA).number_of_threads(2).record_paths(true));
+      totals.avtp_seconds += seconds_since(t0);
+      ++totals.avtp_runs;
+      const std::vector<double>& d = solver.distances();
+      const double max_d = largest_finite(sequential);
+      std::ostringstream failure;
+      failure.precision(17);
+      for(std::size_t i = 0; i < d.size() && failure.str().empty(); ++i)
+      {
+        if(std::isnan(d[i]) || std::isfinite(d[i]) != std::isfinite(sequential[i]))
+          failure << path_method_name[m] << ": vertex " << i << " at " << d[i] << ", vtp " << sequential[i];
+        else if(std::isfinite(d[i]))
+        {
+          totals.avtp_worst_below = (std::max)(totals.avtp_worst_below, (sequential[i] - d[i]) / (max_d > 0. ? max_d : 1.));
+          if(d[i] < sequential[i] - TOLERANCE * (max_d > 0. ? max_d : 1.))
+            failure << path_method_name[m] << ": vertex " << i << " at " << d[i] << ", below the exact distance "
+                    << sequential[i];
+        }
+      }
+      report(failure.str().empty() ? check_every_path(m, c.mesh, solver, s, totals) : failure.str());
+    };
+    if(settings.avtp)
+      check_avtp(CGAL::Sequential_tag(), PATHS_AVTP);
 #ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+    if(settings.pavtp)
+      check_avtp(CGAL::Parallel_tag(), PATHS_PAVTP);
     if(settings.pvtp)
     {
       set_current_case(where + ", pvtp; " + reproduce);
@@ -726,6 +854,12 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
       const std::vector<double> parallel = solver.distances();
       check("pvtp", parallel, reference, "CGAL");
       check("pvtp", parallel, sequential, "vtp");
+      // its paths, from a run that records them (with the same distances)
+      set_current_case(where + ", pvtp paths; " + reproduce);
+      solver.compute<CGAL::Parallel_tag>(vtp_test::Discard_map(), s,
+                                         CGAL::VTP_geodesics::parameters::number_of_threads(2).record_paths(true));
+      check("pvtp (recording paths)", solver.distances(), parallel, "pvtp");
+      report(check_every_path(PATHS_PVTP, c.mesh, solver, s, totals));
     }
 #endif
   }
@@ -747,18 +881,21 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
 void usage(std::ostream& os)
 {
   os << "usage: vtp_stress [--seed S] [--cases N] [--case K] [--min-vertices v] [--max-vertices V]\n"
-        "                  [--sources P] [--methods vtp,pvtp,vsp,pvsp] [--timeout T] [--dump DIR] [--verbose]\n"
+        "                  [--sources P] [--methods vtp,pvtp,avtp,pavtp,vsp,pvsp] [--timeout T] [--dump DIR]\n"
+        "                  [--verbose]\n"
         "\n"
         "Compares VTP (and PVTP) with CGAL::Surface_mesh_shortest_path on random meshes, and checks\n"
-        "virtual source propagation against VTP (never below it; PVSP on 2 and 3 threads = VSP, bit for bit).\n"
+        "AVTP and virtual source propagation against VTP (never below it; PVSP on 2 and 3 threads = VSP, bit\n"
+        "for bit); the path of every vertex, for every method, has the length of its distance.\n"
         "  --seed S          seed of the run (default 1)\n"
         "  --cases N         number of cases, 0 .. N-1 (default 100)\n"
         "  --case K          run case K only (to replay a failure)\n"
         "  --min-vertices v  smallest number of vertices drawn (default 4)\n"
         "  --max-vertices V  largest number of vertices drawn (default 200)\n"
         "  --sources P       at most P sources per mesh (default 2)\n"
-        "  --methods M       comma-separated among vtp, pvtp, vsp, pvsp (default: vtp and vsp, and pvtp and\n"
-        "                    pvsp if built with OpenMP; pvsp needs vsp)\n"
+        "  --methods M       comma-separated among vtp, pvtp, avtp, pavtp, vsp, pvsp (default: vtp, avtp and\n"
+        "                    vsp, and pvtp, pavtp and pvsp if built with OpenMP; pvsp needs vsp; vsp and pvsp\n"
+        "                    check one and two virtual sources per vertex)\n"
         "  --timeout T       seconds allowed per case (default 120; 0: none)\n"
         "  --dump DIR        write the mesh of each failing case to DIR/vtp_stress_<seed>_<case>.off\n"
         "  --verbose         print every case\n"
@@ -785,21 +922,22 @@ const vtp_support::Option_table<Settings>& option_table()
     { "--verbose", nullptr, nullptr, [](Settings& s, S, S) { s.verbose = true; } },
     { "--methods", "M", nullptr,
       [](Settings& s, S, S v) {
-        s.vtp = s.pvtp = s.vsp = s.pvsp = false;
+        s.vtp = s.pvtp = s.avtp = s.pavtp = s.vsp = s.pvsp = false;
         for(const std::string& m : vtp_support::split(v, ','))
         {
           if(m == "vtp") s.vtp = true;
+          else if(m == "avtp") s.avtp = true;
           else if(m == "vsp") s.vsp = true;
-          else if(m == "pvtp" || m == "pvsp")
+          else if(m == "pvtp" || m == "pavtp" || m == "pvsp")
           {
 #ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
-            (m == "pvtp" ? s.pvtp : s.pvsp) = true;
+            (m == "pvtp" ? s.pvtp : m == "pavtp" ? s.pavtp : s.pvsp) = true;
 #else
             throw vtp_support::Tool_error(m + " needs OpenMP, and this program was built without it");
 #endif
           }
           else
-            throw vtp_support::Tool_error("unknown method '" + m + "' (expected vtp, pvtp, vsp or pvsp)");
+            throw vtp_support::Tool_error("unknown method '" + m + "' (expected vtp, pvtp, avtp, pavtp, vsp or pvsp)");
         }
         if(s.pvsp && !s.vsp)
           throw vtp_support::Tool_error("pvsp is checked against vsp: list vsp too");
@@ -812,7 +950,7 @@ Settings parse(int argc, char** argv)
 {
   Settings s;
 #ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
-  s.pvtp = s.pvsp = true;
+  s.pvtp = s.pavtp = s.pvsp = true;
 #endif
   vtp_support::parse_command_line(argc, argv, option_table(), s, [](Settings&, const std::string& a) {
     throw vtp_support::Tool_error("unknown argument '" + a + "' (see --help)");
@@ -826,7 +964,7 @@ Settings parse(int argc, char** argv)
     s.min_vertices = 4;
   if(s.max_vertices < s.min_vertices)
     throw vtp_support::Tool_error("--max-vertices must be >= --min-vertices (and >= 4)");
-  if(!s.vtp && !s.pvtp && !s.vsp)
+  if(!s.vtp && !s.pvtp && !s.avtp && !s.pavtp && !s.vsp)
     throw vtp_support::Tool_error("no method selected");
   return s;
 }
@@ -874,11 +1012,15 @@ int main(int argc, char** argv)
   std::cout << "vtp_stress: seed " << settings.seed << ", " << totals.cases << " cases (" << totals.vertices
             << " vertices), " << totals.sources << " sources, " << totals.comparisons << " comparisons, "
             << totals.query_checks << " query checks (limit, targets, paths, two sources), methods"
-            << (settings.vtp ? " vtp" : "") << (settings.pvtp ? " pvtp" : "")
-            << (settings.vsp ? " vsp" : "") << (settings.pvsp ? " pvsp" : "") << ": " << totals.failures
+            << (settings.vtp ? " vtp" : "") << (settings.pvtp ? " pvtp" : "") << (settings.avtp ? " avtp" : "")
+            << (settings.pavtp ? " pavtp" : "") << (settings.vsp ? " vsp" : "") << (settings.pvsp ? " pvsp" : "")
+            << ": " << totals.failures
             << " failing cases; largest |d - d_cgal| / max distance " << totals.worst_vs_cgal;
   if(settings.pvtp)
     std::cout << ", largest |d_pvtp - d_vtp| / max distance " << totals.worst_parallel;
+  if(settings.avtp || settings.pavtp)
+    std::cout << "; avtp, pavtp (lambda " << AVTP_LAMBDA << "): " << totals.avtp_runs
+              << " runs, largest (d_vtp - d) / max distance " << totals.avtp_worst_below << " (below exact if positive)";
   if(settings.vsp)
     std::cout << "; vsp" << (settings.pvsp ? ", pvsp" : "") << ": " << totals.vsp_runs
               << " runs, largest (d_vtp - d) / max distance " << totals.vsp_worst_below
@@ -888,9 +1030,21 @@ int main(int argc, char** argv)
   std::cout << "; " << seconds << " s (CGAL " << totals.cgal_seconds << " s, vtp " << totals.vtp_seconds << " s";
   if(settings.pvtp)
     std::cout << ", pvtp " << totals.pvtp_seconds << " s";
+  if(settings.avtp || settings.pavtp)
+    std::cout << ", avtp and pavtp " << totals.avtp_seconds << " s";
   if(settings.vsp)
     std::cout << ", vsp " << totals.vsp_seconds << " s";
   std::cout << ")" << std::endl;
+  // the paths, per method: every reached vertex of every run recording them
+  for(int m = 0; m < NUMBER_OF_PATH_METHODS; ++m)
+  {
+    const Path_counts& p = totals.paths[m];
+    if(p.runs == 0)
+      continue;
+    std::cout << "vtp_stress: paths of " << path_method_name[m] << ": " << p.runs << " runs, " << p.paths << " paths, "
+              << p.throwing << " queries throwing, " << p.wrong << " not of the length of the distance (within "
+              << PATH_TOLERANCE << " of it), largest |length - d| / d " << p.worst << std::endl;
+  }
   if(settings.vsp && !totals.vsp_worst_relative_where.empty())
     std::cout << "vtp_stress: the largest relative error of vsp: " << totals.vsp_worst_relative_where << std::endl;
   return totals.failures == 0 ? 0 : 1;

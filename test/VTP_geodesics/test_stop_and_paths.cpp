@@ -528,6 +528,48 @@ TEST(Paths, through_a_vertex_and_zero_length_edges)
     }
 }
 
+TEST(Paths, through_coincident_vertices_that_lower_each_other_by_rounding)
+{
+  // found by the fuzzer (fuzz_vtp.cpp; slivers 8 times longer than wide, minimised by hand): vertices 1 and 5
+  // coincide (a zero-length edge between two faces of zero area). Vertex 5 got its distance from a window
+  // whose line reaches it at the point of vertex 1 (through a face of zero area between them), one ulp below
+  // the distance of vertex 1; then vertex 1 got that distance from vertex 5, along the zero-length edge: each
+  // one's record led through the other, and the trace-back went round until it lost the line (the query
+  // threw "the geodesic path could not be traced back"). An offer within rounding of the recorded one no
+  // longer replaces it (Path_record::tie).
+  Polygon_soup soup;
+  soup.points = {Point_3(0.15625, 1.5, 0.), Point_3(0.21875, 1.5, 1.), Point_3(0.34375, 1.5, -0.25),
+                 Point_3(0.53125, 0.5, 0.75), Point_3(0.0625, 2.5, 0.), Point_3(0.21875, 1.5, 1.),
+                 Point_3(0.3125, 2.25, -0.25), Point_3(0.4375, 1.75, 0.), Point_3(0.125, 2.5, 0.),
+                 Point_3(0.21875, 3.5, 0.25), Point_3(0.4375, 3.5, 0.25), Point_3(0.46875, 2.5, 0.5),
+                 Point_3(0.21875, 4.5, -0.5), Point_3(0.3125, 3.75, 0.), Point_3(0.5, 3.75, 1.),
+                 Point_3(0.6875, 3.75, 0.5), Point_3(0.3125, 5.25, -0.25), Point_3(0.3125, 5.25, 1.),
+                 Point_3(0.5625, 4.5, 0.5), Point_3(0.5625, 4.75, 0.25)};
+  soup.polygons = {{0, 1, 5},    {0, 5, 4},    {1, 2, 6},    {1, 6, 5},    {2, 3, 6},   {3, 7, 6},
+                   {4, 5, 8},    {5, 9, 8},    {5, 6, 9},    {6, 7, 10},   {7, 11, 10}, {8, 9, 12},
+                   {9, 13, 12},  {10, 11, 14}, {11, 15, 14}, {12, 13, 16}, {13, 17, 16}, {13, 14, 18},
+                   {13, 18, 17}, {14, 15, 19}, {14, 19, 18}};
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  for(const Method& m : all_methods())
+    for(std::size_t source : { std::size_t(7), std::size_t(0), std::size_t(16) })
+    {
+      const Vertex_index s(static_cast<Surface_mesh::size_type>(source));
+      Solver solver(mesh);
+      const std::vector<double> d = run(solver, mesh, s, m, VP::record_paths(true));
+      const double max_d = max_finite(d);
+      for(Vertex_index v : vertices(mesh))
+      {
+        std::vector<Point_3> p;
+        ASSERT_NO_THROW(p = path_points(solver, v)) << m.name << ", source " << s << ", vertex " << v;
+        ASSERT_NEAR(polyline_length(p), d[v], 1e-12 * max_d) << m.name << ", source " << s << ", vertex " << v;
+        ASSERT_TRUE(is_a_path_on_the_surface(mesh, p, path_locations(solver, v), 1e-12 * max_d))
+          << m.name << ", source " << s << ", vertex " << v;
+        ASSERT_EQ(p.front(), mesh.point(v));
+        ASSERT_EQ(p.back(), mesh.point(s));
+      }
+    }
+}
+
 TEST(Paths, to_face_targets_and_with_several_sources)
 {
   const Surface_mesh mesh = load_mesh("elephant-with-holes.off");

@@ -416,6 +416,92 @@ TEST_P(Virtual_sources, paths_through_vertices_and_around_a_sharp_vertex)
   }
 }
 
+// Cases found by the fuzzer's checks of the paths from every vertex (fuzz_vtp.cpp; planar strips of slivers,
+// minimised by hand): the path of every vertex has the length of its distance (it was shorter, or the query
+// threw). `np` are the named parameters of the method.
+namespace {
+
+template <class NamedParameters>
+void expect_every_vsp_path(const Polygon_soup& soup, std::size_t source, const NamedParameters& np, const std::string& what)
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  Solver solver(mesh);
+  const Vertex_index s(static_cast<Surface_mesh::size_type>(source));
+  const std::vector<double> d = run(solver, mesh, s, np.record_paths(true));
+  for(std::size_t i = 0; i < d.size(); ++i)
+  {
+    const Vertex_index v(static_cast<Surface_mesh::size_type>(i));
+    std::vector<Point_3> p;
+    ASSERT_NO_THROW(solver.shortest_path_points(v, std::back_inserter(p))) << what << ", vertex " << i;
+    ASSERT_GE(p.size(), 1u) << what;
+    EXPECT_EQ(p.front(), mesh.point(v)) << what << ", vertex " << i;
+    EXPECT_EQ(p.back(), mesh.point(s)) << what << ", vertex " << i;
+    EXPECT_NEAR(polyline_length(p), d[i], 1e-9 * d[i]) << what << ", vertex " << i;
+  }
+}
+
+} // namespace
+
+// The line of a vertex goes through a vertex of the border, along an edge that leads to a vertex beyond: the
+// direction of its image is on that edge (within rounding), which the faces around the vertex of the border
+// then did not hold on either side; the trace took that vertex's own path, 6% shorter than the distance. The
+// direction of an image within 1e-12 of a face is in it (Path_trace::straight_through()).
+TEST_P(Virtual_sources, path_through_a_vertex_of_the_border_along_an_edge)
+{
+  Polygon_soup soup;
+  soup.points = {Point_3(0.40625, -1., 0.), Point_3(0.46875, 1., 0.), Point_3(-0.0625, 3., 0.),
+                 Point_3(0.09375, 1., 0.), Point_3(0.1875, 1.5, 0.), Point_3(0.375, 3., 0.),
+                 Point_3(0.5, 3., 0.), Point_3(0.59375, 1., 0.), Point_3(0.125, 4.5, 0.),
+                 Point_3(0.25, 3., 0.), Point_3(0.375, 3., 0.), Point_3(0.53125, 3.5, 0.),
+                 Point_3(0.65625, 5., 0.), Point_3(0.6875, 4., 0.)};
+  soup.polygons = {{0, 5, 4}, {0, 1, 5}, {1, 6, 5}, {2, 3, 8}, {3, 4, 8}, {4, 9, 8}, {4, 5, 9},
+                   {5, 10, 9}, {5, 6, 10}, {6, 11, 10}, {6, 7, 11}, {7, 12, 11}, {7, 13, 12}};
+  expect_every_vsp_path(soup, 13, VSP, "folded strip");
+}
+
+// A line crosses an edge of a sliver a few 1e-13 of its length from its end (the rounding of the walk through
+// slivers 8 times longer than wide: above the 1e-13 allowed then), so it was not taken through that vertex
+// and crossed the edge, on the border: the query threw. A line within 1e-10 of an end of an edge goes through
+// that vertex (Path_trace::through_vertex()). With one and two virtual sources per vertex.
+TEST_P(Virtual_sources, path_past_the_end_of_an_edge_of_slivers)
+{
+  {
+    Polygon_soup soup;
+    soup.points = {Point_3(-0.25, 0.3125, 0.), Point_3(1.5, 0.1875, 0.), Point_3(2., 0.3125, 0.),
+                   Point_3(0.5, 0.3125, 0.), Point_3(2., 0.34375, 0.)};
+    soup.polygons = {{0, 1, 3}, {1, 2, 4}, {1, 4, 3}};
+    expect_every_vsp_path(soup, 0, VSP, "three slivers");
+  }
+  {
+    Polygon_soup soup;
+    soup.points = {Point_3(4., -0.0625, 0.), Point_3(10., 0., 0.), Point_3(8., 0.125, 0.),
+                   Point_3(14., 0.1875, 0.), Point_3(10., 0.28125, 0.), Point_3(14., 0.21875, 0.),
+                   Point_3(24., 0.1875, 0.), Point_3(10., 0.34375, 0.), Point_3(14., 0.34375, 0.),
+                   Point_3(22., 0.34375, 0.)};
+    soup.polygons = {{0, 1, 2}, {1, 3, 2}, {2, 3, 5}, {2, 5, 4}, {4, 5, 7}, {5, 8, 7}, {5, 6, 8}, {6, 9, 8}};
+    expect_every_vsp_path(soup, 0, VSP, "eight slivers");
+  }
+}
+
+// The line of a vertex u from its root r goes back through u itself (u lies between r's root and r, and took
+// the longer line of r): the trace met u again and, not going along u's own path a second time, crossed the
+// edge there, on the border: the query threw. The line now goes straight on through a vertex already on
+// the path (Path_trace::through_vertex()): the path goes to r and back through u.
+TEST_P(Virtual_sources, path_back_through_its_own_vertex)
+{
+  Polygon_soup soup;
+  soup.points = {Point_3(0.5, 0.5, 0.), Point_3(1.75, -1., 0.), Point_3(3.25, -1., 0.), Point_3(4.5, 1., 0.),
+                 Point_3(5., 0.5, 0.), Point_3(0.25, 1., 0.), Point_3(0.75, 1., 0.), Point_3(1.5, 1., 0.),
+                 Point_3(2.75, 2.5, 0.), Point_3(4., 2.5, 0.), Point_3(5., 1., 0.), Point_3(5.75, 3., 0.),
+                 Point_3(0.25, 3.5, 0.), Point_3(0.5, 5., 0.), Point_3(1.5, 4., 0.), Point_3(2.75, 3.5, 0.),
+                 Point_3(4., 3.5, 0.), Point_3(5.5, 5., 0.), Point_3(6., 4., 0.)};
+  soup.polygons = {{0, 1, 7},   {0, 7, 6},    {1, 2, 7},    {2, 8, 7},    {2, 3, 9},
+                   {2, 9, 8},   {3, 4, 9},    {4, 10, 9},   {5, 6, 12},   {6, 13, 12},
+                   {6, 7, 13},  {7, 14, 13},  {7, 8, 14},   {8, 15, 14},  {8, 9, 15},
+                   {9, 16, 15}, {9, 10, 17},  {9, 17, 16},  {10, 11, 18}, {10, 18, 17}};
+  expect_every_vsp_path(soup, 5, VSP, "folded grid");
+}
+
 TEST_P(Virtual_sources, compute_each_parallel_tag_and_unreachable)
 {
   const Surface_mesh mesh = load_mesh("elephant-with-holes.off");

@@ -322,8 +322,9 @@ public:
   /// \throws Invalid_input_error if there was no computation yet, if the point is not a vertex or a point
   /// of the mesh, or if no source reaches it (or it lies beyond the distance limit): "no path: vertex N is
   /// not reached ...".
-  /// \throws std::runtime_error if the path cannot be followed through the faces (a numerical failure, which
-  /// the tests have not met on meshes without faces of zero area); no partial path is written then.
+  /// \throws std::runtime_error if the path cannot be followed through the faces with the length of the
+  /// distance (a numerical failure: none is known; the tests check every path of every method on random,
+  /// degenerate and real meshes); no partial path is written then.
   /// @{
 
   /// writes the points of the path from `p` to its nearest source, `p` first, to `out` (value type

@@ -98,11 +98,16 @@ struct Path_record
   // hooks
   // ------------------------------------------------------------------------------------------------
 
-  // The distance of vertex v was lowered by `offer`.
+  // The distance of vertex v was lowered by `offer`: it becomes v's record if it is shorter than the recorded
+  // offer by more than rounding (see tie).
   void on_vertex_lowered(Index v, const Offer& offer)
   {
     if(m_active)
-      vertex[static_cast<std::size_t>(v)] = offer;
+    {
+      Offer& recorded = vertex[static_cast<std::size_t>(v)];
+      if(!(offer.distance >= recorded.distance * (1. - tie)))  // (+infinity: nothing recorded yet)
+        recorded = offer;
+    }
   }
 
   // Target t was lowered to `distance`, straight from `origin` (a source point of its face, or a vertex).
@@ -129,6 +134,15 @@ struct Path_record
     if(m_active)
       offer = offer_through_window(offer.distance, h, w, px, py);
   }
+
+  // An offer that lowers a vertex's distance by less than this share of its recorded offer is a tie, which
+  // keeps the path recorded: the recorded path's length is then the distance within this share (and the
+  // record holds no cycle of rounding). Without it, two vertices at the same point (a zero-length edge) can
+  // lower each other by an ulp in turn, each then recording a path through the other, and the trace-back
+  // of either goes round for ever: the one lowered by a window whose line reaches it at the other's
+  // position (through a face of zero area between them), the other straight from it along the zero-length
+  // edge (vtp_stress --seed 1 --case 1388 --max-vertices 300, test_stop_and_paths.cpp).
+  static constexpr double tie = 1e-12;
 
 private:
   bool m_active = false;

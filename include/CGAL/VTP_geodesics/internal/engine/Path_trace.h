@@ -42,8 +42,9 @@ namespace internal {
 // source point). A line that crosses an edge at one of its ends (within rounding, or a zero-length edge)
 // goes through that vertex, and on from there along the vertex's own path if that path has the length left
 // of the line (always, with exact distances), else straight on through the vertex (see through_vertex()).
-// The length of the polyline is the distance, up to rounding. Where a straight part ends, and the points of
-// the path: Path_trace_ends.h.
+// The length of the polyline is the distance, up to rounding; a path that cannot be followed so is not
+// followed by other rules (the query throws: a defect, which the tests and the fuzzer look for). Where a
+// straight part ends, and the points of the path: Path_trace_ends.h.
 class Path_trace : public Path_trace_ends
 {
 public:
@@ -55,15 +56,10 @@ public:
   // would be a defect: then `out` holds what was followed).
   bool from_vertex(Index v, std::vector<Trace_point>& out) const
   {
-    for(bool plain : {false, true})
-    {
-      start(plain);
-      out.clear();
-      push(out, vertex_point(v));
-      if(from_vertex_on(v, out))
-        return true;
-    }
-    return false;
+    m_straight_attempts = 0;
+    out.clear();
+    push(out, vertex_point(v));
+    return from_vertex_on(v, out);
   }
 
   // The path from target t (first) to its source (last).
@@ -71,26 +67,11 @@ public:
   {
     if(target.vertex != NO_INDEX)
       return from_vertex(target.vertex, out);
-    for(bool plain : {false, true})
-    {
-      start(plain);
-      if(from_point(target, offer, out))
-        return true;
-    }
-    return false;
+    m_straight_attempts = 0;
+    return from_point(target, offer, out);
   }
 
 private:
-  // A trace starts with the rules above, or `plain` (when those fail: a line of VSP whose image misses its
-  // origin by more than rounding where it first enters a face of it, seen on a mesh of slivers found by the
-  // fuzzer, 1 vertex in 42): a line ends in the first face of its origin it enters, and a line through a
-  // vertex always goes on along that vertex's own path (the rules of the exact distances).
-  void start(bool plain) const
-  {
-    m_plain = plain;
-    m_straight_attempts = 0;
-  }
-
   bool from_point(const Target& target, const Offer& offer, std::vector<Trace_point>& out) const
   {
     out.clear();
@@ -140,9 +121,8 @@ private:
 
   // Follows the straight path from the point (px, py) of the face of offer.halfedge (in its frame) to
   // the image of offer.origin; appends the edge points and the origin; sets `origin`.
-  // With `strict` (the line goes on straight through a vertex, see through_vertex()), it is not followed if
-  // it goes through another vertex whose own path has not the length left of the line and that it cannot
-  // go on straight through either.
+  // With `strict` (the line goes on straight through a vertex, see straight_through()), it does not end where
+  // its image lies in a face it enters, only at its origin (see ends_in_face()).
   bool follow(const Offer& offer, double px, double py, std::vector<Trace_point>& out, Index& origin,
               bool strict = false) const
   {
@@ -160,7 +140,7 @@ private:
     // the image
     const double sigma = offer.distance - std::sqrt((px - x) * (px - x) + py * py)
                          - std::sqrt((x - sx) * (x - sx) + sy * sy);
-    const int through = through_vertex(h, x, sx, sy, sigma, strict, out, origin);
+    const int through = through_vertex(h, x, sx, sy, sigma, out, origin);
     if(through != 0)
       return through > 0;
     Trace_point p;
@@ -233,7 +213,7 @@ private:
       x = (std::min)((std::max)(position * (m.geometry[e].length / w), 0.), m.geometry[e].length);
       sx = ex;
       sy = ey;
-      const int through_end = through_vertex(h, x, sx, sy, sigma, strict, out, origin);
+      const int through_end = through_vertex(h, x, sx, sy, sigma, out, origin);
       if(through_end != 0)
         return through_end > 0;
       p.element = e;
@@ -244,24 +224,26 @@ private:
   }
 
   // Whether the straight part towards the image (sx, sy) (frame of h, below h) of the origin, at the
-  // distance `sigma` of the origin, crosses half-edge h at one of its ends (abscissa x within rounding of 0 or
-  // of its length, or h of zero length): then the path goes through that vertex w, appended. If the path of w
-  // has the length left of the line (sigma + |w - image|, always so with exact distances: the line is a
+  // distance `sigma` of the origin, crosses half-edge h at one of its ends (abscissa x within vertex_slack of
+  // 0 or of its length, or h of zero length): then the path goes through that vertex w, appended. If the path
+  // of w has the length left of the line (sigma + |w - image|, always so with exact distances: the line is a
   // geodesic), it goes on along that path: `origin` is set to w, from which the caller goes on. Otherwise (an
   // approximation, VSP or AVTP: w may have a longer path, or a shorter one than the line through it), the line
   // goes on straight through w to the origin (straight_through(), on either side of the line), so that the
-  // length of the path is the distance; if neither side can be followed, along w's own path (not if
-  // `strict`: a line that already goes straight through a vertex on one side of it, which may be the wrong
-  // one, then fails). The line through a vertex leaves it into any face of its fan, which the walk face by
-  // face cannot decide within rounding (nor can it cross a zero-length edge). Only a vertex that was reached
-  // (or is a source) and is not already on the path (no cycle through coincident vertices). Returns 1 if the
-  // line went through a vertex, 0 if not (the walk goes on across h), -1 if it cannot be followed.
-  int through_vertex(Index h, double x, double sx, double sy, double sigma, bool strict,
-                     std::vector<Trace_point>& out, Index& origin) const
+  // length of the path is the distance; if neither side can be followed, the line cannot be followed (w's
+  // own path would not have the length of the distance). The line through a vertex leaves it into any face of
+  // its fan, which the walk face by face cannot decide within rounding (nor can it cross a zero-length edge).
+  // Only a vertex that was reached (or is a source). A vertex already on the path is not left along its own
+  // path again (that would go round for ever): the line goes straight on through it (a VSP line can pass
+  // through a vertex whose own line is longer and leads to the origin of this one: the path goes there and
+  // back), or, if it cannot, on across h. Returns 1 if the line went through a vertex, 0 if not (the walk
+  // goes on across h), -1 if it cannot be followed.
+  int through_vertex(Index h, double x, double sx, double sy, double sigma, std::vector<Trace_point>& out,
+                     Index& origin) const
   {
     const Mesh_arrays& m = m_mesh;
     const double length = m.geometry[h].length;
-    const double tolerance = 1e-13 * length + 16. * std::numeric_limits<double>::epsilon() * std::sqrt(sx * sx + sy * sy);
+    const double tolerance = vertex_slack * (length + std::sqrt(sx * sx + sy * sy));
     Index w = NO_INDEX;
     if(x <= tolerance && x <= length - x)
       w = m.source[h];
@@ -269,15 +251,16 @@ private:
       w = m.source[Mesh_arrays::next(h)];
     if(w == NO_INDEX || !is_reached(w))
       return 0;
+    bool on_path = false;
     for(const Trace_point& q : out)
-      if(q.kind == Trace_point::AT_VERTEX && q.element == w)
-        return 0;
+      on_path = on_path || (q.kind == Trace_point::AT_VERTEX && q.element == w);
+    const std::size_t before = out.size();
     push(out, vertex_point(w));
     const std::size_t size = out.size();
     const bool at_source = w == m.source[h];
     const double wx = at_source ? 0. : length;
     const double line = sigma + std::sqrt((sx - wx) * (sx - wx) + sy * sy);
-    if(!m_plain && !(std::abs(recorded_distance(w) - line) <= 1e-11 * line))
+    if(on_path || !(std::abs(recorded_distance(w) - line) <= 1e-11 * line))
     {
       for(int side = 0; side < 2 && m_straight_attempts < max_straight_attempts; ++side)
       {
@@ -290,8 +273,12 @@ private:
         }
         out.resize(size);
       }
-      if(strict)
-        return -1;
+      if(on_path)
+      {
+        out.resize(before);
+        return 0;
+      }
+      return -1;
     }
     origin = w;
     return 1;
@@ -338,7 +325,10 @@ private:
     for(Index step = 0; step <= degree; ++step)
     {
       const Halfedge_geometry& g = m.geometry[k];
-      if(!m.is_degenerate_face[Mesh_arrays::face(k)] && iy >= 0. && ix * g.cy - iy * g.cx >= 0.)
+      // (the direction of the image along an edge, within rounding, is in both faces of the edge: the line
+      // then goes on through the vertex at the other end of it)
+      const double slack = direction_slack * std::sqrt(ix * ix + iy * iy);
+      if(!m.is_degenerate_face[Mesh_arrays::face(k)] && iy >= -slack && ix * g.cy - iy * g.cx >= -slack * g.l_prev)
       {
         // the direction of the image is in this face: the line leaves it across e = B -> C
         const Index e = Mesh_arrays::next(k);
@@ -408,6 +398,16 @@ private:
     rotate_into(x - g.length, y, (g.cx - g.length) / g.l_next, g.cy / g.l_next, x, y);
     return Mesh_arrays::next(h);
   }
+
+  // A line crosses an edge at one of its ends (through_vertex()) if it crosses it within this share of the
+  // length of the edge plus the distance of the image from the edge's source: far above the rounding of the
+  // walk through thin triangles (a few 1e-13 seen, with VSP's lines on slivers), far below what changes the
+  // length of a path.
+  static constexpr double vertex_slack = 1e-10;
+
+  // The angle (radians) by which the direction of an image may miss a face and still be in it, in
+  // straight_through(): far above rounding, far below what changes the length of a path.
+  static constexpr double direction_slack = 1e-12;
 
   // the ways the current trace tried through vertices (straight_through()), at most max_straight_attempts
   static constexpr int max_straight_attempts = 256;

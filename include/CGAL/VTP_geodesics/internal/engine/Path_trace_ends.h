@@ -155,12 +155,12 @@ protected:
     if(origin < m.nv)
     {
       const Halfedge_geometry& g = m.geometry[o];
-      if(m.source[Mesh_arrays::prev(o)] != origin || !(m_plain || image_at(sx, sy, g.cx, g.cy, g.length)))
+      if(m.source[Mesh_arrays::prev(o)] != origin || !image_at(sx, sy, g.cx, g.cy, g.length))
         return false;
       push(out, vertex_point(origin));
       return true;
     }
-    if(m_plain ? !seed_in_face(origin, f) : !image_at_seed(f, o, sx, sy, origin))
+    if(!image_at_seed(f, o, sx, sy, origin))
       return false;
     straight_to(origin, out);
     return true;
@@ -206,9 +206,6 @@ protected:
   const Mesh_arrays& m_mesh;
   const Path_record& m_record;
   const std::vector<Seed>& m_seeds;
-  // the rules of the current trace (Path_trace::start()): a line ends in the first face of its origin it
-  // enters (and goes on along the own path of a vertex it passes through)
-  mutable bool m_plain = false;
 };
 
 } // namespace internal
