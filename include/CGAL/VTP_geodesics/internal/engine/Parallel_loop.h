@@ -183,17 +183,7 @@ private:
   // Threads 1 ... T-1: the units they can take of each round published.
   void worker(int t)
   {
-    std::uint32_t seen = 0;
-    for(;;)
-    {
-      std::uint32_t round = m_sync.wait_for_round(seen);
-      if(round == 0)
-        return;
-      round = m_sync.start_taking(t, round);
-      propagation_phase(t, round);
-      m_sync.stop_taking(t);
-      seen = round;
-    }
+    m_sync.serve(t, [&](std::uint32_t round) { propagation_phase(t, round); });
   }
 
   // A face unit (at most 3 lists, see start_round()): the detached windows of its lists and the lists its

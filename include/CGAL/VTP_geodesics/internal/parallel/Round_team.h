@@ -149,6 +149,23 @@ public:
   // worker t: takes no more items
   void stop_taking(int t) { m_taking[static_cast<std::size_t>(t)].value.store(0, std::memory_order_release); }
 
+  // worker t (1 ... T-1), until finish(): for each round published, `take(round)` takes the items it can of it
+  template <class Take>
+  void serve(int t, Take&& take)
+  {
+    std::uint32_t seen = 0;
+    for(;;)
+    {
+      std::uint32_t round = wait_for_round(seen);
+      if(round == 0)
+        return;
+      round = start_taking(t, round);
+      take(round);
+      stop_taking(t);
+      seen = round;
+    }
+  }
+
   // thread t finished one item (with release semantics: its results are visible to the master)
   void item_finished(int t)
   {

@@ -246,17 +246,7 @@ private:
   template <class Front>
   void worker(Front& front, int t)
   {
-    std::uint32_t seen = 0;
-    for(;;)
-    {
-      std::uint32_t round = m_sync.wait_for_round(seen);
-      if(round == 0)
-        return;
-      round = m_sync.start_taking(t, round);
-      take_items(front, t, round);
-      m_sync.stop_taking(t);
-      seen = round;
-    }
+    m_sync.serve(t, [&](std::uint32_t round) { take_items(front, t, round); });
   }
 
   template <class Front>
