@@ -14,13 +14,9 @@
 
 #include <vtp_support/midpoint_subdivision.h>
 
-#include <CGAL/VTP_geodesics/internal/parallel/Round_team.h>
 
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <string>
-#include <thread>
 #include <vector>
 
 using namespace vtp_test;
@@ -194,19 +190,6 @@ TEST(Parallel_variants, output_does_not_depend_on_thread_timing)
 // A thread made late (it sleeps 1 ms before every fifth work item it takes, or the master before every fifth
 // round it publishes too, as a thread that the system stops for another process): PVTP and PAVTP give the
 // bits and window counts of the runs without it.
-namespace {
-
-std::atomic<int> late_variants_thread{ -100 }, late_variants_calls{ 0 };
-
-void late_variants_hook(int t)
-{
-  const int late = late_variants_thread.load();
-  if((t == late || t == -1 - late) && ++late_variants_calls % 5 == 0)
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-}
-
-} // namespace
-
 TEST(Parallel_variants, a_late_thread_changes_no_bit)
 {
   const Surface_mesh mesh = fine_mesh("knot1.off");
@@ -221,14 +204,17 @@ TEST(Parallel_variants, a_late_thread_changes_no_bit)
       const std::vector<double> d0 = run<CGAL::Parallel_tag>(solver, 17, o, &first);
       for(int late : { 0, 1 })
       {
-        late_variants_thread = late;
-        CGAL::VTP_geodesics::internal::round_team_test_hook() = &late_variants_hook;
         Propagation_statistics st;
-        const std::vector<double> d = run<CGAL::Parallel_tag>(solver, 17, o, &st);
-        CGAL::VTP_geodesics::internal::round_team_test_hook() = nullptr;
+        std::vector<double> d;
+        int late_calls = 0;
+        {
+          const vtp_test::Late_thread delay(late);
+          d = run<CGAL::Parallel_tag>(solver, 17, o, &st);
+          late_calls = delay.calls();
+        }
         const std::string what = std::to_string(threads) + " threads, lambda " + std::to_string(lambda)
                                  + ", thread " + std::to_string(late) + " late";
-        EXPECT_GT(late_variants_calls.load(), 0) << what;
+        EXPECT_GT(late_calls, 0) << what;
         EXPECT_GT(st.parallel_rounds, 0u) << what;
         EXPECT_EQ(st.windows_created, first.windows_created) << what;
         EXPECT_EQ(st.windows_propagated, first.windows_propagated) << what;

@@ -11,22 +11,18 @@
 
 #include <CGAL/VTP_geodesics.h>
 #include <CGAL/VTP_geodesics/internal/Huge_page_allocator.h>
-#include <CGAL/VTP_geodesics/internal/parallel/Round_team.h>
 
 #include <boost/property_map/property_map.hpp>
 
 #include <gtest/gtest.h>
 
 #include <array>
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
 #include <limits>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -537,19 +533,6 @@ TEST_P(Virtual_sources, compute_each_parallel_tag_and_unreachable)
 // A thread made late (it sleeps 1 ms before every fifth work item it takes, or the master before every
 // fifth phase it publishes too, as a thread that the system stops for another process): PVSP gives the
 // bits of VSP.
-namespace {
-
-std::atomic<int> late_vsp_thread{ -100 }, late_vsp_calls{ 0 };
-
-void late_vsp_hook(int t)
-{
-  const int late = late_vsp_thread.load();
-  if((t == late || t == -1 - late) && ++late_vsp_calls % 5 == 0)
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-}
-
-} // namespace
-
 TEST_P(Virtual_sources, Parallel_rounds_give_the_same_bits_with_a_late_thread)
 {
   const int nx = 280, ny = 260;
@@ -567,13 +550,15 @@ TEST_P(Virtual_sources, Parallel_rounds_give_the_same_bits_with_a_late_thread)
     for(int late : {0, 1})
     {
       const std::string what = std::to_string(threads) + " threads, thread " + std::to_string(late) + " late";
-      late_vsp_thread = late;
-      CGAL::VTP_geodesics::internal::round_team_test_hook() = &late_vsp_hook;
       std::vector<double> d(index_range(mesh));
-      solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
-                                         sources, VSP.number_of_threads(threads).nearest_source_map(labelled(labels)));
-      CGAL::VTP_geodesics::internal::round_team_test_hook() = nullptr;
-      EXPECT_GT(late_vsp_calls.load(), 0) << what;
+      int late_calls = 0;
+      {
+        const vtp_test::Late_thread delay(late);
+        solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
+                                           sources, VSP.number_of_threads(threads).nearest_source_map(labelled(labels)));
+        late_calls = delay.calls();
+      }
+      EXPECT_GT(late_calls, 0) << what;
       EXPECT_TRUE(identical(d, d1)) << what;
       EXPECT_EQ(labels, labels1) << what;
       const CGAL::VTP_geodesics::Propagation_statistics st = solver.statistics();

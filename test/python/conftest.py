@@ -18,6 +18,17 @@ def data_file(name):
     return os.path.join(DATA, name)
 
 
+def read_tool_text(path):
+    # the tool writes the shortest text that reads back as the same double, and "inf"
+    with open(path) as f:
+        return np.array([float(line) for line in f], dtype=np.float64)
+
+
+def read_tool_labels(path):
+    with open(path) as f:
+        return np.array([int(line) for line in f], dtype=np.int64)
+
+
 def plane_grid(nx, ny, size=1.0, jitter=0.0, seed=1):
     """A triangulated square [0, size]^2 in the plane z = 0 (vertices on a grid, optionally jittered)."""
     rng = np.random.default_rng(seed)

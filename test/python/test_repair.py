@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import vtp_geodesics
-from conftest import plane_grid
+from conftest import plane_grid, read_tool_labels, read_tool_text
 from vtp_geodesics import gdist
 from vtp_geodesics import pygeodesic
 
@@ -79,16 +79,6 @@ def write_off(path, V, F):
             f.write("%r %r %r\n" % tuple(float(c) for c in p))
         for t in F:
             f.write("3 %d %d %d\n" % tuple(t))
-
-
-def read_tool_text(path):
-    with open(path) as f:
-        return np.array([float(line) for line in f], dtype=np.float64)
-
-
-def read_tool_labels(path):
-    with open(path) as f:
-        return np.array([int(line) for line in f], dtype=np.int64)
 
 
 def solver_of(V, F, **kw):

@@ -12,18 +12,7 @@ import pytest
 import scipy.sparse
 
 import vtp_geodesics
-from conftest import cylinder, data_file, plane_grid
-
-
-def read_tool_text(path):
-    # the tool writes the shortest text that reads back as the same double, and "inf"
-    with open(path) as f:
-        return np.array([float(line) for line in f], dtype=np.float64)
-
-
-def read_tool_labels(path):
-    with open(path) as f:
-        return np.array([int(line) for line in f], dtype=np.int64)
+from conftest import cylinder, data_file, plane_grid, read_tool_labels, read_tool_text
 
 
 @pytest.mark.parametrize("mesh,sources,method,extra", [

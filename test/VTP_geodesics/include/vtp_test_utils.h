@@ -7,6 +7,7 @@
 #include "vtp_test_meshes.h"
 
 #include <CGAL/VTP_geodesics.h>
+#include <CGAL/VTP_geodesics/internal/parallel/Round_team.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -16,6 +17,8 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <iostream>
@@ -23,6 +26,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -283,6 +287,48 @@ struct Method
   const char* name;
   bool parallel;
   double lambda;
+};
+
+// While it lives, thread `late` of the parallel teams (PVTP, PAVTP, PVSP) is made late, as a thread that the
+// system stops for another process: it sleeps 1 ms before every fifth work item it takes, and, if it is the
+// master, before every fifth round it publishes too (through round_team_test_hook()). calls(): the calls of
+// the hook by that thread since the object was made (a test checks the delay did happen).
+class Late_thread
+{
+public:
+  explicit Late_thread(int late)
+  {
+    thread() = late;
+    count() = 0;
+    CGAL::VTP_geodesics::internal::round_team_test_hook() = &hook;
+  }
+  ~Late_thread()
+  {
+    CGAL::VTP_geodesics::internal::round_team_test_hook() = nullptr;
+    thread() = -100;
+  }
+  Late_thread(const Late_thread&) = delete;
+  Late_thread& operator=(const Late_thread&) = delete;
+
+  int calls() const { return count().load(); }
+
+private:
+  static std::atomic<int>& thread()
+  {
+    static std::atomic<int> t{ -100 };
+    return t;
+  }
+  static std::atomic<int>& count()
+  {
+    static std::atomic<int> c{ 0 };
+    return c;
+  }
+  static void hook(int t)
+  {
+    const int late = thread().load();
+    if((t == late || t == -1 - late) && ++count() % 5 == 0)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
 };
 
 } // namespace vtp_test
