@@ -227,6 +227,49 @@ TEST(Parallel_variants, a_late_thread_changes_no_bit)
     }
 }
 
+// The choice between the team and the master alone (Team_choice, Round_team.h), fed with rounds of known
+// work at known times: a team slower than one thread (a busy machine) is left after one probe, a faster one
+// is kept (the probes of the other way come less and less often), and the choice follows a change.
+TEST(Parallel_variants, the_faster_of_team_and_master_alone_runs_the_rounds)
+{
+  typedef CGAL::VTP_geodesics::internal::Team_choice Choice;
+  typedef Choice::Clock Clock;
+  const double window = Choice::window;
+  // rounds of 1 unit of work each; `team_rate` and `alone_rate` units per second; returns the share of the
+  // rounds run by the team over `seconds`
+  auto simulate = [&](Choice& c, Clock::time_point& now, double team_rate, double alone_rate, double seconds) {
+    std::size_t team = 0, all = 0;
+    const Clock::time_point end = now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+    while(now < end)
+    {
+      const bool t = c.team();
+      now += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1. / (t ? team_rate : alone_rate)));
+      c.record(1., now);
+      team += t ? 1 : 0;
+      ++all;
+    }
+    return static_cast<double>(team) / static_cast<double>(all);
+  };
+  Clock::time_point now = Clock::now();
+  Choice c;
+  c.reset(now);
+  EXPECT_TRUE(c.team());
+  const double rate = 1000. / window;  // 1,000 rounds per window
+  // the team at 1.5x the master alone: the team runs nearly every round (one probe window in 33 at most, once
+  // the stays have grown)
+  simulate(c, now, 1.5 * rate, rate, 100 * window);
+  EXPECT_GT(simulate(c, now, 1.5 * rate, rate, 330 * window), 0.95);
+  // the machine gets busy: the team at 0.6x; a probe finds the master alone faster, which then runs
+  simulate(c, now, 0.6 * rate, rate, 80 * window);
+  EXPECT_LT(simulate(c, now, 0.6 * rate, rate, 330 * window), 0.05);
+  // and idle again: the team comes back
+  simulate(c, now, 1.5 * rate, rate, 80 * window);
+  EXPECT_GT(simulate(c, now, 1.5 * rate, rate, 330 * window), 0.95);
+  // a reset starts with the team
+  c.reset(now);
+  EXPECT_TRUE(c.team());
+}
+
 TEST(Parallel_variants, pavtp_meets_the_avtp_invariants)
 {
   for(const char* name : { "elephant.off", "knot1.off", "three_peaks.off" })

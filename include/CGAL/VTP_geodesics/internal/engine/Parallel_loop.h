@@ -51,7 +51,8 @@ namespace internal {
 // thread waits for another one to arrive (Round_team): each takes face units of the current round as
 // long as there are some, and the master goes on once every unit is finished. So a thread that does not
 // run (the machine is busy with other work) holds the others back only if it stopped in the middle of a
-// unit. When that happens often, the master runs the rounds alone for a while (Late_team in Round_team.h).
+// unit, or when the master itself is descheduled. So the master measures the lists propagated per second
+// with the team and alone, and runs the rounds the faster way (Team_choice in Round_team.h).
 class Parallel_loop
 {
 public:
@@ -71,7 +72,7 @@ public:
     m_in_selection = false;
     m_k_ad = 0;
     m_round_number = 0;
-    m_late.reset();
+    m_choice.reset(std::chrono::steady_clock::now());
     selection_seconds = propagation_seconds = merge_seconds = 0.;
     rounds = parallel_rounds = 0;
 
@@ -158,6 +159,7 @@ private:
         return true;
       propagation_phase(0, 0);
       finish_round();
+      m_choice.record(static_cast<double>(m_round_lists), std::chrono::steady_clock::now());
     }
   }
 
@@ -168,12 +170,10 @@ private:
     {
       call_round_team_test_hook(-1);
       m_sync.publish(m_round_number, m_units.size(), std::uint32_t(1) << (Stealing_range::ROUND_BITS - 1));
-      const auto t0 = std::chrono::steady_clock::now();
       propagation_phase(0, m_round_number);
-      const double wait = m_sync.wait_for_items();
-      const auto t1 = std::chrono::steady_clock::now();
-      m_late.record(std::chrono::duration<double>(t1 - t0).count(), wait, t1);
+      m_sync.wait_for_items();
       finish_round();
+      m_choice.record(static_cast<double>(m_round_lists), std::chrono::steady_clock::now());
     }
     if(m_threads == 1)
       while(next_parallel_round()) {}
@@ -208,10 +208,11 @@ private:
     m_from.swap(st.fifo);
     st.fifo.clear();
     const std::size_t n = m_from.size();
+    m_round_lists = n;
     // small arrays are not worth waking the team (same work, same result, one thread), nor are the
     // rounds while the master runs alone
     m_team = (n >= 4 * static_cast<std::size_t>(m_threads) && n <= Stealing_ranges::MAX_ITEMS
-              && !m_late.alone(std::chrono::steady_clock::now())) ? m_threads : 1;
+              && m_choice.team()) ? m_threads : 1;
     ++rounds;
     if(m_team > 1)
       ++parallel_rounds;
@@ -348,11 +349,12 @@ private:
   Propagation_state* m_state = nullptr;
   std::vector<Propagation_scratch> m_scratch;      // one per thread
   std::vector<Index> m_from;                       // the lists of the current round
+  std::size_t m_round_lists = 0;                   // their number
   int m_threads = 1, m_team = 1;
   long long m_k_ad = 1;
   bool m_in_selection = false;
   std::uint32_t m_round_number = 0;                // of the last round published
-  Late_team m_late;                                // when the master runs the rounds alone
+  Team_choice m_choice;                            // whether the team or the master alone runs the rounds
   std::chrono::steady_clock::time_point m_round_start;
   // face units of the current round (see start_round())
   std::vector<Index> m_unit_of_face;               // per face, NO_INDEX between rounds

@@ -49,8 +49,8 @@ namespace internal {
 // and no offer depends on another of the same round: so neither the order of the round, nor which thread
 // runs an item, nor the number of threads changes a bit of the distances, labels and paths (take() lets
 // through every offer not above the vertex's distance, so an offer that ties with one applied before it
-// still meets it in better()). A round that thread 0 runs alone (VSP, the small rounds of PVSP, those of
-// a late team: see master()) applies every offer at once.
+// still meets it in better()). A round that thread 0 runs alone (VSP, the small rounds of PVSP, all of
+// them while that is faster: see master()) applies every offer at once.
 //
 // Vertices of one round cannot lower each other (a heap, taking them one at a time, would let them): a
 // cost in accuracy that the benchmark measures (with buckets of half a short edge it is small). Every
@@ -187,14 +187,15 @@ private:
     m_sent.assign(m_groups, 0);
     m_ranges.resize(static_cast<std::size_t>(m_team));
     m_round_number = 0;
-    m_late.reset();
+    m_choice.reset(Clock::now());
     front.m_seeded.clear();
     m_remaining_targets = front.mark_targets(m_is_target);
     m_cutoff = front.m_settings.limit + m_buckets.span();
   }
 
-  // Thread 0: chooses the rounds, runs the small ones alone, and those of a late team (Late_team in
-  // Round_team.h), publishes the phases of the others and takes its share of their items.
+  // Thread 0: chooses the rounds, runs the small ones alone, and the others alone too when that was measured
+  // faster than the team (Team_choice in Round_team.h: the machine is busy with other work), publishes the
+  // phases of the others and takes its share of their items.
   template <class Front>
   void master(Front& front)
   {
@@ -206,30 +207,32 @@ private:
       selection_seconds += seconds(t0, t1);
       if(m_done || m_capture.failed())
         break;
-      if(m_team == 1 || m_batch.size() < min_parallel || m_late.alone(t1))
+      const double work = static_cast<double>(m_batch.size());
+      if(m_team == 1 || m_batch.size() < min_parallel || !m_choice.team())
       {
         m_capture.run([&] { take_alone(front); });
-        propagation_seconds += seconds(t1, Clock::now());
+        const Clock::time_point t2 = Clock::now();
+        propagation_seconds += seconds(t1, t2);
+        m_choice.record(work, t2);
         continue;
       }
       ++parallel_rounds;
       sort_by_group();
-      double wait = run_phase(front, m_round_number + 1 + (m_round_number & 1));  // odd: computing
+      run_phase(front, m_round_number + 1 + (m_round_number & 1));  // odd: computing
       const Clock::time_point t2 = Clock::now();
       propagation_seconds += seconds(t1, t2);
       if(std::find(m_sent.begin(), m_sent.end(), 1) != m_sent.end())
-        wait += run_phase(front, m_round_number + 1);  // even: applying the offers kept
+        run_phase(front, m_round_number + 1);  // even: applying the offers kept
       const Clock::time_point t3 = Clock::now();
       merge_seconds += seconds(t2, t3);
-      m_late.record(seconds(t1, t3), wait, t3);
+      m_choice.record(work, t3);
     }
     m_sync.finish();
   }
 
-  // thread 0: publishes the phase `round` (one item per group), takes its items, waits for the others';
-  // returns the seconds it waited
+  // thread 0: publishes the phase `round` (one item per group), takes its items, waits for the others'
   template <class Front>
-  double run_phase(Front& front, std::uint32_t round)
+  void run_phase(Front& front, std::uint32_t round)
   {
     CGAL_assertion(round > m_round_number);  // (at most 2 per round of 64 vertices or more: no wrap)
     m_round_number = round;
@@ -239,7 +242,7 @@ private:
       m_ranges[t].set(t * m_groups / team, (t + 1) * m_groups / team, round);
     m_sync.publish(round, m_groups, std::uint32_t(1) << (Stealing_range::ROUND_BITS - 1));
     take_items(front, 0, round);
-    return m_sync.wait_for_items();
+    m_sync.wait_for_items();
   }
 
   // threads 1 ... T-1: the items they can take of each phase published
@@ -428,7 +431,7 @@ private:
   Exception_capture m_capture;  // an exception of the team, thrown again after the region
   Round_team m_sync;                 // the team (see master())
   Stealing_ranges m_ranges;
-  Late_team m_late;
+  Team_choice m_choice;
   std::uint32_t m_round_number = 0;  // of the last phase published
 };
 
