@@ -11,7 +11,7 @@
 #define VTP_SUPPORT_FAST_OFF_READER_H
 
 // A fast path from a plain ASCII OFF file that is a valid triangle mesh to a `Surface_mesh`: the file is read
-// whole, its header parsed, then its lines parsed with std::from_chars by several threads, each taking ranges of
+// in blocks, the lines of each block parsed with std::from_chars by several threads, each taking ranges of
 // whole lines (see parse_off_triangles()); the triangles are checked to be a valid mesh with the same rules as
 // `CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh()` (no face with a repeated vertex, no directed
 // edge twice, every vertex a single fan of faces), and its halfedge structure is built directly from sorted
@@ -58,34 +58,6 @@ struct Fast_off_result
 };
 
 namespace fast_off_detail {
-
-// The whole file in memory.
-inline std::vector<char> read_whole_file(const std::string& file)
-{
-  std::FILE* f = std::fopen(file.c_str(), "rb");
-  if(f == nullptr)
-    throw Fast_off_error(std::string("cannot open the file: ") + std::strerror(errno));
-  std::vector<char> text;
-  if(std::fseek(f, 0, SEEK_END) == 0)
-  {
-    const long size = std::ftell(f);
-    text.resize(size > 0 ? static_cast<std::size_t>(size) + 1 : 0); // + 1: the end is met by the first read
-    std::rewind(f);
-  }
-  std::size_t n = 0;
-  for(std::size_t got = 1; got > 0; n += got)
-  {
-    if(n == text.size())
-      text.resize((std::max)(std::size_t(1) << 16, 2 * text.size()));
-    got = std::fread(text.data() + n, 1, text.size() - n, f);
-  }
-  const bool error = std::ferror(f) != 0;
-  std::fclose(f);
-  if(error)
-    throw Fast_off_error("read error");
-  text.resize(n);
-  return text;
-}
 
 // What a range of lines of the body (after the header) holds: its lines with content, and the first problem met
 // in its lines, at the index of its line among the lines with content of the body.
@@ -171,20 +143,88 @@ bool parse_body_line(const char* p, const char* end, std::uint64_t line, std::ui
   return true;
 }
 
+// Parses the lines of [first, stop) (whole lines), the first of them with content being number `line` among the
+// lines with content of the body: cut into ranges of whole lines of about `range_bytes`, whose lines with
+// content `threads` OpenMP threads count, then parse, each knowing from the counts whether a line is a vertex
+// or a face, and which. Adds the lines with content to `line`; returns the range of the first problem (in the
+// order of the lines), or null.
+template <class Set_point>
+const Line_range* parse_lines(const char* first, const char* stop, std::uint64_t& line, std::uint64_t nv,
+                              std::uint64_t nf, const Set_point& set_point, std::vector<Triangle>& triangles,
+                              int threads, std::size_t range_bytes, std::vector<Line_range>& ranges)
+{
+  ranges.clear();
+  const std::size_t size = static_cast<std::size_t>(stop - first);
+  const std::size_t n = (std::max)(std::size_t(1), size / (std::max)(std::size_t(1), range_bytes));
+  for(std::size_t r = 1; r <= n; ++r)
+  {
+    const char* last = r == n ? stop : next_line(first + r * (size / n) - 1, stop);
+    if(last <= (ranges.empty() ? first : ranges.back().end))
+      continue;
+    Line_range range;
+    range.begin = ranges.empty() ? first : ranges.back().end;
+    range.end = last;
+    ranges.push_back(range);
+  }
+  const long long nr = static_cast<long long>(ranges.size());
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if(threads > 1 && nr > 1)
+#endif
+  for(long long r = 0; r < nr; ++r)
+  {
+    Line_range& range = ranges[static_cast<std::size_t>(r)];
+    for(const char* q = range.begin; q != range.end; q = next_line(q, range.end))
+    {
+      const char* c = q;
+      range.lines += content_at(c, range.end) ? 1 : 0;
+    }
+  }
+  std::vector<std::uint64_t> first_line(ranges.size());
+  for(std::size_t r = 0; r < ranges.size(); ++r)
+  {
+    first_line[r] = line;
+    line += ranges[r].lines;
+  }
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if(threads > 1 && nr > 1)
+#endif
+  for(long long r = 0; r < nr; ++r)
+  {
+    Line_range& range = ranges[static_cast<std::size_t>(r)];
+    std::uint64_t l = first_line[static_cast<std::size_t>(r)];
+    for(const char* q = range.begin; q != range.end && l < nv + nf; q = next_line(q, range.end))
+    {
+      const char* c = q;
+      if(!content_at(c, range.end))
+        continue;
+      if(!parse_body_line(c, range.end, l, nv, nf, set_point, triangles, range))
+        break;
+      ++l;
+    }
+  }
+  for(const Line_range& range : ranges)
+    if(range.problem_line != (std::numeric_limits<std::uint64_t>::max)())
+      return &range;
+  return nullptr;
+}
+
 // Parses `file` if it is a plain ASCII OFF file of triangles: resize(nv) once the header is read, then
 // set_point(i, x, y, z) for each vertex i (from several threads, each i once), and the triangles into
 // `triangles`. Returns NOT_HANDLED (with the reason) for what CGAL's reader must read instead; throws
 // Fast_off_error for definite errors of the file.
 //
-// The body (after the header) is cut into ranges of whole lines of about `range_bytes`; `threads` OpenMP threads
-// (0: OpenMP's default) count the lines with content of each range, then parse them, each knowing from the counts
-// whether a line is a vertex or a face, and which. Of the problems found, the one of the first line counts, as
-// if the file were parsed line after line: the outcome (the mesh, the reason or the error) does not depend on
-// the number of threads or on the ranges.
+// The file is read in blocks of `block_bytes` (one buffer, used again: no fresh memory per block), each cut
+// after its last newline and parsed by parse_lines() on `threads` threads (0: OpenMP's default). The blocks are
+// large (16 MB: 3 for a 423K-vertex mesh) because each is two parallel regions, and on a busy machine each
+// region may wait for a descheduled thread (with 4 MB blocks, the parse on 2 threads was slower than on one). Of the problems
+// found, the one of the first line counts, as if the file were parsed line after line: the outcome (the mesh,
+// the reason or the error) does not depend on the number of threads, the ranges or the blocks. A header after
+// more than a block of comments, or a line longer than a block, is left to CGAL's reader.
 template <class Resize, class Set_point>
 Fast_off_result parse_off_triangles(const std::string& file, const Resize& resize, const Set_point& set_point,
                                     std::vector<Triangle>& triangles, int threads = 1,
-                                    std::size_t range_bytes = std::size_t(1) << 20)
+                                    std::size_t range_bytes = std::size_t(1) << 20,
+                                    std::size_t block_bytes = std::size_t(1) << 24)
 {
   typedef std::chrono::steady_clock Clock;
   const Clock::time_point t0 = Clock::now();
@@ -194,9 +234,32 @@ Fast_off_result parse_off_triangles(const std::string& file, const Resize& resiz
     result.reason = why;
     return result;
   };
-  const std::vector<char> text = read_whole_file(file);
-  const char* p = text.data();
-  const char* const end = text.data() + text.size();
+  std::FILE* f = std::fopen(file.c_str(), "rb");
+  if(f == nullptr)
+    throw Fast_off_error(std::string("cannot open the file: ") + std::strerror(errno));
+  struct Closer
+  {
+    std::FILE* f;
+    ~Closer() { std::fclose(f); }
+  } closer{ f };
+  std::vector<char> buffer((std::max)(std::size_t(16), block_bytes));
+  std::size_t have = 0;
+  bool eof = false, read_error = false;
+  auto fill = [&]() {
+    while(!eof && have < buffer.size())
+    {
+      const std::size_t n = std::fread(buffer.data() + have, 1, buffer.size() - have, f);
+      have += n;
+      if(n == 0)
+      {
+        eof = true;
+        read_error = std::ferror(f) != 0;
+      }
+    }
+  };
+  fill();
+  const char* p = buffer.data();
+  const char* end = buffer.data() + have;
 
   // Header: "OFF", then the numbers of vertices, faces and edges.
   next_content_line(p, end);
@@ -215,94 +278,58 @@ Fast_off_result parse_off_triangles(const std::string& file, const Resize& resiz
     if(!parse_index(p, end, counts[k]))
       return not_handled("unexpected header");
   }
-  if(!end_of_line(p, end))
+  if(!end_of_line(p, end) || (p == end && !eof))
     return not_handled("unexpected header");
   const std::uint64_t nv = counts[0], nf = counts[1];
   if(nv >= (std::uint64_t(1) << 31) || nf >= (std::uint64_t(1) << 31) / 3)
     return not_handled("too large for 32-bit indices");
   if(nv == 0)
     throw Fast_off_error("the mesh has no vertices");
-
-  // The ranges of whole lines of the body.
-  std::vector<Line_range> ranges;
-  {
-    const std::size_t size = static_cast<std::size_t>(end - p);
-    const std::size_t n = (std::max)(std::size_t(1), size / (std::max)(std::size_t(1), range_bytes));
-    const char* first = p;
-    for(std::size_t r = 1; r <= n; ++r)
-    {
-      const char* last = r == n ? end : next_line(p + r * (size / n) - 1, end);
-      if(last <= first)
-        continue;
-      Line_range range;
-      range.begin = first;
-      range.end = last;
-      ranges.push_back(range);
-      first = last;
-    }
-  }
 #ifdef _OPENMP
   if(threads <= 0)
     threads = omp_get_max_threads();
 #endif
   threads = (std::max)(1, threads);
-  const long long nr = static_cast<long long>(ranges.size());
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if(threads > 1 && nr > 1)
-#endif
-  for(long long r = 0; r < nr; ++r)
+
+  resize(static_cast<std::size_t>(nv));
+  triangles.resize(static_cast<std::size_t>(nf));
+  std::uint64_t line = 0;
+  std::vector<Line_range> ranges;
+  std::size_t consumed = static_cast<std::size_t>(p - buffer.data());
+  for(;;)
   {
-    Line_range& range = ranges[static_cast<std::size_t>(r)];
-    for(const char* q = range.begin; q != range.end; q = next_line(q, range.end))
+    if(consumed > 0)
     {
-      const char* c = q;
-      range.lines += content_at(c, range.end) ? 1 : 0;
+      std::memmove(buffer.data(), buffer.data() + consumed, have - consumed);
+      have -= consumed;
+      consumed = 0;
     }
-  }
-  std::uint64_t total = 0;
-  std::vector<std::uint64_t> first_line(ranges.size());
-  for(std::size_t r = 0; r < ranges.size(); ++r)
-  {
-    first_line[r] = total;
-    total += ranges[r].lines;
-  }
-  resize(static_cast<std::size_t>((std::min)(nv, total)));
-  triangles.resize(static_cast<std::size_t>(total > nv ? (std::min)(nf, total - nv) : 0));
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if(threads > 1 && nr > 1)
-#endif
-  for(long long r = 0; r < nr; ++r)
-  {
-    Line_range& range = ranges[static_cast<std::size_t>(r)];
-    std::uint64_t line = first_line[static_cast<std::size_t>(r)];
-    for(const char* q = range.begin; q != range.end && line < nv + nf; q = next_line(q, range.end))
+    fill();
+    const char* stop = buffer.data() + have;
+    if(!eof)
     {
-      const char* c = q;
-      if(!content_at(c, range.end))
-        continue;
-      if(!parse_body_line(c, range.end, line, nv, nf, set_point, triangles, range))
-        break;
-      ++line;
+      while(stop != buffer.data() && stop[-1] != '\n')
+        --stop;
+      if(stop == buffer.data())
+        return not_handled("a line is longer than " + std::to_string(buffer.size()) + " bytes");
     }
-  }
-  // The first problem, as a parse line after line would meet it.
-  const Line_range* first_problem = nullptr;
-  for(const Line_range& range : ranges)
-    if(range.problem_line != (std::numeric_limits<std::uint64_t>::max)())
+    if(const Line_range* problem = parse_lines(buffer.data(), stop, line, nv, nf, set_point, triangles, threads,
+                                               range_bytes, ranges))
     {
-      first_problem = &range;
+      if(problem->error)
+        throw Fast_off_error(problem->problem);
+      return not_handled(problem->problem);
+    }
+    consumed = static_cast<std::size_t>(stop - buffer.data());
+    if((eof && consumed == have) || line >= nv + nf)
       break;
-    }
-  if(first_problem != nullptr)
-  {
-    if(first_problem->error)
-      throw Fast_off_error(first_problem->problem);
-    return not_handled(first_problem->problem);
   }
-  if(total < nv)
-    throw Fast_off_error("the file ends after " + std::to_string(total) + " of " + std::to_string(nv) + " vertices");
-  if(total < nv + nf)
-    throw Fast_off_error("the file ends after " + std::to_string(total - nv) + " of " + std::to_string(nf) + " faces");
+  if(line < nv)
+    throw Fast_off_error("the file ends after " + std::to_string(line) + " of " + std::to_string(nv) + " vertices");
+  if(line < nv + nf)
+    throw Fast_off_error("the file ends after " + std::to_string(line - nv) + " of " + std::to_string(nf) + " faces");
+  if(read_error)
+    throw Fast_off_error("read error");
   if(nf == 0)
     throw Fast_off_error("the mesh has no faces");
   result.status = Fast_off_result::MESH;
