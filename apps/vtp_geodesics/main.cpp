@@ -53,6 +53,9 @@
 #include <limits.h>
 #include <sys/resource.h>
 #include <unistd.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #ifndef VTP_GEODESICS_DEFAULT_MESH_RELATIVE
 // The default mesh, relative to the folder of the executable (installed layout, mirrored in the build tree).
@@ -172,6 +175,15 @@ void silent_cgal_handler(const char*, const char*, const char*, int, const char*
 int main(int argc, char** argv)
 {
   using namespace vtp_geodesics_app;
+#if defined(__GLIBC__)
+  // The memory of freed blocks is kept for the next ones (blocks up to glibc's largest mmap() threshold, 32 MB,
+  // from the heap, which is not trimmed) instead of being given back to the kernel: each stage from the file to
+  // the answer frees its temporaries (the file's text, the check's tables, the import's numbering) just before
+  // the next one asks as much, and memory asked again is faulted and zeroed again by the kernel
+  // (doc/VTP_geodesics/performance.txt, "From file to answer").
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+#endif
   // CGAL's default handlers print several lines on std::cerr before throwing; the exceptions are caught below
   // and reported on one line instead.
   CGAL::set_error_handler(silent_cgal_handler);

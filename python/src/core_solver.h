@@ -96,6 +96,26 @@ const vtp_support::Method_info& method_named(const std::string& name, double lam
 // max_distance >= 0 (+inf: no limit).
 void check_limit(double max_distance);
 
+// What the last read_mesh() did, for the Solver built on the arrays it returned (io.cpp): its seconds (the file
+// read into V and F; the check that they form a valid mesh), and the tables of that check (fast OFF reader only),
+// so that the Solver's statistics include the reading and its constructor does not check the same faces again.
+struct Read_record
+{
+  double read_seconds = 0., check_seconds = 0.;
+  bool has_tables = false;
+  vtp_support::fast_off_detail::Corner_tables tables;
+};
+
+// Keeps the record of read_mesh() (replacing the one before), with the faces it returned (`triangles`) and their
+// number of vertices.
+void remember_read(std::size_t n, std::vector<vtp_support::fast_off_detail::Triangle>&& triangles,
+                   Read_record&& record);
+
+// If the last read_mesh() returned `n` vertices and these faces, moves its record into `record` and forgets it
+// (a second Solver on the same arrays reads nothing and checks again), returns true; else false.
+bool take_read(std::size_t n, const std::vector<vtp_support::fast_off_detail::Triangle>& triangles,
+               Read_record& record);
+
 // The solver of one mesh, as Python's vtp_geodesics.Solver holds it.
 class Core_solver
 {
@@ -214,6 +234,8 @@ private:
   VTP::Propagation_statistics m_statistics;                       // of the last computation
   int m_threads = 0;
   double m_build_seconds = 0.;                                    // checking V, F and building the mesh
+  // of read_mesh(), when V and F are the arrays it returned (see take_read()): reading, and checking the faces
+  double m_read_seconds = 0., m_read_check_seconds = 0.;
   mutable std::mutex m_mutex;
 };
 

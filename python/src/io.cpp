@@ -18,7 +18,9 @@
 #include <vtp_support/mesh_formats.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <mutex>
 
 namespace vtp_python {
 
@@ -150,6 +152,86 @@ std::array<double, 3> Core_solver::to_user_barycentric(const Face_location& l) c
 }
 
 // ---------------------------------------------------------------------------------------------------------------
+// The record of the last read_mesh()
+// ---------------------------------------------------------------------------------------------------------------
+namespace {
+
+struct Last_read
+{
+  std::mutex mutex;
+  std::size_t n = 0;
+  std::vector<vtp_support::fast_off_detail::Triangle> triangles;
+  Read_record record;
+  bool valid = false;
+};
+
+Last_read& last_read()
+{
+  static Last_read r;
+  return r;
+}
+
+} // namespace
+
+void remember_read(std::size_t n, std::vector<vtp_support::fast_off_detail::Triangle>&& triangles,
+                   Read_record&& record)
+{
+  Last_read& last = last_read();
+  std::lock_guard<std::mutex> lock(last.mutex);
+  last.n = n;
+  last.triangles = std::move(triangles);
+  last.record = std::move(record);
+  last.valid = true;
+}
+
+bool take_read(std::size_t n, const std::vector<vtp_support::fast_off_detail::Triangle>& triangles,
+               Read_record& record)
+{
+  Last_read& last = last_read();
+  std::lock_guard<std::mutex> lock(last.mutex);
+  if(!last.valid || last.n != n || last.triangles != triangles)
+    return false;
+  record = std::move(last.record);
+  last.record = Read_record();
+  std::vector<vtp_support::fast_off_detail::Triangle>().swap(last.triangles);
+  last.valid = false;
+  return true;
+}
+
+namespace {
+
+void forget_read()
+{
+  Last_read& last = last_read();
+  std::lock_guard<std::mutex> lock(last.mutex);
+  std::vector<vtp_support::fast_off_detail::Triangle>().swap(last.triangles);
+  last.record = Read_record();
+  last.valid = false;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The record of a read by read_input_mesh() (no tables: the Solver checks the faces), returning n vertices and the
+// m faces f; the time since t0 less the reader's checks and repairs is the reading.
+void remember_other_read(std::size_t n, const std::int64_t* f, std::size_t m, const vtp_support::Input_mesh& input,
+                         std::chrono::steady_clock::time_point t0)
+{
+  std::vector<vtp_support::fast_off_detail::Triangle> triangles(m);
+  for(std::size_t j = 0; j < m; ++j)
+    for(std::size_t k = 0; k < 3; ++k)
+      triangles[j][k] = static_cast<std::uint32_t>(f[3 * j + k]);
+  Read_record record;
+  record.check_seconds = input.repair_seconds;
+  record.read_seconds = (std::max)(0., seconds_since(t0) - input.repair_seconds);
+  remember_read(n, std::move(triangles), std::move(record));
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------------------------------
 // Free functions
 // ---------------------------------------------------------------------------------------------------------------
 namespace {
@@ -161,15 +243,20 @@ bool read_valid_off(const std::string& path, int threads, py::tuple& result)
 {
   if(vtp_support::lower_extension(path) != "off")
     return false;
+  const auto t0 = std::chrono::steady_clock::now();
   std::vector<double> xyz;
   std::vector<vtp_support::fast_off_detail::Triangle> triangles;
+  Read_record record;
   {
     py::gil_scoped_release release;
     try
     {
-      if(vtp_support::read_off_triangle_soup(path, xyz, triangles, threads).status
-         != vtp_support::Fast_off_result::MESH)
+      const vtp_support::Fast_off_result r =
+        vtp_support::read_off_triangle_soup(path, xyz, triangles, threads, &record.tables);
+      if(r.status != vtp_support::Fast_off_result::MESH)
         return false;
+      record.check_seconds = r.build_seconds;
+      record.has_tables = true;
     }
     catch(const vtp_support::Fast_off_error&)
     {
@@ -189,6 +276,8 @@ bool read_valid_off(const std::string& path, int threads, py::tuple& result)
       for(std::size_t k = 0; k < 3; ++k)
         f[3 * j + k] = static_cast<std::int64_t>(triangles[j][k]);
   }
+  record.read_seconds = seconds_since(t0) - record.check_seconds;
+  remember_read(n, std::move(triangles), std::move(record));
   result = py::make_tuple(V, F, std::string(), std::string("fast OFF reader"), true);
   return true;
 }
@@ -198,6 +287,8 @@ bool read_valid_off(const std::string& path, int threads, py::tuple& result)
 // the tools do); a file with faces of more than three vertices is refused then.
 py::tuple read_mesh(const std::string& path, int threads, bool as_in_file)
 {
+  forget_read();
+  const auto t0 = std::chrono::steady_clock::now();
   {
     py::tuple r;
     if(read_valid_off(path, threads, r))
@@ -240,6 +331,7 @@ py::tuple read_mesh(const std::string& path, int threads, bool as_in_file)
     for(std::size_t j = 0; j < m; ++j)
       for(std::size_t k = 0; k < 3; ++k)
         f[3 * j + k] = static_cast<std::int64_t>(input.file_polygons[j][k]);
+    remember_other_read(n, f, m, input, t0);
     return py::make_tuple(V, F, std::string(), input.reader, false);
   }
   const Mesh& mesh = input.mesh;
@@ -273,6 +365,7 @@ py::tuple read_mesh(const std::string& path, int threads, bool as_in_file)
       ++j;
     }
   }
+  remember_other_read(n, f, m, input, t0);
   return py::make_tuple(V, F, input.repairs.summary(), input.reader, input.direct);
 }
 

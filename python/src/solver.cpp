@@ -103,13 +103,16 @@ py::dict Core_solver::statistics() const
     d[name] = value;
   });
   // the stages from V and F to the answer, from their description (vtp_support/statistics.h): the solver's
-  // (checking V and F and building the mesh as "repair_seconds", its preprocessing, the last propagation); the
-  // file is read by read_mesh(), timed by the caller: read_seconds and write_seconds are 0
+  // (checking V and F and building the mesh as "repair_seconds", its preprocessing, the last propagation); when V
+  // and F are the arrays that the last read_mesh() returned, its reading as "read_seconds" and its check of the
+  // faces in "repair_seconds" (see take_read()); else the file was read by the caller: read_seconds is 0. The
+  // outputs are the caller's: write_seconds is 0
   vtp_support::Stage_seconds stages;
-  stages.repair = m_build_seconds;
+  stages.read = m_read_seconds;
+  stages.repair = m_read_check_seconds + m_build_seconds;
   stages.preprocessing = m_solver->preprocessing_seconds();
   stages.propagation = st.seconds;
-  stages.total = stages.repair + stages.preprocessing + stages.propagation;
+  stages.total = stages.read + stages.repair + stages.preprocessing + stages.propagation;
   vtp_support::for_each_stage(stages, [&](const char* name, double value, vtp_support::Statistic_unit) {
     d[name] = value;
   });
@@ -160,8 +163,16 @@ std::string Core_solver::build_mesh(const double* v, std::size_t n, const std::i
   m_mesh.reserve(static_cast<Mesh::size_type>(n), 0, 0);
   for(std::size_t i = 0; i < n; ++i)
     m_mesh.add_vertex(Point_3(v[3 * i], v[3 * i + 1], v[3 * i + 2]));
+  // V and F as read_mesh() returned them: its seconds in the statistics, its check of the faces not done again
+  Read_record read;
+  if(take_read(n, triangles, read))
+  {
+    m_read_seconds = read.read_seconds;
+    m_read_check_seconds = read.check_seconds;
+  }
   std::string reason;
-  if(!vtp_support::fast_off_detail::build_triangle_mesh(triangles, m_mesh, reason, m_threads))
+  if(!vtp_support::fast_off_detail::build_triangle_mesh(triangles, m_mesh, reason, m_threads,
+                                                        read.has_tables ? &read.tables : nullptr))
   {
     repairable = true;
     return "the faces do not form a manifold, consistently oriented triangle mesh: " + reason

@@ -22,6 +22,11 @@ def read_mesh(path, *, threads=0, repair=True):
     they are (``Solver(V, F)`` then repairs them the same way and gives every result on the file's vertex
     numbers, as the tool does); a file with faces of more than three vertices raises ValueError.
 
+    The first ``Solver(V, F)`` built on the arrays returned (the same faces and number of vertices) counts
+    this reading in its ``statistics`` (``read_seconds``, and the check of the faces in ``repair_seconds``),
+    and builds its mesh from that check of a valid OFF file instead of checking the faces again; the record is
+    kept until then, or until the next ``read_mesh()``.
+
     Returns ``V``, float64 array (n, 3) of vertex coordinates, and ``F``, int64 array (m, 3) of vertex
     indices (0-based) of the triangles. Raises FileNotFoundError if there is no such file, ValueError if the
     file cannot be read or used (the message names the problem).

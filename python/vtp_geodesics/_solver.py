@@ -134,11 +134,14 @@ class Solver(Queries, Matrices, Sampling):
         mesh_build_seconds (the constructor's checks of V and F and building of the mesh). After
         ``matrix()``, the sums over the rows (peaks are maxima).
 
-        The stages from the arrays to the answer, with the names of the tool's ``--stats-json``: read_seconds
-        and write_seconds (0: ``read_mesh()`` and the caller's outputs are timed by the caller),
-        repair_seconds (= mesh_build_seconds), preprocessing_seconds, propagation_seconds (= seconds),
-        other_seconds (0), total_seconds (their sum) and outside_propagation_ratio ((total - propagation) /
-        propagation).
+        The stages from the file (or the arrays) to the answer, with the names of the tool's ``--stats-json``:
+        read_seconds, repair_seconds, preprocessing_seconds, propagation_seconds (= seconds), write_seconds
+        (0: the outputs are the caller's), other_seconds (0), total_seconds (their sum) and
+        outside_propagation_ratio ((total - propagation) / propagation). When V and F are the arrays that the
+        last ``read_mesh()`` returned (the same faces and number of vertices; the first Solver built on them),
+        read_seconds is that reading and repair_seconds adds its check of the faces (which the Solver then
+        does not repeat) to mesh_build_seconds; otherwise read_seconds is 0 (the caller read the arrays) and
+        repair_seconds = mesh_build_seconds.
         """
         return self._core.statistics()
 

@@ -57,19 +57,64 @@ def test_fast_off_path_leaves_repairs_to_the_tools_reader(tmp_path):
     assert V.shape == (6, 3) and F.shape == (2, 3)
 
 
-def test_solver_stages_add_up(elephant):
-    V, F, solver = elephant
-    solver.distances(0)
-    st = solver.statistics
+def check_stages(st, from_read_mesh):
     stages = ["read_seconds", "repair_seconds", "preprocessing_seconds", "propagation_seconds", "write_seconds",
               "other_seconds", "total_seconds", "outside_propagation_ratio"]
     assert set(stages) <= set(st)
-    assert st["read_seconds"] == 0 and st["write_seconds"] == 0       # read_mesh() and the caller's outputs
-    assert st["repair_seconds"] == st["mesh_build_seconds"] > 0
+    assert st["write_seconds"] == 0                                   # the caller's outputs
+    if from_read_mesh:
+        # read_mesh()'s reading, and its check of the faces (the Solver's build does not check them again)
+        assert st["read_seconds"] > 0 and st["repair_seconds"] > st["mesh_build_seconds"] > 0
+    else:
+        assert st["read_seconds"] == 0 and st["repair_seconds"] == st["mesh_build_seconds"] > 0
     assert st["propagation_seconds"] == st["seconds"] > 0
-    assert st["total_seconds"] == pytest.approx(st["repair_seconds"] + st["preprocessing_seconds"] + st["seconds"])
+    assert st["total_seconds"] == pytest.approx(st["read_seconds"] + st["repair_seconds"]
+                                                + st["preprocessing_seconds"] + st["seconds"])
     assert st["outside_propagation_ratio"] == pytest.approx(
         (st["total_seconds"] - st["seconds"]) / st["seconds"])
+
+
+def test_solver_stages_add_up(elephant):
+    V, F, solver = elephant          # read by read_mesh(), then the first Solver on V and F
+    solver.distances(0)
+    check_stages(solver.statistics, True)
+
+
+@pytest.mark.parametrize("mesh", ["elephant.off", "elephant-with-holes.off", "mech-holes-shark.off"])
+def test_solver_takes_read_mesh_check_once(mesh):
+    # the first Solver on read_mesh()'s arrays builds the mesh from read_mesh()'s check of the faces; the
+    # second checks them itself: the same mesh (the same bits of distances), and only the first counts the reading
+    V, F = vtp_geodesics.read_mesh(data_file(mesh), threads=2)
+    first, second = vtp_geodesics.Solver(V, F, threads=2), vtp_geodesics.Solver(V, F, threads=1)
+    d1, d2 = first.distances(0), second.distances(0)
+    assert d1.tobytes() == d2.tobytes()
+    check_stages(first.statistics, True)
+    check_stages(second.statistics, False)
+
+
+def test_solver_on_other_faces_checks_them(tmp_path):
+    # arrays changed after read_mesh() (other faces, or another number of vertices): no reading counted, and the
+    # check of the new faces is done (an invalid mesh is still found)
+    V, F = vtp_geodesics.read_mesh(data_file("elephant.off"))
+    G = F.copy()
+    G[0] = G[0, ::-1]                                # one face turned over: two faces with the same oriented edge
+    with pytest.raises(ValueError, match="not form a manifold"):
+        vtp_geodesics.Solver(V, G, repair=False)
+    s = vtp_geodesics.Solver(V, F[:, [1, 2, 0]])     # the same triangles, each from its second corner
+    s.distances(0)
+    check_stages(s.statistics, False)
+    V, F = vtp_geodesics.read_mesh(data_file("elephant.off"))
+    W = np.vstack([V, [[0., 0., 0.]]])               # one more vertex, in no face
+    s = vtp_geodesics.Solver(W, F)
+    s.distances(0)
+    check_stages(s.statistics, False)
+    # a file read by CGAL's reader (OBJ) counts its reading too
+    obj = tmp_path / "mesh.obj"
+    write_obj(obj, V, F)
+    V2, F2 = vtp_geodesics.read_mesh(str(obj))
+    s = vtp_geodesics.Solver(V2, F2)
+    s.distances(0)
+    assert s.statistics["read_seconds"] > 0
 
 
 def test_tool_stages_add_up(tool, tmp_path):

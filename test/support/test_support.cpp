@@ -308,6 +308,123 @@ TEST(FastOffReader, SoupIsTheMeshOfTheFile)
   }
 }
 
+// The parse of an OFF file in ranges of lines on several threads has the outcome of a parse line after line (one
+// range on one thread): the same points and triangles, or the same reason left to CGAL, or the same error, on
+// files of every oddity (comments, blank lines, CRLF, colours after the indices, polygons, trailing lines,
+// a last line without newline, errors), whatever the ranges (down to one byte: a range per line) and the threads.
+TEST(FastOffReader, RangesOfLinesGiveTheOutcomeOfOneRange)
+{
+  const std::string folder = fresh_folder("fast_off_ranges");
+  const std::vector<std::string> texts = {
+    "# a comment\nOFF\n\n# counts\n4 4 0\n0 0 0\n1 0 0 # trailing comment\n\t0 1 0\n0 0 1\r\n"
+    "3 0 2 1 255 0 0\n3 0 1 3\n\n3 1 2 3\n3 0 3 2\n",
+    "OFF\r\n4 4 0\r\n\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n0 0 1\r\n# c\r\n3 0 2 1\r\n3 0 1 3\r\n3 1 2 3\r\n3 0 3 2",
+    "OFF 4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1 0.5 0.5 0.5 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\nextra lines\n9 9\n",
+    "OFF\n4\n4 0\n  0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n",
+    "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n3 0 1 2\n",               // a quad
+    "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n4 0 1 2 3\n",               // a quad, last
+    "OFF\n3 1 0\n0 0 0 1\n1 0 0\n0 1 0\n3 0 1 2\n",                             // four numbers
+    "OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n",                                 // two numbers
+    "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 x\n3 0 1 2\n",                             // an error, then a reason
+    "OFF\n3 1 0\n0 0 0\n1 0 x\n0 1e999 0\n3 0 1 2\n",                           // a reason, then an error
+    "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n3 0 1\n",                        // out of range, then short
+    "OFF\n3 1 0\n0 0 0\n1 0 0\n",                                               // truncated
+    "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n\n# nothing more\n3 0 1 2\n",             // truncated in the faces
+    "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n",                                        // no faces
+    "OFF\n",                                                                     // no counts
+    "COFF\n3 1 0\n0 0 0 1 1 1 1\n1 0 0 1 1 1 1\n0 1 0 1 1 1 1\n3 0 1 2\n",
+  };
+  auto outcome = [](const std::string& file, int threads, std::size_t range_bytes,
+                    std::size_t block_bytes = std::size_t(1) << 22) {
+    std::vector<double> xyz;
+    std::vector<vtp_support::fast_off_detail::Triangle> triangles;
+    std::ostringstream os;
+    try
+    {
+      const vtp_support::Fast_off_result r = vtp_support::fast_off_detail::parse_off_triangles(
+        file, [&xyz](std::size_t nv) { xyz.resize(3 * nv); },
+        [&xyz](std::size_t i, double x, double y, double z) {
+          xyz[3 * i] = x;
+          xyz[3 * i + 1] = y;
+          xyz[3 * i + 2] = z;
+        },
+        triangles, threads, range_bytes, block_bytes);
+      if(r.status != vtp_support::Fast_off_result::MESH)
+        return "not handled: " + r.reason;
+      for(double x : xyz)
+        os << x << ' ';
+      for(const auto& t : triangles)
+        os << t[0] << ' ' << t[1] << ' ' << t[2] << ", ";
+    }
+    catch(const vtp_support::Fast_off_error& e)
+    {
+      return std::string("error: ") + e.what();
+    }
+    return os.str();
+  };
+  int i = 0;
+  for(const std::string& text : texts)
+  {
+    SCOPED_TRACE(text);
+    const std::string file = folder + "/case" + std::to_string(i++) + ".off";
+    write_all(file, text);
+    const std::string one = outcome(file, 1, std::size_t(1) << 20);
+    for(int threads : { 1, 2, 3 })
+      for(std::size_t range_bytes : { 1, 2, 3, 5, 8, 13, 21, 64 })
+        for(std::size_t block_bytes : { 48, 64, 100, 4096 })  // blocks of the file, cut after their last newline
+          ASSERT_EQ(outcome(file, threads, range_bytes, block_bytes), one)
+            << threads << " threads, ranges of " << range_bytes << ", blocks of " << block_bytes;
+  }
+  // the oddities above as before: the first file is read as CGAL reads it (CommentsBlankLinesAndFaceColours)
+  EXPECT_EQ(outcome(folder + "/case1.off", 2, 4), outcome(folder + "/case0.off", 1, std::size_t(1) << 20));
+  EXPECT_EQ(outcome(folder + "/case4.off", 2, 4), "not handled: a face is not a triangle");
+  EXPECT_EQ(outcome(folder + "/case8.off", 2, 4), "error: vertex 1 has a non-finite coordinate");
+  EXPECT_EQ(outcome(folder + "/case9.off", 2, 4), "not handled: unexpected vertex line");
+  EXPECT_EQ(outcome(folder + "/case10.off", 2, 4),
+            "error: face 0 refers to vertex 7, out of range (there are 3 vertices)");
+  EXPECT_EQ(outcome(folder + "/case12.off", 2, 4), "error: the file ends after 1 of 2 faces");
+  // a mesh of the data, in ranges of about 1 KB and blocks of 64 KB on 2 threads: the mesh of one range
+  for(const char* name : { "elephant.off", "mech-holes-shark.off" })
+    EXPECT_EQ(outcome(mesh_dir + "/" + name, 2, 1000, 1 << 16),
+              outcome(mesh_dir + "/" + name, 1, std::size_t(1) << 30, std::size_t(1) << 30))
+      << name;
+  // a line longer than a block is left to CGAL's reader
+  EXPECT_EQ(outcome(folder + "/case0.off", 1, 8, 16), "not handled: unexpected header");
+  write_all(folder + "/long.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0" + std::string(100, ' ') + "\n3 0 1 2\n");
+  EXPECT_EQ(outcome(folder + "/long.off", 2, 8, 64), "not handled: a line is longer than 64 bytes");
+}
+
+// The halfedge structure built from the tables of an earlier check of the same triangles (Python's read_mesh(),
+// then Solver(V, F)) is the one built with its own check, halfedge for halfedge.
+TEST(FastOffReader, MeshFromTheTablesOfAnEarlierCheck)
+{
+  for(const char* name : { "elephant.off", "elephant-with-holes.off", "mech-holes-shark.off" })
+  {
+    SCOPED_TRACE(name);
+    Mesh checked;
+    ASSERT_EQ(vtp_support::read_off_triangle_mesh(mesh_dir + "/" + name, checked, 2).status,
+              vtp_support::Fast_off_result::MESH);
+    std::vector<double> xyz;
+    std::vector<vtp_support::fast_off_detail::Triangle> triangles;
+    vtp_support::fast_off_detail::Corner_tables tables;
+    ASSERT_EQ(vtp_support::read_off_triangle_soup(mesh_dir + "/" + name, xyz, triangles, 2, &tables).status,
+              vtp_support::Fast_off_result::MESH);
+    ASSERT_EQ(tables.opposite.size(), 3 * triangles.size());
+    Mesh mesh;
+    for(std::size_t i = 0; i < xyz.size() / 3; ++i)
+      mesh.add_vertex(vtp_support::Point_3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]));
+    std::string reason;
+    ASSERT_TRUE(vtp_support::fast_off_detail::build_triangle_mesh(triangles, mesh, reason, 1, &tables));
+    ASSERT_EQ(mesh.number_of_halfedges(), checked.number_of_halfedges());
+    for(Mesh::Halfedge_index h : checked.halfedges())
+      ASSERT_TRUE(mesh.target(h) == checked.target(h) && mesh.next(h) == checked.next(h)
+                  && mesh.prev(h) == checked.prev(h) && mesh.face(h) == checked.face(h))
+        << "halfedge " << h;
+    for(Vertex_index v : checked.vertices())
+      ASSERT_TRUE(mesh.halfedge(v) == checked.halfedge(v) && mesh.point(v) == checked.point(v)) << "vertex " << v;
+  }
+}
+
 // The stages from the file to the answer: each named once, in seconds but the ratio; the time in no named stage
 // and the ratio follow from the others; the JSON has every name once.
 TEST(Statistics, StagesAddUp)

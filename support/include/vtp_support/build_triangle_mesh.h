@@ -17,6 +17,7 @@
 // used on triangles that are already in memory (the reading of other formats, the Python module).
 
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <array>
@@ -200,14 +201,16 @@ inline bool check_triangle_mesh(const std::vector<Triangle>& triangles, std::siz
 
 // Checks that the triangles form a valid mesh (check_triangle_mesh()) and builds its halfedge structure in
 // `mesh`, whose vertices are already there. Returns false (and leaves `mesh` to be cleared) if the triangles are
-// not a valid mesh.
+// not a valid mesh. `checked`, if given, holds the tables of an earlier check of the same triangles and the same
+// number of vertices (check_triangle_mesh() returned true): the check is not done again, and the tables are
+// consumed (moved from).
 //
 // The loops over corners, faces and vertices that write only their own entries run on `threads` OpenMP threads
 // (0: OpenMP's default); the mesh built does not depend on their number (it is the one that adding the edges in
 // the order of their first corner, then the faces in order, would give).
 template <class Point>
 bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_mesh<Point>& mesh,
-                         std::string& reason, int threads = 1)
+                         std::string& reason, int threads = 1, Corner_tables* checked = nullptr)
 {
   typedef CGAL::Surface_mesh<Point> Mesh;
   typedef typename Mesh::Vertex_index Vertex_index;
@@ -225,7 +228,12 @@ bool build_triangle_mesh(const std::vector<Triangle>& triangles, CGAL::Surface_m
 #endif
   threads = (std::max)(1, threads);
   Corner_tables tables;
-  if(!check_triangle_mesh(triangles, n, reason, threads, &tables))
+  if(checked != nullptr)
+  {
+    CGAL_precondition(checked->opposite.size() == nc && checked->last_in.size() == n);
+    tables = std::move(*checked);
+  }
+  else if(!check_triangle_mesh(triangles, n, reason, threads, &tables))
     return false;
   std::vector<std::uint32_t>& opposite = tables.opposite;
   const std::vector<std::uint32_t>& last_in = tables.last_in;

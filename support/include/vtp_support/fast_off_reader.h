@@ -10,8 +10,9 @@
 #ifndef VTP_SUPPORT_FAST_OFF_READER_H
 #define VTP_SUPPORT_FAST_OFF_READER_H
 
-// A fast path from a plain ASCII OFF file that is a valid triangle mesh to a `Surface_mesh`: the file is parsed in
-// chunks with std::from_chars, checked to be a valid mesh with the same rules as
+// A fast path from a plain ASCII OFF file that is a valid triangle mesh to a `Surface_mesh`: the file is read
+// in blocks, the lines of each block parsed with std::from_chars by several threads, each taking ranges of
+// whole lines (see parse_off_triangles()); the triangles are checked to be a valid mesh with the same rules as
 // `CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh()` (no face with a repeated vertex, no directed
 // edge twice, every vertex a single fan of faces), and its halfedge structure is built directly from sorted
 // per-vertex lists instead of through a polygon soup.
@@ -21,11 +22,13 @@
 // errors of the file (too few lines, non-finite coordinates, indices out of range) throw `Fast_off_error`.
 
 #include <vtp_support/build_triangle_mesh.h>
+#include <vtp_support/off_text.h>
 
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -56,157 +59,181 @@ struct Fast_off_result
 
 namespace fast_off_detail {
 
-// Reads a file in chunks; a line is always entirely in the buffer when it is parsed (lines longer than
-// `max_line` are not handled).
-class Chunk_reader
+// What a range of lines of the body (after the header) holds: its lines with content, and the first problem met
+// in its lines, at the index of its line among the lines with content of the body.
+struct Line_range
 {
-public:
-  static constexpr std::size_t max_line = 1 << 16;
+  const char* begin = nullptr;
+  const char* end = nullptr;
+  std::uint64_t lines = 0;
+  std::uint64_t problem_line = (std::numeric_limits<std::uint64_t>::max)();
+  bool error = false;    // a definite error of the file (else a file for CGAL's reader)
+  std::string problem;   // the message of the error, or the reason it is left to CGAL
 
-  explicit Chunk_reader(std::FILE* f) : m_file(f), m_buffer(std::size_t(1) << 22)
+  void set_problem(std::uint64_t line, bool is_error, const std::string& what)
   {
-    m_p = m_end = m_buffer.data();
+    problem_line = line;
+    error = is_error;
+    problem = what;
   }
-
-  // Makes sure that the rest of the current line is in the buffer, unless the file ends first.
-  void refill_if_needed()
-  {
-    if(m_eof || static_cast<std::size_t>(m_end - m_p) >= max_line)
-      return;
-    char* const first = m_buffer.data();
-    char* const last = first + m_buffer.size();
-    const std::size_t rest = static_cast<std::size_t>(m_end - m_p);
-    if(rest > 0)
-      std::memmove(first, m_p, rest);
-    m_p = first;
-    char* end = first + rest;
-    while(!m_eof && end < last)
-    {
-      const std::size_t n = std::fread(end, 1, static_cast<std::size_t>(last - end), m_file);
-      end += n;
-      if(n == 0)
-      {
-        m_eof = true;
-        m_error = std::ferror(m_file) != 0;
-      }
-    }
-    m_end = end;
-  }
-
-  const char*& p() { return m_p; }
-  const char* end() const { return m_end; }
-  bool at_end() const { return m_p == m_end && m_eof; }
-  bool error() const { return m_error; }
-
-private:
-  std::FILE* m_file;
-  std::vector<char> m_buffer;
-  const char* m_p;
-  const char* m_end;
-  bool m_eof = false, m_error = false;
 };
 
-inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
-
-// Skips blanks on the current line (not the newline).
-inline void skip_blanks(const char*& p, const char* end)
+// Parses the line with content at `p` (number `line` among the lines with content of the body): a vertex, a
+// face, or nothing (after the faces). Returns false, with the problem in `range`, if the line is not what it
+// must be.
+template <class Set_point>
+bool parse_body_line(const char* p, const char* end, std::uint64_t line, std::uint64_t nv, std::uint64_t nf,
+                     const Set_point& set_point, std::vector<Triangle>& triangles, Line_range& range)
 {
-  while(p != end && is_blank(*p))
-    ++p;
-}
-
-// True if only blanks and an optional comment are left on the line; moves past its newline.
-inline bool end_of_line(const char*& p, const char* end)
-{
-  skip_blanks(p, end);
-  if(p != end && *p == '#')
-    while(p != end && *p != '\n')
-      ++p;
-  if(p == end)
+  if(line < nv)
+  {
+    double x[3];
+    for(int k = 0; k < 3; ++k)
+    {
+      const Number_status s = parse_double(p, end, x[k]);
+      if(s == NUMBER_MISSING)
+      {
+        range.set_problem(line, false, "unexpected vertex line");
+        return false;
+      }
+      if(s == NUMBER_OUT_OF_RANGE || !std::isfinite(x[k]))
+      {
+        range.set_problem(line, true, "vertex " + std::to_string(line) + " has a non-finite coordinate");
+        return false;
+      }
+    }
+    if(!end_of_line(p, end))
+    {
+      range.set_problem(line, false, "unexpected vertex line");
+      return false;
+    }
+    set_point(static_cast<std::size_t>(line), x[0], x[1], x[2]);
     return true;
-  if(*p != '\n')
+  }
+  if(line >= nv + nf)
+    return true;
+  const std::uint64_t i = line - nv;
+  std::uint64_t k = 0, id = 0;
+  if(!parse_index(p, end, k))
+  {
+    range.set_problem(line, false, "unexpected face line");
     return false;
-  ++p;
+  }
+  if(k != 3)
+  {
+    range.set_problem(line, false, "a face is not a triangle");
+    return false;
+  }
+  for(int j = 0; j < 3; ++j)
+  {
+    if(!parse_index(p, end, id))
+    {
+      range.set_problem(line, false, "unexpected face line");
+      return false;
+    }
+    if(id >= nv)
+    {
+      range.set_problem(line, true, "face " + std::to_string(i) + " refers to vertex " + std::to_string(id)
+                                      + ", out of range (there are " + std::to_string(nv) + " vertices)");
+      return false;
+    }
+    triangles[static_cast<std::size_t>(i)][j] = static_cast<std::uint32_t>(id);
+  }
+  // The rest of a face line (e.g. a colour) is ignored, as CGAL's reader does.
   return true;
 }
 
-// Moves to the start of the next line with content (skipping empty lines and comment lines).
-inline void next_content_line(Chunk_reader& r)
+// Parses the lines of [first, stop) (whole lines), the first of them with content being number `line` among the
+// lines with content of the body: cut into ranges of whole lines of about `range_bytes`, whose lines with
+// content `threads` OpenMP threads count, then parse, each knowing from the counts whether a line is a vertex
+// or a face, and which. Adds the lines with content to `line`; returns the range of the first problem (in the
+// order of the lines), or null.
+template <class Set_point>
+const Line_range* parse_lines(const char* first, const char* stop, std::uint64_t& line, std::uint64_t nv,
+                              std::uint64_t nf, const Set_point& set_point, std::vector<Triangle>& triangles,
+                              int threads, std::size_t range_bytes, std::vector<Line_range>& ranges)
 {
-  for(;;)
+  ranges.clear();
+  const std::size_t size = static_cast<std::size_t>(stop - first);
+  const std::size_t n = (std::max)(std::size_t(1), size / (std::max)(std::size_t(1), range_bytes));
+  for(std::size_t r = 1; r <= n; ++r)
   {
-    r.refill_if_needed();
-    const char*& p = r.p();
-    skip_blanks(p, r.end());
-    if(p == r.end())
-    {
-      if(r.at_end())
-        return;
+    const char* last = r == n ? stop : next_line(first + r * (size / n) - 1, stop);
+    if(last <= (ranges.empty() ? first : ranges.back().end))
       continue;
-    }
-    if(*p == '\n')
-    {
-      ++p;
-      continue;
-    }
-    if(*p == '#')
-    {
-      while(p != r.end() && *p != '\n')
-        ++p;
-      continue;
-    }
-    return;
+    Line_range range;
+    range.begin = ranges.empty() ? first : ranges.back().end;
+    range.end = last;
+    ranges.push_back(range);
   }
-}
-
-enum Number_status { NUMBER_OK, NUMBER_MISSING, NUMBER_OUT_OF_RANGE };
-
-inline Number_status parse_double(const char*& p, const char* end, double& x)
-{
-  skip_blanks(p, end);
-  if(p == end || *p == '\n' || *p == '#' || *p == '+')
-    return NUMBER_MISSING;
-  const std::from_chars_result r = std::from_chars(p, end, x);
-  if(r.ec == std::errc::result_out_of_range)
+  const long long nr = static_cast<long long>(ranges.size());
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if(threads > 1 && nr > 1)
+#endif
+  for(long long r = 0; r < nr; ++r)
   {
-    // overflow (a non-finite value) or underflow (a tiny value, kept as strtod rounds it)
-    const std::string token(p, r.ptr);
-    x = std::strtod(token.c_str(), nullptr);
-    p = r.ptr;
-    return std::isinf(x) ? NUMBER_OUT_OF_RANGE : NUMBER_OK;
+    Line_range& range = ranges[static_cast<std::size_t>(r)];
+    for(const char* q = range.begin; q != range.end; q = next_line(q, range.end))
+    {
+      const char* c = q;
+      range.lines += content_at(c, range.end) ? 1 : 0;
+    }
   }
-  if(r.ec != std::errc() || (r.ptr != end && !is_blank(*r.ptr) && *r.ptr != '\n' && *r.ptr != '#'))
-    return NUMBER_MISSING;
-  p = r.ptr;
-  return NUMBER_OK;
+  std::vector<std::uint64_t> first_line(ranges.size());
+  for(std::size_t r = 0; r < ranges.size(); ++r)
+  {
+    first_line[r] = line;
+    line += ranges[r].lines;
+  }
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if(threads > 1 && nr > 1)
+#endif
+  for(long long r = 0; r < nr; ++r)
+  {
+    Line_range& range = ranges[static_cast<std::size_t>(r)];
+    std::uint64_t l = first_line[static_cast<std::size_t>(r)];
+    for(const char* q = range.begin; q != range.end && l < nv + nf; q = next_line(q, range.end))
+    {
+      const char* c = q;
+      if(!content_at(c, range.end))
+        continue;
+      if(!parse_body_line(c, range.end, l, nv, nf, set_point, triangles, range))
+        break;
+      ++l;
+    }
+  }
+  for(const Line_range& range : ranges)
+    if(range.problem_line != (std::numeric_limits<std::uint64_t>::max)())
+      return &range;
+  return nullptr;
 }
 
-inline bool parse_index(const char*& p, const char* end, std::uint64_t& i)
-{
-  skip_blanks(p, end);
-  if(p == end || *p < '0' || *p > '9')
-    return false;
-  const std::from_chars_result r = std::from_chars(p, end, i);
-  if(r.ec != std::errc() || (r.ptr != end && !is_blank(*r.ptr) && *r.ptr != '\n' && *r.ptr != '#'))
-    return false;
-  p = r.ptr;
-  return true;
-}
-
-} // namespace fast_off_detail
-
-namespace fast_off_detail {
-
-// Parses `file` if it is a plain ASCII OFF file of triangles: reserve(nv) once the header is read, then
-// add_point(x, y, z) for each vertex in order, and the triangles into `triangles`. Returns NOT_HANDLED (with the
-// reason) for what CGAL's reader must read instead; throws Fast_off_error for definite errors of the file.
-template <class Reserve, class Add_point>
-Fast_off_result parse_off_triangles(const std::string& file, const Reserve& reserve, const Add_point& add_point,
-                                    std::vector<Triangle>& triangles)
+// Parses `file` if it is a plain ASCII OFF file of triangles: resize(nv) once the header is read, then
+// set_point(i, x, y, z) for each vertex i (from several threads, each i once), and the triangles into
+// `triangles`. Returns NOT_HANDLED (with the reason) for what CGAL's reader must read instead; throws
+// Fast_off_error for definite errors of the file.
+//
+// The file is read in blocks of `block_bytes` (one buffer, used again: no fresh memory per block), each cut
+// after its last newline and parsed by parse_lines() on `threads` threads (0: OpenMP's default). The blocks are
+// large (16 MB: 3 for a 423K-vertex mesh) because each is two parallel regions, and on a busy machine each
+// region may wait for a descheduled thread (with 4 MB blocks, the parse on 2 threads was slower than on one). Of the problems
+// found, the one of the first line counts, as if the file were parsed line after line: the outcome (the mesh,
+// the reason or the error) does not depend on the number of threads, the ranges or the blocks. A header after
+// more than a block of comments, or a line longer than a block, is left to CGAL's reader.
+template <class Resize, class Set_point>
+Fast_off_result parse_off_triangles(const std::string& file, const Resize& resize, const Set_point& set_point,
+                                    std::vector<Triangle>& triangles, int threads = 1,
+                                    std::size_t range_bytes = std::size_t(1) << 20,
+                                    std::size_t block_bytes = std::size_t(1) << 24)
 {
   typedef std::chrono::steady_clock Clock;
   const Clock::time_point t0 = Clock::now();
   Fast_off_result result;
+  auto not_handled = [&](const std::string& why) {
+    result.status = Fast_off_result::NOT_HANDLED;
+    result.reason = why;
+    return result;
+  };
   std::FILE* f = std::fopen(file.c_str(), "rb");
   if(f == nullptr)
     throw Fast_off_error(std::string("cannot open the file: ") + std::strerror(errno));
@@ -215,86 +242,93 @@ Fast_off_result parse_off_triangles(const std::string& file, const Reserve& rese
     std::FILE* f;
     ~Closer() { std::fclose(f); }
   } closer{ f };
-  Chunk_reader r(f);
-  auto not_handled = [&](const std::string& why) {
-    result.status = Fast_off_result::NOT_HANDLED;
-    result.reason = why;
-    return result;
+  std::vector<char> buffer((std::max)(std::size_t(16), block_bytes));
+  std::size_t have = 0;
+  bool eof = false, read_error = false;
+  auto fill = [&]() {
+    while(!eof && have < buffer.size())
+    {
+      const std::size_t n = std::fread(buffer.data() + have, 1, buffer.size() - have, f);
+      have += n;
+      if(n == 0)
+      {
+        eof = true;
+        read_error = std::ferror(f) != 0;
+      }
+    }
   };
+  fill();
+  const char* p = buffer.data();
+  const char* end = buffer.data() + have;
 
   // Header: "OFF", then the numbers of vertices, faces and edges.
-  next_content_line(r);
-  const char*& p = r.p();
-  if(r.end() - p < 3 || std::memcmp(p, "OFF", 3) != 0 || (r.end() - p > 3 && !is_blank(p[3]) && p[3] != '\n'))
+  next_content_line(p, end);
+  if(end - p < 3 || std::memcmp(p, "OFF", 3) != 0 || (end - p > 3 && !is_blank(p[3]) && p[3] != '\n'))
     return not_handled("not a plain OFF header");
   p += 3;
   std::uint64_t counts[3];
   for(int k = 0; k < 3; ++k)
   {
-    skip_blanks(p, r.end());
-    if(p == r.end() || *p == '\n' || *p == '#')
+    skip_blanks(p, end);
+    if(p == end || *p == '\n' || *p == '#')
     {
-      end_of_line(p, r.end());
-      next_content_line(r);
+      end_of_line(p, end);
+      next_content_line(p, end);
     }
-    if(!parse_index(p, r.end(), counts[k]))
+    if(!parse_index(p, end, counts[k]))
       return not_handled("unexpected header");
   }
-  if(!end_of_line(p, r.end()))
+  if(!end_of_line(p, end) || (p == end && !eof))
     return not_handled("unexpected header");
   const std::uint64_t nv = counts[0], nf = counts[1];
   if(nv >= (std::uint64_t(1) << 31) || nf >= (std::uint64_t(1) << 31) / 3)
     return not_handled("too large for 32-bit indices");
   if(nv == 0)
     throw Fast_off_error("the mesh has no vertices");
+#ifdef _OPENMP
+  if(threads <= 0)
+    threads = omp_get_max_threads();
+#endif
+  threads = (std::max)(1, threads);
 
-  reserve(static_cast<std::size_t>(nv));
-  for(std::uint64_t i = 0; i < nv; ++i)
-  {
-    next_content_line(r);
-    if(r.at_end())
-      throw Fast_off_error("the file ends after " + std::to_string(i) + " of " + std::to_string(nv) + " vertices");
-    double x[3];
-    for(int k = 0; k < 3; ++k)
-    {
-      const Number_status s = parse_double(p, r.end(), x[k]);
-      if(s == NUMBER_MISSING)
-        return not_handled("unexpected vertex line");
-      if(s == NUMBER_OUT_OF_RANGE || !std::isfinite(x[k]))
-        throw Fast_off_error("vertex " + std::to_string(i) + " has a non-finite coordinate");
-    }
-    if((p == r.end() && !r.at_end()) || !end_of_line(p, r.end()))
-      return not_handled("unexpected vertex line");
-    add_point(x[0], x[1], x[2]);
-  }
-
+  resize(static_cast<std::size_t>(nv));
   triangles.resize(static_cast<std::size_t>(nf));
-  for(std::uint64_t i = 0; i < nf; ++i)
+  std::uint64_t line = 0;
+  std::vector<Line_range> ranges;
+  std::size_t consumed = static_cast<std::size_t>(p - buffer.data());
+  for(;;)
   {
-    next_content_line(r);
-    if(r.at_end())
-      throw Fast_off_error("the file ends after " + std::to_string(i) + " of " + std::to_string(nf) + " faces");
-    std::uint64_t k = 0, id = 0;
-    if(!parse_index(p, r.end(), k))
-      return not_handled("unexpected face line");
-    if(k != 3)
-      return not_handled("a face is not a triangle");
-    for(int j = 0; j < 3; ++j)
+    if(consumed > 0)
     {
-      if(!parse_index(p, r.end(), id))
-        return not_handled("unexpected face line");
-      if(id >= nv)
-        throw Fast_off_error("face " + std::to_string(i) + " refers to vertex " + std::to_string(id)
-                             + ", out of range (there are " + std::to_string(nv) + " vertices)");
-      triangles[i][j] = static_cast<std::uint32_t>(id);
+      std::memmove(buffer.data(), buffer.data() + consumed, have - consumed);
+      have -= consumed;
+      consumed = 0;
     }
-    if(p == r.end() && !r.at_end())
-      return not_handled("unexpected face line");
-    // The rest of a face line (e.g. a colour) is ignored, as CGAL's reader does.
-    while(p != r.end() && *p != '\n')
-      ++p;
+    fill();
+    const char* stop = buffer.data() + have;
+    if(!eof)
+    {
+      while(stop != buffer.data() && stop[-1] != '\n')
+        --stop;
+      if(stop == buffer.data())
+        return not_handled("a line is longer than " + std::to_string(buffer.size()) + " bytes");
+    }
+    if(const Line_range* problem = parse_lines(buffer.data(), stop, line, nv, nf, set_point, triangles, threads,
+                                               range_bytes, ranges))
+    {
+      if(problem->error)
+        throw Fast_off_error(problem->problem);
+      return not_handled(problem->problem);
+    }
+    consumed = static_cast<std::size_t>(stop - buffer.data());
+    if((eof && consumed == have) || line >= nv + nf)
+      break;
   }
-  if(r.error())
+  if(line < nv)
+    throw Fast_off_error("the file ends after " + std::to_string(line) + " of " + std::to_string(nv) + " vertices");
+  if(line < nv + nf)
+    throw Fast_off_error("the file ends after " + std::to_string(line - nv) + " of " + std::to_string(nf) + " faces");
+  if(read_error)
     throw Fast_off_error("read error");
   if(nf == 0)
     throw Fast_off_error("the mesh has no faces");
@@ -315,9 +349,19 @@ Fast_off_result read_off_triangle_mesh(const std::string& file, CGAL::Surface_me
   typedef std::chrono::steady_clock Clock;
   mesh.clear();
   std::vector<Triangle> triangles;
+  typedef typename CGAL::Surface_mesh<Point>::size_type size_type;
+  typename CGAL::Surface_mesh<Point>::template Property_map<typename CGAL::Surface_mesh<Point>::Vertex_index, Point>
+    points;
   Fast_off_result result = parse_off_triangles(
-    file, [&mesh](std::size_t nv) { mesh.reserve(static_cast<typename CGAL::Surface_mesh<Point>::size_type>(nv), 0, 0); },
-    [&mesh](double x, double y, double z) { mesh.add_vertex(Point(x, y, z)); }, triangles);
+    file,
+    [&](std::size_t nv) {
+      mesh.resize(static_cast<size_type>(nv), 0, 0);
+      points = mesh.points();
+    },
+    [&points](std::size_t i, double x, double y, double z) {
+      points[typename CGAL::Surface_mesh<Point>::Vertex_index(static_cast<size_type>(i))] = Point(x, y, z);
+    },
+    triangles, threads);
   if(result.status != Fast_off_result::MESH)
     return result;
   const Clock::time_point t1 = Clock::now();
@@ -333,25 +377,27 @@ Fast_off_result read_off_triangle_mesh(const std::string& file, CGAL::Surface_me
 // Reads `file` into `xyz` (3 coordinates per vertex) and `triangles` if it is a plain ASCII OFF file of a valid
 // triangle mesh (see the top of this file): the same vertices and faces as read_off_triangle_mesh() (and
 // read_input_mesh()), without building the halfedge structure (the mesh is only checked, by `threads` threads).
-// build_seconds is the time of the check.
+// build_seconds is the time of the check. `tables`, if given, receives the tables of the check (for
+// build_triangle_mesh() on the same triangles, which then does not check them again).
 inline Fast_off_result read_off_triangle_soup(const std::string& file, std::vector<double>& xyz,
-                                              std::vector<fast_off_detail::Triangle>& triangles, int threads = 1)
+                                              std::vector<fast_off_detail::Triangle>& triangles, int threads = 1,
+                                              fast_off_detail::Corner_tables* tables = nullptr)
 {
   using namespace fast_off_detail;
   typedef std::chrono::steady_clock Clock;
   xyz.clear();
   Fast_off_result result = parse_off_triangles(
-    file, [&xyz](std::size_t nv) { xyz.reserve(3 * nv); },
-    [&xyz](double x, double y, double z) {
-      xyz.push_back(x);
-      xyz.push_back(y);
-      xyz.push_back(z);
+    file, [&xyz](std::size_t nv) { xyz.resize(3 * nv); },
+    [&xyz](std::size_t i, double x, double y, double z) {
+      xyz[3 * i] = x;
+      xyz[3 * i + 1] = y;
+      xyz[3 * i + 2] = z;
     },
-    triangles);
+    triangles, threads);
   if(result.status != Fast_off_result::MESH)
     return result;
   const Clock::time_point t1 = Clock::now();
-  if(!check_triangle_mesh(triangles, xyz.size() / 3, result.reason, threads))
+  if(!check_triangle_mesh(triangles, xyz.size() / 3, result.reason, threads, tables))
   {
     result.status = Fast_off_result::NOT_HANDLED;
     return result;
