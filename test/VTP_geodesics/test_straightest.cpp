@@ -1,6 +1,6 @@
 // Straightest geodesics (the exponential map, Geodesic_distance_solver::straightest_geodesic()): the straight
 // segment on a flat jittered grid, the unrolled line on a prism (a developable cylinder), the rule at the apex
-// of a cone (half the angle sum on each side) and lines around it, walks that reach the border, and on real
+// of a cone and at a saddle (half the angle sum on each side) and lines around them, walks that reach the border, and on real
 // meshes exp(log(v)) = v: from the source along the first segment of v's exact path, for rho(v), to v.
 
 #include "vtp_test_utils.h"
@@ -328,6 +328,76 @@ TEST(StraightestGeodesic, ConeApexRuleAndLinesAround)
       const Point_3 re = developed(xs, ys + length);
       EXPECT_LT(walk_distance(v.end_point, re), 1e-12) << "around, n " << n << " psi " << psi0;
     }
+  }
+}
+
+// A saddle vertex (a fan of 6 faces whose ring zigzags up and down: angle sum above 2 pi), developed corner by
+// corner: a walk through it leaves half the sum further round; a walk around it is the line of the development.
+TEST(StraightestGeodesic, SaddleRuleAndLinesAround)
+{
+  const int n = 6;
+  Polygon_soup soup;
+  soup.points.push_back(Point_3(0., 0., 0.));
+  for(int k = 0; k < n; ++k)
+    soup.points.push_back(Point_3(std::cos(2. * PI * k / n), std::sin(2. * PI * k / n), k % 2 == 0 ? 0.45 : -0.45));
+  for(int k = 0; k < n; ++k)
+    soup.add_triangle(0, 1 + k, 1 + (k + 1) % n);
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  const Walk_solver solver(mesh);
+  const Point_3 apex = soup.points[0];
+  std::vector<double> start_angle(n + 1, 0.);  // the angle of the development where corner j starts
+  for(int j = 0; j < n; ++j)
+  {
+    const Vector_3 a = soup.points[1 + j] - apex, b = soup.points[1 + (j + 1) % n] - apex;
+    start_angle[j + 1] = start_angle[j] + std::acos(a * b / std::sqrt(a.squared_length() * b.squared_length()));
+  }
+  const double sum = start_angle[n];
+  ASSERT_GT(sum, 2. * PI + 0.1);
+  // the unit vector at the angle phi of the development, in the face of the development's angle psi
+  auto vector_at = [&](double psi, double phi) {
+    const double shift = std::floor(psi / sum) * sum;  // psi and phi turned by the same whole turns
+    psi -= shift;
+    phi -= shift;
+    int j = 0;
+    while(j + 1 < n && start_angle[j + 1] <= psi)
+      ++j;
+    const Vector_3 a = unit_vector(soup.points[1 + j] - apex);
+    const Vector_3 b0 = soup.points[1 + (j + 1) % n] - apex;
+    const Vector_3 b = unit_vector(b0 - (b0 * a) * a);
+    const double u = phi - start_angle[j];
+    return std::cos(u) * a + std::sin(u) * b;
+  };
+  auto point = [&](double r, double psi) {
+    psi = std::fmod(psi, sum);
+    if(psi < 0.)
+      psi += sum;
+    return apex + r * vector_at(psi, psi);
+  };
+  const double reach = 0.4;  // well inside the fan (its ring is at distance about 0.8 or more)
+  for(double psi0 : { 0.4, 1.3, 2.9, 4.4, 5.9 })
+  {
+    // through the saddle
+    const Point_3 p = point(reach, psi0);
+    const Vector_3 d = apex - p;
+    const Walk_location start = location_in(mesh, face_containing(mesh, p), p);
+    const auto w = solver.straightest_geodesic(start, Dir3{ { d.x(), d.y(), d.z() } }, 2. * reach);
+    EXPECT_LT(walk_distance(w.end_point, point(reach, psi0 + sum / 2.)), 1e-12) << "psi " << psi0;
+    // around it: a line at distance 0.08 from the saddle, over about 2.6 rad of the development
+    auto developed = [&](double x, double y) { return point(std::sqrt(x * x + y * y), psi0 + std::atan2(y, x)); };
+    const double xs = 0.08, ys = -0.25, length = 0.5;
+    const Point_3 s = developed(xs, ys);
+    const Vector_3 ds = vector_at(psi0 + std::atan2(ys, xs), psi0 + PI / 2.);  // (0, 1) of the rotated development
+    const auto v = solver.straightest_geodesic(location_in(mesh, face_containing(mesh, s), s),
+                                               Dir3{ { ds.x(), ds.y(), ds.z() } }, length);
+    EXPECT_LT(walk_distance(v.end_point, developed(xs, ys + length)), 1e-12) << "around, psi " << psi0;
+    // from the saddle itself, at the angle theta of its frame: the generator at theta * sum / (2 pi) from the
+    // reference (the edge to source(halfedge(apex))), as the point of the development
+    const Vertex_index c(0);
+    const double theta = 1.1;
+    const auto from = solver.straightest_geodesic(c, Dir2{ { std::cos(theta), std::sin(theta) } }, reach);
+    const Vertex_index reference = mesh.source(mesh.halfedge(c));
+    const double psi_ref = start_angle[static_cast<std::size_t>(reference) - 1];
+    EXPECT_LT(walk_distance(from.end_point, point(reach, psi_ref + theta * sum / (2. * PI))), 1e-12);
   }
 }
 
