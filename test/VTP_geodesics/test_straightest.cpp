@@ -479,6 +479,40 @@ TEST(StraightestGeodesic, ExpOfLogOnRealMeshes)
   }
 }
 
+// Hard meshes (zero-length edges, faces of zero area, needles, borders): eight walks of 30 mean edge lengths from
+// every vertex; none fails, each polyline (in space) has the length walked (in the faces' frames), a walk that is
+// not stopped by the border or a face of zero area walks its whole length, the end direction is a unit vector.
+TEST(StraightestGeodesic, HardMeshesWalkConsistently)
+{
+  for(const char* name : { "degenerate_zero_length_edges.off", "nearly_collinear_flat.off",
+                           "nearly_collinear_height_field.off", "mushroom.off", "knot1.off" })
+  {
+    const Surface_mesh mesh = load_mesh(name);
+    const Walk_solver solver(mesh);
+    std::vector<Vertex_index> starts;
+    std::vector<Dir2> directions;
+    for(Vertex_index v : vertices(mesh))
+      for(int j = 0; j < 8 && !mesh.is_isolated(v); ++j)
+      {
+        const double a = 2.39996 * double(starts.size());
+        starts.push_back(v);
+        directions.push_back({ { std::cos(a), std::sin(a) } });
+      }
+    const double length = 30. * solver.mean_edge_length();
+    const auto walks = solver.straightest_geodesics(starts, directions, std::vector<double>(starts.size(), length));
+    for(std::size_t i = 0; i < walks.size(); ++i)
+    {
+      const auto& w = walks[i];
+      EXPECT_NEAR(polyline_length(w.points), w.length, 1e-9 * length) << name << " walk " << i;
+      if(!w.reached_border && !w.reached_degenerate_face)
+        EXPECT_NEAR(w.length, length, 1e-12 * length) << name << " walk " << i;
+      const auto& d = w.end_direction;
+      EXPECT_NEAR(d[0] * d[0] + d[1] * d[1] + d[2] * d[2], 1., 1e-12);
+    }
+    EXPECT_GT(walks.size(), 0u);
+  }
+}
+
 TEST(StraightestGeodesic, BadInputIsRejected)
 {
   Surface_mesh mesh = to_mesh<Surface_mesh>(planar_grid(4, 4, 1., 1.));

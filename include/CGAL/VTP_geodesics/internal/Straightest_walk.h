@@ -278,6 +278,9 @@ public:
       q.b[exit] = 1. - w;
       q.b[j1] = w;
       r.points.push_back(q);
+      const Index beyond = m_m.opposite[3 * s.face + exit];
+      if(beyond != NO_INDEX && m_m.is_degenerate_face[static_cast<std::size_t>(Mesh_arrays::face(beyond))])
+        return finish(s, r, Walk_result::DEGENERATE_FACE);  // on the edge, in the face before
       if(!cross_edge(s, fr, w))
         return finish(s, r, Walk_result::BORDER);
     }

@@ -97,6 +97,9 @@ public:
     }
     else
       Straightest_walk(m_index.arrays).walk(s, length / m_index.length_scale, r);
+    if(face != NO_INDEX && r.points.front().face == face)  // the start as given (exact even in a face of zero area)
+      for(int k = 0; k < 3; ++k)
+        r.points.front().b[k] = b[k];
     if(r.stop == Walk_result::NUMERICAL_FAILURE)
       throw std::runtime_error(name + ": the walk could not be followed through the faces (a numerical failure)");
     return result_of(r);
