@@ -505,7 +505,9 @@ TEST(StraightestGeodesic, HardMeshesWalkConsistently)
       const auto& w = walks[i];
       EXPECT_NEAR(polyline_length(w.points), w.length, 1e-9 * length) << name << " walk " << i;
       if(!w.reached_border && !w.reached_degenerate_face)
+      {
         EXPECT_NEAR(w.length, length, 1e-12 * length) << name << " walk " << i;
+      }
       const auto& d = w.end_direction;
       EXPECT_NEAR(d[0] * d[0] + d[1] * d[1] + d[2] * d[2], 1., 1e-12);
     }
