@@ -37,6 +37,25 @@ std::string file_name(const std::string& option, const std::string& s)
   return s;
 }
 
+// "V,X,Y,Z,LENGTH" of --trace: a vertex, a direction (finite, not zero) and a length (finite, >= 0).
+Arguments::Trace parse_trace(const std::string& option, const std::string& s)
+{
+  const std::vector<std::string> parts = vtp_support::split(s, ',');
+  if(parts.size() != 5)
+    throw Tool_error("invalid value '" + s + "' for " + option + " (expected V,X,Y,Z,LENGTH)");
+  Arguments::Trace t;
+  t.vertex = vtp_support::parse_index(option, parts[0]);
+  for(std::size_t k = 0; k < 3; ++k)
+    t.direction[k] = vtp_support::parse_double(option, parts[k + 1]);
+  t.length = vtp_support::parse_double(option, parts[4]);
+  const double n = t.direction[0] * t.direction[0] + t.direction[1] * t.direction[1] + t.direction[2] * t.direction[2];
+  if(!std::isfinite(n) || !(n > 0.))
+    throw Tool_error("invalid value '" + s + "' for " + option + " (the direction must be finite and not zero)");
+  if(!std::isfinite(t.length) || !(t.length >= 0.))
+    throw Tool_error("invalid value '" + s + "' for " + option + " (the length must be finite and >= 0)");
+  return t;
+}
+
 std::string methods_help()
 {
   std::string s;
@@ -110,7 +129,8 @@ const vtp_support::Option_table<Arguments>& option_table()
       [](Arguments& a, const std::string& n, const std::string& v) { a.path_to_points.push_back(parse_point(n, v)); } },
     { "--path-output", "FILE",
       "write the paths (the --path-to vertices in their list order, then\n"
-      "each --path-to-point), from the target to the source; by name:\n"
+      "each --path-to-point), from the target to the source, then the\n"
+      "--trace polylines, from their start; by name:\n"
       "  .obj: OBJ 'v' lines (the points of all paths), then one 'l'\n"
       "        line per path (a path of one point: 'l i i')\n"
       "  anything else: CGAL's polylines text, one path per line,\n"
@@ -119,6 +139,14 @@ const vtp_support::Option_table<Arguments>& option_table()
       "A path to a source itself is the single point. A vertex or point\n"
       "that no source reaches (or beyond --max-distance) is an error",
       [](Arguments& a, const std::string& n, const std::string& v) { a.path_output = file_name(n, v); } },
+    { "--trace", "V,X,Y,Z,LENGTH",
+      "straightest geodesic (the exp map) from vertex V (file order) in\n"
+      "the direction (X,Y,Z), projected onto the tangent plane at V,\n"
+      "for LENGTH (>= 0): straight across the faces, through a vertex\n"
+      "with half its angle sum on each side, ending on the border if it\n"
+      "gets there; may be repeated. The polylines go to --path-output,\n"
+      "after the paths, from V to the end",
+      [](Arguments& a, const std::string& n, const std::string& v) { a.traces.push_back(parse_trace(n, v)); } },
     { "--farthest-points", "K",
       "farthest-point sampling: takes K sample vertices, each the vertex\n"
       "farthest from the samples before it (the distances of --method:\n"
@@ -249,8 +277,8 @@ void check_sampling_arguments(const Arguments& a)
   }
   if(a.number_of_sources() > 0)
     throw Tool_error("--farthest-points chooses the sources: it takes no --source nor --source-point");
-  if(a.has_targets() || a.has_paths() || a.has_max_distance)
-    throw Tool_error("--farthest-points takes no --target, --target-point, --path-to, --path-to-point nor "
+  if(a.has_targets() || a.has_paths() || a.has_traces() || a.has_max_distance)
+    throw Tool_error("--farthest-points takes no --target, --target-point, --path-to, --path-to-point, --trace nor "
                      "--max-distance");
   if(a.check_cgal)
     throw Tool_error("--farthest-points takes no --check-cgal");
@@ -266,8 +294,10 @@ void check_arguments(const Arguments& a)
     throw Tool_error("--lambda and --lambda-g need --method avtp or pavtp");
   if(!a.target_output.empty() && !a.has_targets())
     throw Tool_error("--target-output needs --target or --target-point");
-  if(!a.path_output.empty() && !a.has_paths())
-    throw Tool_error("--path-output needs --path-to or --path-to-point");
+  if(!a.path_output.empty() && !a.has_paths() && !a.has_traces())
+    throw Tool_error("--path-output needs --path-to, --path-to-point or --trace");
+  if(a.has_traces() && a.path_output.empty())
+    throw Tool_error("--trace needs --path-output");
   if(a.through_pinches && (a.has_paths() || !a.target_points.empty() || a.farthest_points > 0 || a.check_cgal))
     throw Tool_error("--through-pinches takes no --path-to, --path-to-point, --target-point, --farthest-points nor "
                      "--check-cgal (whose reference runs on the cut surface)");

@@ -46,6 +46,15 @@ struct Arguments
   std::vector<std::size_t> path_to;
   std::vector<std::array<double, 3> > path_to_points;
   std::string path_output;                // empty: none
+  // Straightest geodesics (--trace V,X,Y,Z,LENGTH): from vertex V (file order) in the direction (X,Y,Z),
+  // projected onto the tangent plane, for LENGTH; written to --path-output after the paths.
+  struct Trace
+  {
+    std::size_t vertex = 0;
+    std::array<double, 3> direction = { { 1., 0., 0. } };
+    double length = 0.;
+  };
+  std::vector<Trace> traces;
   std::string output;                     // empty: none; "-": standard output
   std::string stats_json;                 // empty: none; "-": standard output
   std::string picture;                    // empty: none
@@ -78,6 +87,7 @@ struct Arguments
   bool several_sources() const { return number_of_sources() > 1 || farthest_points > 1; }
   bool has_targets() const { return !targets.empty() || !target_points.empty(); }
   bool has_paths() const { return !path_to.empty() || !path_to_points.empty(); }
+  bool has_traces() const { return !traces.empty(); }
 };
 
 typedef vtp_support::Option<Arguments> Option;

@@ -27,6 +27,8 @@ File_results file_results(const Arguments& args, const vtp_support::Input_mesh& 
   for(std::size_t k = 0; k < r.paths.size(); ++k)
     if(request.traced[k] >= 0)
       r.paths[k] = std::move(result.paths[static_cast<std::size_t>(request.traced[k])]);
+  for(std::vector<std::array<double, 3> >& t : result.traces)  // --trace, after the paths
+    r.paths.push_back(std::move(t));
 
   // Per vertex of the file; a file vertex at a source is at 0, labelled by the first source there.
   if(!args.picture.empty() && !input.direct)

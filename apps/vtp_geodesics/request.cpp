@@ -125,6 +125,19 @@ Request make_request(const Arguments& args, const vtp_support::Method_info& meth
     run.target_locations.push_back(p.location);
   run.stop_at_targets = args.has_targets();
   add_paths(args, input, path_points, r);
+  for(std::size_t k = 0; k < args.traces.size(); ++k)
+  {
+    Run_request::Trace t;
+    t.name = "--trace " + std::to_string(k) + " (from vertex " + std::to_string(args.traces[k].vertex) + ")";
+    check_vertices(std::vector<std::size_t>(1, args.traces[k].vertex), input, "--trace");
+    const std::vector<vtp_support::Vertex_index> copies = input.mesh_vertices_of(args.traces[k].vertex);
+    if(copies.empty())
+      throw Tool_error(t.name + ": the vertex is in no face of the mesh");
+    t.start = copies.front();
+    t.direction = args.traces[k].direction;
+    t.length = args.traces[k].length;
+    run.traces.push_back(t);
+  }
   run.check_cgal = args.check_cgal;
   if(args.through_pinches && !input.direct)
   {

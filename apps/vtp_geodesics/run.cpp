@@ -247,6 +247,19 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
     r.paths.push_back(to_arrays(points));
   }
 
+  // The straightest geodesics (they need no distances)
+  for(const Run_request::Trace& t : request.traces)
+  {
+    try
+    {
+      r.traces.push_back(to_arrays(solver.straightest_geodesic(t.start, t.direction, t.length).points));
+    }
+    catch(const VTP::Invalid_input_error& e)
+    {
+      throw Tool_error(t.name + ": " + e.what());
+    }
+  }
+
   if(request.check_cgal)
   {
     const auto t0 = std::chrono::steady_clock::now();

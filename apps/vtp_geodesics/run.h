@@ -58,6 +58,15 @@ struct Run_request
     Face_location location;
   };
   std::vector<Path> paths;
+  // Straightest geodesics to walk (--trace): from a mesh vertex, a 3D direction (projected), a length.
+  struct Trace
+  {
+    std::string name;                     // for the errors: "--trace 2"
+    vtp_support::Vertex_index start;
+    std::array<double, 3> direction = { { 1., 0., 0. } };
+    double length = 0.;
+  };
+  std::vector<Trace> traces;
   bool check_cgal = false;                // also run CGAL::Surface_mesh_shortest_path
   // --through-pinches: the copies of each vertex that the repair split, joined after the run (which then goes
   // to the end: max_distance and the targets bound the result, not the work)
@@ -76,6 +85,7 @@ struct Run_result
   std::vector<int> labels;                // want_labels: per mesh vertex, the nearest source's label or -1
   std::vector<double> target_location_distances; // per target location
   std::vector<std::vector<std::array<double, 3> > > paths; // per path: its points, target first, source last
+  std::vector<std::vector<std::array<double, 3> > > traces; // per trace: its points, start first
   std::vector<double> reference;          // CGAL::Surface_mesh_shortest_path's, if check_cgal
   double cgal_seconds = 0.;
   std::size_t join_runs = 0;              // --through-pinches: the runs that joined the copies

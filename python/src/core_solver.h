@@ -21,6 +21,7 @@
 //   queries.cpp    distances(), path(), distance(), locate()
 //   matrices.cpp   matrix_dense(), matrix_sparse(): rows on all cores, Ctrl-C and progress every 0.2 s
 //   sampling.cpp   farthest_point_sampling(), with the Voronoi cell areas
+//   straightest.cpp  trace(): straightest geodesics (the exp map), many walks on the solver's threads
 //   io.cpp         read_mesh(), symmetric_min_csr(); the conversions of vertex indices, face locations and
 //                  barycentric coordinates between Python's arrays and the library
 //
@@ -147,6 +148,10 @@ public:
                   std::int64_t b_face, const Double_array& b_bary, const std::string& method_name, double lam);
   py::tuple locate(const Double_array& P);
 
+  // straightest.cpp
+  py::tuple trace(const Index_array& start_vertices, const Index_array& start_faces, const Double_array& start_bary,
+                  const Double_array& directions, const Double_array& lengths, int threads);
+
   // matrices.cpp
   py::array matrix_dense(const Index_array& sources, const Index_array& columns, bool all_columns,
                          double max_distance, bool single, const std::string& method_name, double lam, int threads,
@@ -245,6 +250,7 @@ void define_queries(py::class_<Core_solver>& c);
 void define_matrices(py::class_<Core_solver>& c);
 void define_sampling(py::class_<Core_solver>& c);
 void define_io(py::module_& m);
+void define_straightest(py::class_<Core_solver>& c);
 
 } // namespace vtp_python
 

@@ -164,3 +164,46 @@ def check_method(method):
     if not isinstance(method, str):
         raise TypeError("method must be a string (one of %s), got %r" % (", ".join(methods), method))
     return method.lower()
+
+
+def trace_starts(start, locate):
+    """The start(s) of ``trace()`` -> (batch, vertices int64 (n,) (-1: a point), faces int64 (n,), barycentric
+    (n, 3)): a vertex index or an array of them, a (face, barycentric) pair or (faces, barycentric) arrays, xyz
+    (3,) or (n, 3) (their nearest surface points)."""
+    if isinstance(start, (bool, _np.bool_)):
+        raise TypeError("start must be a vertex index or a point, got a bool")
+    if isinstance(start, tuple) and len(start) == 2:
+        batch = _np.ndim(start[0]) > 0
+        faces, bary = surface_points(start, locate, "start")
+    else:
+        a = _np.asarray(start)
+        if a.dtype.kind in "iu" and a.dtype != _np.bool_:
+            if a.ndim > 1:
+                raise ValueError("start: vertex indices must be one index or a 1-D array")
+            batch = a.ndim == 1  # (ascontiguousarray makes a scalar 1-D)
+            vertices = as_index_array(a, "start").reshape(-1)
+            n = vertices.shape[0]
+            return batch, vertices, _np.full(n, -1, dtype=_np.int64), _np.zeros((n, 3))
+        batch = a.ndim == 2
+        faces, bary = surface_points(a, locate, "start")
+    n = faces.shape[0]
+    return batch, _np.full(n, -1, dtype=_np.int64), faces, bary
+
+
+def trace_directions(direction, length, n, batch):
+    """The directions (n, 2) or (n, 3) and the lengths (n,) of ``trace()``: one direction or length is used for
+    every start."""
+    d = as_float_array(direction, "direction")
+    if d.ndim == 1 and _np.ndim(direction) == 1:
+        d = _np.broadcast_to(d, (n, d.shape[0]))
+    if d.ndim != 2 or d.shape[0] != n or d.shape[1] not in (2, 3):
+        raise ValueError("direction must be a 2D or 3D vector%s, got shape %s"
+                         % (" or one per start (n, 2) or (n, 3)" if batch else "", _np.shape(direction)))
+    scalar = _np.ndim(length) == 0
+    length_array = as_float_array(length, "length")
+    if scalar:
+        length_array = _np.full(n, float(length_array.reshape(-1)[0]))
+    if length_array.shape != (n,):
+        raise ValueError("length must be a number%s, got shape %s" % (" or one per start (n,)" if batch else "",
+                                                                    length_array.shape))
+    return _np.ascontiguousarray(d), length_array

@@ -1,10 +1,11 @@
 """The queries of a solver (private; methods of ``vtp_geodesics.Solver``): distances from several sources, a
-geodesic path, the distance between two points, the nearest surface points."""
+geodesic path, the distance between two points, the nearest surface points, straightest geodesics."""
 
 import math as _math
 
 from ._arguments import (SOURCE_DEFAULT, check_float, check_method, check_threads, one_point,
-                         recommended_lambda, source_vertices, surface_points, vertex_list, xyz_rows)
+                         recommended_lambda, source_vertices, surface_points, trace_directions, trace_starts,
+                         vertex_list, xyz_rows)
 
 
 class Queries:
@@ -113,3 +114,55 @@ class Queries:
         float64 (k, 3))``, barycentric coordinates with respect to F[face]. An AABB tree of the faces is
         built on the first call."""
         return self._core.locate(xyz_rows(xyz))
+
+    def trace(self, start, direction, length, *, threads=0, return_details=False):
+        """Straightest geodesics (the exponential map): from ``start``, walk straight along the surface in
+        ``direction`` for ``length``. Inside a face the walk is a segment; across an edge it goes on in the
+        unfolded next face; through a vertex it leaves with half the vertex's angle sum on each side (Polthier and
+        Schmies' straightest geodesics); it ends exactly on the border if it reaches it (or at a border vertex).
+
+        Parameters
+        ----------
+        start : int, (face, barycentric), xyz, or a batch of them
+            A vertex index, a point of the surface as a face index and 3 barycentric coordinates (with respect
+            to F[face]), or a position (3,) replaced by the nearest surface point; a batch: an int array (n,),
+            ``(faces (n,), barycentric (n, 3))`` arrays, or positions (n, 3).
+        direction : (2,) or (3,), or one per start (n, 2) or (n, 3)
+            2D: in the tangent frame of the start, that of ``log_map()`` (at a vertex: angles from the edge to
+            ``source(halfedge(v))``, counter-clockwise, scaled by 2 pi / the vertex's angle sum, pi / sum at the
+            border; at a point of a face: x along F[face][0] -> F[face][1], y towards F[face][2]), so that
+            ``trace(c, log[v] / rho[v], rho[v])`` walks towards v. 3D: projected onto the tangent plane.
+        length : float >= 0, or one per start (n,)
+        threads : int, default 0 (the solver's)
+            The walks of a batch are shared among the threads.
+        return_details : bool, default False
+            Also return the lengths walked and whether each walk stopped on the border.
+
+        Returns
+        -------
+        path : ndarray float64 (k, 3) (a batch: a list of them)
+            The points from the start to the end: the start, each edge crossed, each vertex passed, the end.
+        end : (face int, barycentric ndarray (3,)) (a batch: faces int64 (n,), barycentric float64 (n, 3))
+            The end point, with respect to F[face].
+        end_direction : ndarray float64 (3,) (a batch: (n, 3))
+            The unit direction of the walk at its end, tangent to the end's face.
+        walked, border : float, bool (a batch: (n,) arrays), only with ``return_details=True``
+
+        Raises
+        ------
+        ValueError
+            A start that is not a vertex or a point of a face, a zero or non-finite direction (or one orthogonal
+            to the tangent plane), a negative or non-finite length.
+        """
+        batch, sv, sf, sb = trace_starts(start, self._core.locate)
+        d, lengths = trace_directions(direction, length, sv.shape[0], batch)
+        P, offsets, faces, bary, end_dir, walked, border = self._core.trace(sv, sf, sb, d, lengths,
+                                                                            check_threads(threads))
+        paths = [P[offsets[i]:offsets[i + 1]] for i in range(sv.shape[0])]
+        if batch:
+            result = (paths, (faces, bary), end_dir)
+            details = (walked, border)
+        else:
+            result = (paths[0], (int(faces[0]), bary[0]), end_dir[0])
+            details = (float(walked[0]), bool(border[0]))
+        return result + details if return_details else result

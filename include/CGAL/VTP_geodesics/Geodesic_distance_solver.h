@@ -18,6 +18,7 @@
 #include <CGAL/VTP_geodesics/Geodesic_traits_3.h>
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
+#include <CGAL/VTP_geodesics/Straightest_geodesic.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
@@ -28,6 +29,7 @@
 #include <CGAL/VTP_geodesics/internal/solver/Output_maps.h>
 #include <CGAL/VTP_geodesics/internal/solver/Path_queries.h>
 #include <CGAL/VTP_geodesics/internal/solver/Settings_from_parameters.h>
+#include <CGAL/VTP_geodesics/internal/solver/Straightest_queries.h>
 #include <CGAL/VTP_geodesics/internal/sampling/Farthest_point_sampler.h>
 #include <CGAL/VTP_geodesics/internal/source_forms.h>
 
@@ -283,7 +285,6 @@ public:
   }
   /// @}
 
-
   /// \name Results of the last computation
   /// @{
 
@@ -352,6 +353,26 @@ public:
     return out;
   }
   /// @}
+
+  /// \name Straightest geodesics (the exponential map)
+  /// A walk from `start` (a `vertex_descriptor` or a face location) in `direction` (a `std::array<double, 2>` in
+  /// the tangent frame of the start, that of the log map, or a `std::array<double, 3>`, projected) for `length`:
+  /// see `Straightest_geodesic`. Many walks (ranges of equal sizes) run on `number_of_threads` threads with
+  /// `CGAL::Parallel_tag`. \throws Invalid_input_error for a start not on a face of the mesh, a zero or
+  /// non-finite direction (or one orthogonal to the tangent plane), a negative or non-finite length ("walk i").
+  /// @{
+  template <class Start, class Direction>
+  Straightest_geodesic<face_descriptor, Point_3> straightest_geodesic(const Start& start, const Direction& direction,
+                                                                     double length) const
+  { return internal::Straightest_queries<TriangleMesh, Vertex_point_map>(m_mesh, m_vpm).walk(start, direction, length); }
+  template <class ConcurrencyTag = CGAL::Sequential_tag, class StartRange, class DirectionRange, class LengthRange,
+            class NP = CGAL::parameters::Default_named_parameters>
+  std::vector<Straightest_geodesic<face_descriptor, Point_3> > straightest_geodesics(const StartRange& starts,
+    const DirectionRange& directions, const LengthRange& lengths, const NP& np = parameters::default_values()) const
+  {
+    return internal::Straightest_queries<TriangleMesh, Vertex_point_map>(m_mesh, m_vpm)
+      .walks(starts, directions, lengths, internal::is_parallel<ConcurrencyTag>(), np);
+  } /// @}
 
   /// \name Mesh
   /// @{
