@@ -51,7 +51,7 @@ namespace internal {
 // thread waits for another one to arrive (Round_team): each takes face units of the current round as
 // long as there are some, and the master goes on once every unit is finished. So a thread that does not
 // run (the machine is busy with other work) holds the others back only if it stopped in the middle of a
-// unit, or when the master itself is descheduled. So the master measures the lists propagated per second
+// unit, or when the master itself is descheduled. So the master measures the windows created per second
 // with the team and alone, and runs the rounds the faster way (Team_choice in Round_team.h).
 class Parallel_loop
 {
@@ -73,6 +73,7 @@ public:
     m_k_ad = 0;
     m_round_number = 0;
     m_choice.reset(std::chrono::steady_clock::now());
+    m_created_before = st.created;
     selection_seconds = propagation_seconds = merge_seconds = 0.;
     rounds = parallel_rounds = 0;
 
@@ -159,8 +160,16 @@ private:
         return true;
       propagation_phase(0, 0);
       finish_round();
-      m_choice.record(static_cast<double>(m_round_lists), std::chrono::steady_clock::now());
+      record_round();
     }
+  }
+
+  // Thread 0: tells the team choice the work of the round just finished (the windows it created)
+  void record_round()
+  {
+    const std::size_t created = m_state->created;
+    m_choice.record(static_cast<double>(created - m_created_before), std::chrono::steady_clock::now());
+    m_created_before = created;
   }
 
   // Thread 0: the sequential steps, and its share of the rounds it publishes.
@@ -173,7 +182,7 @@ private:
       propagation_phase(0, m_round_number);
       m_sync.wait_for_items();
       finish_round();
-      m_choice.record(static_cast<double>(m_round_lists), std::chrono::steady_clock::now());
+      record_round();
     }
     if(m_threads == 1)
       while(next_parallel_round()) {}
@@ -208,7 +217,6 @@ private:
     m_from.swap(st.fifo);
     st.fifo.clear();
     const std::size_t n = m_from.size();
-    m_round_lists = n;
     // small arrays are not worth waking the team (same work, same result, one thread), nor are the
     // rounds while the master runs alone
     m_team = (n >= 4 * static_cast<std::size_t>(m_threads) && n <= Stealing_ranges::MAX_ITEMS
@@ -349,7 +357,7 @@ private:
   Propagation_state* m_state = nullptr;
   std::vector<Propagation_scratch> m_scratch;      // one per thread
   std::vector<Index> m_from;                       // the lists of the current round
-  std::size_t m_round_lists = 0;                   // their number
+  std::size_t m_created_before = 0;                // windows created before the round (Team_choice's work)
   int m_threads = 1, m_team = 1;
   long long m_k_ad = 1;
   bool m_in_selection = false;

@@ -221,8 +221,8 @@ private:
 };
 
 // Whether the master of a team runs the rounds with the team or alone, chosen by the throughput measured:
-// the work done per second (lists of PVTP, vertices of PVSP: any count of the same work in both ways) in
-// windows of `window` seconds. After a window with the way believed best, one window the other way (a probe);
+// the work done per second (windows created by PVTP, vertices taken by PVSP: any count of the same work in
+// both ways) in windows of `window` seconds (20 ms: several time slices of the system's scheduler). After a window with the way believed best, one window the other way (a probe);
 // the faster becomes the best; the best stays for 1, 2, 4 ... up to 32 windows while probes confirm it.
 // On an idle machine the team wins and a probe costs at most 1/33 of the time at the speed of one thread;
 // when the machine is busy with other work (a thread descheduled, a core taken), the master alone is faster
@@ -276,7 +276,7 @@ public:
     }
   }
 
-  static constexpr double window = 0.01;
+  static constexpr double window = 0.02;
 
 private:
   bool m_team = true, m_best_team = true, m_probing = false;
