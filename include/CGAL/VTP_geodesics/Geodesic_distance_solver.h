@@ -22,6 +22,7 @@
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
 #include <CGAL/VTP_geodesics/internal/solver/Known_field.h>
+#include <CGAL/VTP_geodesics/internal/solver/Log_map_output.h>
 #include <CGAL/VTP_geodesics/internal/solver/Many_sources.h>
 #include <CGAL/VTP_geodesics/internal/solver/Mesh_import.h>
 #include <CGAL/VTP_geodesics/internal/solver/Mesh_index.h>
@@ -206,6 +207,7 @@ public:
   {
     run<ConcurrencyTag>(m_sources, np);
     internal::write_output_maps(m_mesh.vertices, m_engine, vdm, np, m_statistics);
+    internal::write_log_map(m_mesh.vertices, m_engine, np);
   }
 
   /// computes the geodesic distance from `sources` to every vertex of the mesh and writes it into `vdm`, as
@@ -227,6 +229,7 @@ public:
   {
     run<ConcurrencyTag>(m_mesh.seeds_of(sources), np);
     internal::write_output_maps(m_mesh.vertices, m_engine, vdm, np, m_statistics);
+    internal::write_log_map(m_mesh.vertices, m_engine, np);
   }
 #endif
   /// @}
@@ -401,6 +404,9 @@ private:
     int threads = 0;
     internal::Propagation_settings settings = internal::settings_from_parameters(np, m_mesh, threads);
     internal::Known_field known = internal::known_field_of(np, m_mesh, m_mesh.length_scale, settings, seeds);
+    internal::log_map_settings(np, settings);
+    if(settings.log_map)
+      internal::prepare_log_map(m_mesh, m_vpm, np, seeds, m_engine.direction());
     std::vector<internal::Target> targets = m_mesh.targets_of(CGAL::parameters::get_parameter(np, internal_np::targets));
     m_engine.template run<ConcurrencyTag>(m_mesh.arrays, seeds, std::move(targets), settings, threads, m_statistics,
                                           std::move(known));
