@@ -58,7 +58,7 @@ int main(int argc, char** argv)
     std::cerr << "cannot read " << argv[1] << "\n";
     return 1;
   }
-  const Vertex source(argc > 2 ? static_cast<Mesh::size_type>(std::atoi(argv[2])) : 0);
+  const Vertex centre(argc > 2 ? static_cast<Mesh::size_type>(std::atoi(argv[2])) : 0);
   const int repeats = argc > 3 ? std::atoi(argv[3]) : 5;
   CGAL::VTP_geodesics::Geodesic_distance_solver<Mesh> solver(mesh);
   const std::size_t n = num_vertices(mesh);
@@ -72,13 +72,13 @@ int main(int argc, char** argv)
 #endif
   for(int r = 0; r < repeats; ++r)
   {
-    t_distance.push_back(seconds([&] { solver.compute(dm, source, VP::statistics(st)); }));
+    t_distance.push_back(seconds([&] { solver.compute(dm, centre, VP::statistics(st)); }));
 #ifndef LOG_MAP_BENCHMARK_DISTANCE_ONLY
-    t_log.push_back(seconds([&] { solver.compute(dm, source, VP::log_map(xm).statistics(st)); }));
-    t_strict.push_back(seconds([&] { solver.compute(dm, source, VP::log_map(xm).log_map_strict(true)); }));
+    t_log.push_back(seconds([&] { solver.compute(dm, centre, VP::log_map(xm).statistics(st)); }));
+    t_strict.push_back(seconds([&] { solver.compute(dm, centre, VP::log_map(xm).log_map_strict(true)); }));
 #endif
   }
-  std::cout << "mesh " << argv[1] << ": " << n << " vertices, source " << std::size_t(source) << ", " << repeats
+  std::cout << "mesh " << argv[1] << ": " << n << " vertices, source " << std::size_t(centre) << ", " << repeats
             << " runs each, median seconds (compute() with the output maps)\n";
   std::cout << "distance run:        " << median(t_distance) << " s\n";
 #ifndef LOG_MAP_BENCHMARK_DISTANCE_ONLY
@@ -87,6 +87,27 @@ int main(int argc, char** argv)
             << "\n";
   std::cout << "log map record: 16 bytes per vertex (theta double, turn float, via int32), " << 16. * double(n) / 1e6
             << " MB\n";
+  // continuity: the jump of theta across each edge whose two ends are farther from the source than 10 mean edge
+  // lengths (near the source theta turns fast), percentiles over the edges; the cut locus is not excluded
+  const double far = 10. * solver.mean_edge_length();
+  for(const bool strict : {false, true})
+  {
+    solver.compute(dm, centre, VP::log_map(xm).log_map_strict(strict));
+    std::vector<double> jumps;
+    for(auto e : edges(mesh))
+    {
+      const Vertex a = mesh.source(mesh.halfedge(e)), b = mesh.target(mesh.halfedge(e));
+      if(!(d[a] > far && d[b] > far && d[a] < 1e300 && d[b] < 1e300))
+        continue;
+      const double ta = std::atan2(x[a][1], x[a][0]), tb = std::atan2(x[b][1], x[b][0]);
+      jumps.push_back(std::abs(std::remainder(ta - tb, 2. * 3.14159265358979323846)));
+    }
+    std::sort(jumps.begin(), jumps.end());
+    const auto at = [&](double q) { return jumps.empty() ? 0. : jumps[static_cast<std::size_t>(q * double(jumps.size() - 1))]; };
+    std::cout << "theta jump across an edge (" << (strict ? "strict" : "default") << ", " << jumps.size()
+              << " edges beyond 10 mean edge lengths): median " << at(0.5) << ", 99% " << at(0.99) << ", 99.9% "
+              << at(0.999) << ", max " << at(1.) << " rad\n";
+  }
 #endif
   std::cout << "peak live windows " << st.peak_live_windows << " (" << double(st.peak_live_windows) / double(n)
             << " per vertex), window pool peak " << st.peak_window_bytes << " bytes ("
