@@ -150,3 +150,348 @@ TEST(TangentFrame, FaceLocationReference)
 }
 
 } // namespace
+
+// ------------------------------------------------------------------------------------------------
+// the log map (named parameters log_map, log_map_via, log_map_strict, reference_direction)
+// ------------------------------------------------------------------------------------------------
+#include "vtp_test_utils.h"
+
+namespace {
+
+namespace VP = CGAL::VTP_geodesics::parameters;
+typedef CGAL::VTP_geodesics::Geodesic_distance_solver<Surface_mesh> Log_solver;
+typedef Surface_mesh::Face_index Log_face;
+typedef std::pair<Log_face, std::array<double, 3> > Log_location;
+
+// The log map of one run: per vertex (in index order) rho, theta and via.
+struct Log_result
+{
+  std::vector<double> rho, theta;
+  std::vector<Vertex_index> via;
+};
+
+template <class Tag = CGAL::Sequential_tag, class Sources, class NP>
+Log_result log_map_of(Log_solver& solver, const Surface_mesh& mesh, const Sources& sources, const NP& np)
+{
+  const std::size_t n = index_range(mesh);
+  std::vector<double> d(n, -1.);
+  std::vector<std::array<double, 2> > x(n);
+  std::vector<Vertex_index> via(n);
+  auto dm = boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh));
+  auto xm = boost::make_iterator_property_map(x.begin(), get(boost::vertex_index, mesh));
+  auto vm = boost::make_iterator_property_map(via.begin(), get(boost::vertex_index, mesh));
+  solver.template compute<Tag>(dm, sources, np.log_map(xm).log_map_via(vm));
+  Log_result r;
+  r.rho = d;
+  r.via = via;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    if(d[i] < INF)
+    {
+      EXPECT_NEAR(std::hypot(x[i][0], x[i][1]), d[i], 1e-12 * (1. + d[i]));
+    }
+    r.theta.push_back(std::atan2(x[i][1], x[i][0]));
+  }
+  return r;
+}
+
+// the Euclidean direction of the edge from v to source(halfedge(v)) (the default reference of a vertex)
+double reference_angle(const Surface_mesh& mesh, Vertex_index v)
+{
+  const Point_3 a = mesh.point(v), b = mesh.point(source(halfedge(v, mesh), mesh));
+  return std::atan2(b.y() - a.y(), b.x() - a.x());
+}
+
+Point_3 location_point(const Surface_mesh& mesh, const Log_location& l)
+{
+  const auto h = halfedge(l.first, mesh);
+  const Point_3 &p0 = mesh.point(source(h, mesh)), &p1 = mesh.point(target(h, mesh)),
+                &p2 = mesh.point(target(next(h, mesh), mesh));
+  return Point_3(l.second[0] * p0.x() + l.second[1] * p1.x() + l.second[2] * p2.x(),
+                 l.second[0] * p0.y() + l.second[1] * p1.y() + l.second[2] * p2.y(),
+                 l.second[0] * p0.z() + l.second[1] * p1.z() + l.second[2] * p2.z());
+}
+
+// On the plane: rho = |v - c|, theta = the Euclidean angle of v - c minus `reference`, to 1e-12.
+void expect_euclidean(const Surface_mesh& mesh, const Log_result& r, const Point_3& c, double reference)
+{
+  for(Vertex_index v : vertices(mesh))
+  {
+    const Point_3 p = mesh.point(v);
+    const double rho = std::hypot(p.x() - c.x(), p.y() - c.y());
+    EXPECT_NEAR(r.rho[v], rho, 1e-12) << "vertex " << std::size_t(v);
+    if(rho > 1e-9)
+    {
+      EXPECT_NEAR(angle_difference(r.theta[v], std::atan2(p.y() - c.y(), p.x() - c.x()) - reference), 0., 1e-12)
+        << "vertex " << std::size_t(v);
+    }
+  }
+}
+
+TEST(LogMap, FlatJitteredGridFromAVertex)
+{
+  const int n = 12;
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(planar_grid(n, n, 1., 1., 0.3, 11));
+  Log_solver solver(mesh);
+  const Vertex_index c(static_cast<Surface_mesh::size_type>(grid_vertex(n, 5, 7)));
+  for(const bool strict : {false, true})
+  {
+    const Log_result r = log_map_of(solver, mesh, c, VP::log_map_strict(strict));
+    expect_euclidean(mesh, r, mesh.point(c), reference_angle(mesh, c));
+    for(Vertex_index v : vertices(mesh))
+      EXPECT_EQ(r.via[v], Vertex_index());  // the plane is convex: no geodesic passes through a vertex it turns at
+  }
+  // a reference direction (projected onto the plane)
+  const Log_result r = log_map_of(solver, mesh, c, VP::reference_direction(std::array<double, 3>{1., 1., 5.}));
+  expect_euclidean(mesh, r, mesh.point(c), PI / 4.);
+  // a border vertex: angles scaled by pi / pi
+  const Vertex_index b(static_cast<Surface_mesh::size_type>(grid_vertex(n, 4, 0)));
+  expect_euclidean(mesh, log_map_of(solver, mesh, b, VP::maximum_distance(INF)), mesh.point(b), 0.);
+}
+
+TEST(LogMap, FlatGridFromPointsOfFacesAndEdges)
+{
+  const int n = 10;
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(planar_grid(n, n, 1., 1., 0.25, 4));
+  Log_solver solver(mesh);
+  int checked = 0;
+  for(Log_face f : faces(mesh))
+  {
+    if(std::size_t(f) % 37 != 5)
+      continue;
+    const auto h = halfedge(f, mesh);
+    const Point_3 a = mesh.point(source(h, mesh)), b = mesh.point(target(h, mesh));
+    const double reference = std::atan2(b.y() - a.y(), b.x() - a.x());
+    for(const std::array<double, 3>& bary : {std::array<double, 3>{0.2, 0.3, 0.5}, std::array<double, 3>{0.35, 0.65, 0.},
+                                              std::array<double, 3>{0., 0.7, 0.3}})
+    {
+      const Log_location l(f, bary);
+      expect_euclidean(mesh, log_map_of(solver, mesh, l, VP::log_map_strict(false)), location_point(mesh, l), reference);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 3);
+}
+
+// The lateral surface of a regular pyramid (apex 0, rings 1..k on its lateral edges): developable, all its
+// curvature at the apex; its unrolling is a fan of angle S (the sum of the apex's angles). From the apex:
+// rho = the distance along the generators, theta = the unrolled angle scaled by 2 pi / S.
+TEST(LogMap, ConeScaledByItsAngle)
+{
+  const int sides = 7, rings = 5;
+  const double height = 1.3, radius = 0.8;
+  Polygon_soup soup;
+  soup.points.push_back(Point_3(0., 0., height));
+  for(int r = 1; r <= rings; ++r)
+    for(int k = 0; k < sides; ++k)
+    {
+      const double t = double(r) / rings, a = 2. * PI * k / sides;
+      soup.points.push_back(Point_3(t * radius * std::cos(a), t * radius * std::sin(a), height * (1. - t)));
+    }
+  const auto id = [&](int r, int k) { return r == 0 ? std::size_t(0) : std::size_t(1 + (r - 1) * sides + (k % sides)); };
+  for(int k = 0; k < sides; ++k)
+    soup.add_triangle(0, id(1, k), id(1, k + 1));
+  for(int r = 1; r < rings; ++r)
+    for(int k = 0; k < sides; ++k)
+    {
+      soup.add_triangle(id(r, k), id(r + 1, k), id(r + 1, k + 1));
+      soup.add_triangle(id(r, k), id(r + 1, k + 1), id(r, k + 1));
+    }
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  Log_solver solver(mesh);
+  const Vertex_index apex(0);
+  const double slant = std::hypot(radius, height);
+  const double chord = 2. * radius * std::sin(PI / sides);
+  const double alpha = 2. * std::asin(0.5 * chord / slant);  // the apex angle of one lateral face
+  const double S = sides * alpha;
+  // the unrolled angle of ring vertex k: k alpha (counter-clockwise seen from outside: the faces' orientation)
+  const int k_ref = static_cast<int>(std::size_t(source(halfedge(apex, mesh), mesh)) - 1) % sides;
+  const Log_result r = log_map_of(solver, mesh, apex, VP::log_map_strict(false));
+  for(int ring = 1; ring <= rings; ++ring)
+    for(int k = 0; k < sides; ++k)
+    {
+      const Vertex_index v(static_cast<Surface_mesh::size_type>(id(ring, k)));
+      EXPECT_NEAR(r.rho[v], slant * ring / rings, 1e-12);
+      EXPECT_NEAR(angle_difference(r.theta[v], (k - k_ref) * alpha * 2. * PI / S), 0., 1e-12) << ring << " " << k;
+    }
+}
+
+// The lateral surface of a prism (flat, unrolled into a strip of width the perimeter, wrapping around):
+// rho and theta are those of the strip, through the nearer image of the source.
+TEST(LogMap, CylinderUnrolled)
+{
+  const int sides = 9, bands = 6;
+  const double radius = 1., height = 2.;
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(open_prism(sides, bands, radius, height));
+  Log_solver solver(mesh);
+  const double side = 2. * radius * std::sin(PI / sides), perimeter = sides * side;
+  const int k0 = 2, r0 = 3;
+  const Vertex_index c(static_cast<Surface_mesh::size_type>(r0 * sides + k0));
+  const auto unrolled = [&](Vertex_index v, double& x, double& y) {
+    const int k = int(std::size_t(v)) % sides, r = int(std::size_t(v)) / sides;
+    x = std::remainder((k - k0) * side, perimeter);
+    y = (r - r0) * height / bands;
+  };
+  double xr, yr;
+  unrolled(source(halfedge(c, mesh), mesh), xr, yr);
+  const Log_result r = log_map_of(solver, mesh, c, VP::log_map_strict(false));
+  for(Vertex_index v : vertices(mesh))
+  {
+    double x, y;
+    unrolled(v, x, y);
+    EXPECT_NEAR(r.rho[v], std::hypot(x, y), 1e-12);
+    if(v != c)
+    {
+      EXPECT_NEAR(angle_difference(r.theta[v], std::atan2(y, x) - std::atan2(yr, xr)), 0., 1e-12) << std::size_t(v);
+    }
+  }
+}
+
+// theta of the direction d (3D) at vertex c, in c's frame computed from the 3D points of the mesh (independently
+// of Tangent_frame.h): faces counter-clockwise from the edge c -> source(halfedge(c)), scaled to the circle.
+double theta_of_direction(const Surface_mesh& mesh, Vertex_index c, const Vector_3& d, bool& found)
+{
+  const auto angle = [](const Vector_3& a, const Vector_3& b) {
+    return std::atan2(std::sqrt(CGAL::cross_product(a, b).squared_length()), a * b);
+  };
+  auto h = opposite(halfedge(c, mesh), mesh);  // c -> source(halfedge(c))
+  bool border = false;
+  for(auto g : CGAL::halfedges_around_source(c, mesh))
+    if(!is_border(g, mesh) && is_border(opposite(g, mesh), mesh))
+    {
+      h = g;  // at the border: the border edge with the surface counter-clockwise of it
+      border = true;
+    }
+  double before = 0., at = 0., sum = 0.;
+  found = false;
+  for(std::size_t k = 0; k < degree(c, mesh) && !is_border(h, mesh); ++k)
+  {
+    const Vector_3 e0 = mesh.point(target(h, mesh)) - mesh.point(c);
+    const Vector_3 e1 = mesh.point(source(prev(h, mesh), mesh)) - mesh.point(c);
+    const double corner = angle(e0, e1), a0 = angle(e0, d), a1 = angle(d, e1);
+    const Vector_3 normal = CGAL::cross_product(e0, e1);
+    if(!found && std::abs(a0 + a1 - corner) < 1e-9 && std::abs(d * normal) < 1e-9 * std::sqrt(d.squared_length() * normal.squared_length()))
+    {
+      found = true;
+      at = before + a0;
+    }
+    before += corner;
+    sum += corner;
+    h = opposite(prev(h, mesh), mesh);
+  }
+  return at * (border ? PI : 2. * PI) / sum;
+}
+
+// theta against the first segment of the trace-back path (the solver's path queries): at every vertex whose
+// path passes through no vertex, and with strict at every vertex (the first segment leads to the first vertex).
+void expect_log_map_follows_paths(const Surface_mesh& mesh, Vertex_index c, bool strict, std::size_t& compared)
+{
+  Log_solver solver(mesh);
+  const Log_result r = log_map_of(solver, mesh, c, VP::log_map_strict(strict).record_paths(true));
+  for(Vertex_index v : vertices(mesh))
+  {
+    if(v == c || !(r.rho[v] < INF))
+      continue;
+    std::vector<Point_3> points;
+    solver.shortest_path_points(v, std::back_inserter(points));
+    std::vector<Log_location> locations;
+    solver.shortest_path_locations(v, std::back_inserter(locations));
+    bool through_vertex = false;
+    for(std::size_t i = 1; i + 1 < locations.size(); ++i)
+      for(double b : locations[i].second)
+        through_vertex = through_vertex || b > 1. - 1e-12;
+    if(through_vertex && !strict)
+      continue;
+    ASSERT_GE(points.size(), 2u);
+    const Vector_3 d = points[points.size() - 2] - points.back();
+    bool found = false;
+    const double t = theta_of_direction(mesh, c, d, found);
+    ASSERT_TRUE(found) << "vertex " << std::size_t(v);
+    EXPECT_NEAR(angle_difference(r.theta[v], t), 0., 1e-9) << "vertex " << std::size_t(v) << (strict ? " strict" : "");
+    ++compared;
+  }
+}
+
+TEST(LogMap, ThetaIsTheDirectionOfThePath)
+{
+  // (not three_peaks.off: its grid of nearly collinear vertices makes paths through a vertex and beside it tie
+  // to 1e-12, the trace-back and the log map then may take either)
+  for(const char* name : {"elephant_395.off", "sphere.off", "elephant-with-holes_565.off"})
+  {
+    const Surface_mesh mesh = load_mesh(name);
+    for(const bool strict : {false, true})
+    {
+      std::size_t compared = 0;
+      expect_log_map_follows_paths(mesh, Vertex_index(3), strict, compared);
+      EXPECT_GT(compared, strict ? num_vertices(mesh) / 2 : std::size_t(5)) << name;
+    }
+  }
+}
+
+TEST(LogMap, SeveralSourcesRelativeToTheNearest)
+{
+  const int n = 12;
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(planar_grid(n, n, 1., 1., 0.3, 13));
+  Log_solver solver(mesh);
+  const std::vector<Vertex_index> sources{Vertex_index(static_cast<Surface_mesh::size_type>(grid_vertex(n, 3, 3))),
+                                          Vertex_index(static_cast<Surface_mesh::size_type>(grid_vertex(n, 9, 8)))};
+  std::vector<std::size_t> labels(index_range(mesh));
+  const Log_result r = log_map_of(solver, mesh, sources,
+                                  VP::nearest_source_map(boost::make_iterator_property_map(labels.begin(), get(boost::vertex_index, mesh))));
+  for(Vertex_index v : vertices(mesh))
+  {
+    const Vertex_index c = sources[labels[v]];
+    const Point_3 p = mesh.point(v), q = mesh.point(c);
+    EXPECT_NEAR(r.rho[v], std::hypot(p.x() - q.x(), p.y() - q.y()), 1e-12);
+    if(v != c)
+    {
+      EXPECT_NEAR(angle_difference(r.theta[v], std::atan2(p.y() - q.y(), p.x() - q.x()) - reference_angle(mesh, c)), 0.,
+                  1e-12);
+    }
+  }
+}
+
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+// PVTP: the same distances; the same theta (strict: at every vertex; default: at all but a few vertices, where
+// the order of the offers decides between two within rounding of each other, Direction_record::on_offer()).
+TEST(LogMap, ParallelAgreesWithSequential)
+{
+  const Surface_mesh mesh = load_mesh("elephant.off");
+  for(const bool strict : {false, true})
+  {
+    Log_solver solver(mesh);
+    const Log_result a = log_map_of(solver, mesh, Vertex_index(0), VP::log_map_strict(strict));
+    const Log_result b =
+      log_map_of<CGAL::Parallel_tag>(solver, mesh, Vertex_index(0), VP::log_map_strict(strict).number_of_threads(3));
+    std::size_t differ = 0;
+    for(Vertex_index v : vertices(mesh))
+    {
+      EXPECT_NEAR(a.rho[v], b.rho[v], 1e-12 * (1. + a.rho[v]));
+      EXPECT_EQ(a.via[v], b.via[v]);
+      differ += a.rho[v] > 0. && angle_difference(a.theta[v], b.theta[v]) > 1e-9;
+    }
+    if(strict)
+      EXPECT_EQ(differ, 0u);
+    else
+      EXPECT_LE(differ, num_vertices(mesh) / 1000 + 1);
+  }
+}
+#endif
+
+TEST(LogMap, RejectedInput)
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(planar_grid(4, 4, 1., 1.));
+  Log_solver solver(mesh);
+  const Vertex_index c(6);
+  const std::array<double, 3> zero{0., 0., 0.}, nan{std::nan(""), 0., 1.}, normal{0., 0., 1.};
+  EXPECT_THROW(log_map_of(solver, mesh, c, VP::reference_direction(zero)), CGAL::VTP_geodesics::Invalid_input_error);
+  EXPECT_THROW(log_map_of(solver, mesh, c, VP::reference_direction(nan)), CGAL::VTP_geodesics::Invalid_input_error);
+  EXPECT_THROW(log_map_of(solver, mesh, c, VP::reference_direction(normal)), CGAL::VTP_geodesics::Invalid_input_error);
+  EXPECT_THROW(log_map_of(solver, mesh, Log_location(Log_face(2), {0.2, 0.3, 0.5}), VP::reference_direction(normal)),
+               CGAL::VTP_geodesics::Invalid_input_error);
+  EXPECT_THROW(log_map_of(solver, mesh, c, VP::lambda(8.)), CGAL::VTP_geodesics::Invalid_input_error);
+  EXPECT_THROW(log_map_of(solver, mesh, c, VP::virtual_sources(true)), CGAL::VTP_geodesics::Invalid_input_error);
+  EXPECT_THROW(log_map_of(solver, mesh, Vertex_index(1000), VP::log_map_strict(false)), CGAL::VTP_geodesics::Invalid_input_error);
+}
+
+} // namespace

@@ -18,11 +18,11 @@
 #include <CGAL/VTP_geodesics/Geodesic_traits_3.h>
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
-#include <CGAL/VTP_geodesics/Straightest_geodesic.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
 #include <CGAL/VTP_geodesics/internal/solver/Known_field.h>
+#include <CGAL/VTP_geodesics/internal/solver/Log_map_output.h>
 #include <CGAL/VTP_geodesics/internal/solver/Many_sources.h>
 #include <CGAL/VTP_geodesics/internal/solver/Mesh_import.h>
 #include <CGAL/VTP_geodesics/internal/solver/Mesh_index.h>
@@ -208,6 +208,7 @@ public:
   {
     run<ConcurrencyTag>(m_sources, np);
     internal::write_output_maps(m_mesh.vertices, m_engine, vdm, np, m_statistics);
+    internal::write_log_map(m_mesh.vertices, m_engine, np);
   }
 
   /// computes the geodesic distance from `sources` to every vertex of the mesh and writes it into `vdm`, as
@@ -229,6 +230,7 @@ public:
   {
     run<ConcurrencyTag>(m_mesh.seeds_of(sources), np);
     internal::write_output_maps(m_mesh.vertices, m_engine, vdm, np, m_statistics);
+    internal::write_log_map(m_mesh.vertices, m_engine, np);
   }
 #endif
   /// @}
@@ -376,10 +378,8 @@ public:
 
   /// \name Mesh
   /// @{
-
   /// the dense index of `v` (vertices are numbered in the order of `vertices(tm)`; error messages name
-  /// vertices by this index).
-  /// \pre `v` is a vertex of the mesh.
+  /// vertices by this index). \pre `v` is a vertex of the mesh.
   std::size_t vertex_id(vertex_descriptor v) const { return m_mesh.position_of(get(m_mesh.vertex_id, v)); }
   /// the vertices, in the order of their dense indices.
   const std::vector<vertex_descriptor>& vertex_list() const { return m_mesh.vertices_in_order; }
@@ -393,8 +393,8 @@ public:
   /// number of saddle or boundary vertices (pseudo-source candidates).
   std::size_t number_of_pseudo_source_vertices() const
   {
-    return static_cast<std::size_t>(std::count(m_mesh.arrays.is_pseudo_source.begin(),
-                                               m_mesh.arrays.is_pseudo_source.end(), 1));
+    const std::vector<unsigned char>& p = m_mesh.arrays.is_pseudo_source;
+    return static_cast<std::size_t>(std::count(p.begin(), p.end(), 1));
   }
   /// seconds spent in the constructor.
   double preprocessing_seconds() const { return m_preprocessing_seconds; }
@@ -422,6 +422,7 @@ private:
     int threads = 0;
     internal::Propagation_settings settings = internal::settings_from_parameters(np, m_mesh, threads);
     internal::Known_field known = internal::known_field_of(np, m_mesh, m_mesh.length_scale, settings, seeds);
+    internal::start_log_map(np, settings, m_mesh, m_vpm, seeds, m_engine.direction());
     std::vector<internal::Target> targets = m_mesh.targets_of(CGAL::parameters::get_parameter(np, internal_np::targets));
     m_engine.template run<ConcurrencyTag>(m_mesh.arrays, seeds, std::move(targets), settings, threads, m_statistics,
                                           std::move(known));
@@ -444,7 +445,6 @@ private:
 
 } // namespace VTP_geodesics
 } // namespace CGAL
-
 #include <CGAL/enable_warnings.h>
 
 #endif // CGAL_VTP_GEODESICS_GEODESIC_DISTANCE_SOLVER_H

@@ -191,6 +191,39 @@ typename Solver_for<TriangleMesh, NamedParameters>::type solver_for(const Triang
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{log_map}
+///     \cgalParamDescription{the log map (geodesic polar coordinates): each vertex receives
+///       `{rho cos(theta), rho sin(theta)}`, rho its distance, theta the direction in which its geodesic leaves its
+///       nearest source, in the tangent frame of that source (counter-clockwise seen from the side the faces'
+///       normals point to; at a vertex source from the edge to `source(halfedge(c))` (at a border vertex, the
+///       border edge with the surface counter-clockwise of it), the angles scaled by 2 pi (pi at the border) /
+///       the sum of the corner angles; at a face location from `halfedge(f)`); behind a saddle or border vertex s
+///       the coordinates go on from those of s, the line turned at s by the rule of straightest geodesics (see
+///       `log_map_strict`); `{+infinity, +infinity}` where unreached. Exact methods only (VTP, PVTP):
+///       `Invalid_input_error` with `lambda` or `virtual_sources`}
+///     \cgalParamType{a class model of `WritablePropertyMap` with `vertex_descriptor` as key type and
+///       `std::array<double, 2>` as value type}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{log_map_via}
+///     \cgalParamDescription{with the log map: the last vertex each vertex's geodesic passes through (where it
+///       turns, a saddle or border vertex), or a default-constructed `vertex_descriptor` (none)}
+///     \cgalParamType{a class model of `WritablePropertyMap` with `vertex_descriptor` as key and value type}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{log_map_strict}
+///     \cgalParamDescription{with the log map: the strict polyhedral theta (a vertex behind a saddle or border
+///       vertex s gets the theta of s) instead of the coordinates continued from s}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{reference_direction}
+///     \cgalParamDescription{with the log map: a 3D direction, projected onto the tangent plane of each source
+///       (the face's plane; at a vertex, the plane orthogonal to the angle-weighted normal), whose theta is
+///       subtracted; `Invalid_input_error` if it is zero, not finite or orthogonal to the tangent plane}
+///     \cgalParamType{`std::array<double, 3>` or a \cgal `Vector_3`}
+///     \cgalParamDefault{none: the reference edges above}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{initial_distances}
 ///     \cgalParamDescription{distances already known (for example those of earlier sources): the computation
 ///       adds `sources` to that field. Every vertex gets the minimum of its initial distance and of its

@@ -43,7 +43,8 @@ constexpr std::size_t no_source = (std::numeric_limits<std::size_t>::max)();
   X(lambda) X(lambda_g) X(number_of_threads) X(minimum_window_length) X(nearest_source_map)              \
   X(maximum_distance) X(targets) X(stop_at_targets) X(record_paths) X(virtual_sources)                   \
   X(virtual_sources_per_vertex) X(initial_distances) X(initial_nearest_sources) X(first_source_label)    \
-  X(first_sample) X(sampling_radius) X(covering_radii) X(vertex_distance_map)
+  X(first_sample) X(sampling_radius) X(covering_radii) X(vertex_distance_map) X(log_map) X(log_map_via)      \
+  X(log_map_strict) X(reference_direction)
 
 // The names of CGAL's named parameters that a chain of this package can hold: X(NAME, TAG_TYPE).
 #define CGAL_VTP_GEODESICS_FOR_EACH_CGAL_NAMED_PARAMETER(X)                                              \

@@ -47,14 +47,16 @@ struct Propagation_result
 // its origin (ox, oy), unit direction (ux, uy) (both in the frame of h) and length lc; appends
 // the child to `out` unless it is shorter than `min_length`. `c_pos` is the position of C on the
 // child edge: a ray that does not meet the line of the child edge properly (only by rounding,
-// for the ray through C) is sent to C.
+// for the ray through C) is sent to C. `turn` is the direction of the child edge in the frame of h (its
+// atan2, for the log map; 0 without it).
 inline void emit_child(const Window& w, double p0, double p1,
                        double ox, double oy, double ux, double uy, double lc, double c_pos,
-                       double min_length, std::vector<Window>& out)
+                       double min_length, double turn, std::vector<Window>& out)
 {
   Window c;
   rotate_into(w.sx - ox, w.sy - oy, ux, uy, c.sx, c.sy);
   c.sigma = w.sigma;
+  c.angle = w.angle + turn;
   c.origin = w.origin;
   if(!(c.sy < 0.))
     return; // source on the line of the edge (degenerate face): nothing crosses
@@ -80,14 +82,15 @@ inline void emit_child(const Window& w, double p0, double p1,
 // The distance the list offers to C (through the best window) is returned. Children are trimmed
 // by the vertices later, when their own list is propagated (with the distances of that time).
 // The children are appended to out_ac (frame of A -> C) and out_cb (frame of C -> B); when
-// `want_ac` / `want_cb` is false (border edge) the corresponding children are not computed.
+// `want_ac` / `want_cb` is false (border edge) the corresponding children are not computed. With
+// `want_angles` (the log map), the children's angles get the change of frame.
 inline Propagation_result
 propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
                const std::vector<Window_ends>& ends,
                double min_ratio,
                bool want_ac, bool want_cb,
                std::vector<Window>& out_ac, std::vector<Window>& out_cb,
-               std::vector<double>& scratch_xc)
+               std::vector<double>& scratch_xc, bool want_angles = false)
 {
   CGAL_precondition(ends.size() == ws.size());
   Propagation_result res;
@@ -147,6 +150,7 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
   const double uax = lac > 0. ? cx / lac : 0., uay = lac > 0. ? cy / lac : 0.;
   const double ubx = lcb > 0. ? (L - cx) / lcb : 0., uby = lcb > 0. ? -cy / lcb : 0.;
   const double min_ac = min_ratio * lac, min_cb = min_ratio * lcb;
+  const double turn_ac = want_angles ? std::atan2(uay, uax) : 0., turn_cb = want_angles ? std::atan2(uby, ubx) : 0.;
 
   for(std::size_t i = 0; i < n; ++i)
   {
@@ -156,13 +160,13 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
     {
       const double p1 = (std::min)(w.b1, (std::min)(xc, sp_s));
       if(p1 > w.b0)
-        emit_child(w, w.b0, p1, 0., 0., uax, uay, lac, lac, min_ac, out_ac);
+        emit_child(w, w.b0, p1, 0., 0., uax, uay, lac, lac, min_ac, turn_ac, out_ac);
     }
     if(want_cb && lcb > 0.)
     {
       const double p0 = (std::max)(w.b0, (std::max)(xc, sp_s));
       if(w.b1 > p0)
-        emit_child(w, p0, w.b1, cx, cy, ubx, uby, lcb, 0., min_cb, out_cb);
+        emit_child(w, p0, w.b1, cx, cy, ubx, uby, lcb, 0., min_cb, turn_cb, out_cb);
     }
   }
   return res;
@@ -170,13 +174,15 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
 
 // The window from a point source at (t, 0) of h, at distance sigma, that covers the whole edge X -> Y of
 // face(h) whose frame is given by its origin (ox, oy) and unit direction (ux, uy) (in the frame of h) and
-// its length lc; appended to `out` unless the point lies on the line of the edge.
+// its length lc; appended to `out` unless the point lies on the line of the edge. `angle`: the direction of the
+// x-axis of h in the turning frame of the origin (the log map).
 inline void emit_whole_edge(double t, double sigma, Index origin, double ox, double oy, double ux, double uy,
-                            double lc, std::vector<Window>& out)
+                            double lc, double angle, std::vector<Window>& out)
 {
   Window c;
   rotate_into(t - ox, -oy, ux, uy, c.sx, c.sy);
   c.sigma = sigma;
+  c.angle = angle + std::atan2(uy, ux);
   c.origin = origin;
   c.b0 = 0.;
   c.b1 = lc;
@@ -188,17 +194,17 @@ inline void emit_whole_edge(double t, double sigma, Index origin, double ox, dou
 // how a vertex reaches the face beyond a zero-area face in which it lies inside the opposite edge
 // (a window cannot carry it: its source would be on the line of the edge). The whole triangle is
 // seen from the point, so each child covers its whole edge. Children are appended as in
-// propagate_list(), with the origin `origin`; the distance to C is returned.
-inline double propagate_edge_point(const Halfedge_geometry& g, double t, double sigma, Index origin,
+// propagate_list(), with the origin `origin` (and `angle`, as emit_whole_edge()); the distance to C is returned.
+inline double propagate_edge_point(const Halfedge_geometry& g, double t, double sigma, Index origin, double angle,
                                    bool want_ac, bool want_cb,
                                    std::vector<Window>& out_ac, std::vector<Window>& out_cb)
 {
   const double L = g.length, cx = g.cx, cy = g.cy;
   const double lac = g.l_prev, lcb = g.l_next;
   if(want_ac && lac > 0.)  // frame of A -> C: origin A, direction (cx, cy) / lac
-    emit_whole_edge(t, sigma, origin, 0., 0., cx / lac, cy / lac, lac, out_ac);
+    emit_whole_edge(t, sigma, origin, 0., 0., cx / lac, cy / lac, lac, angle, out_ac);
   if(want_cb && lcb > 0.)  // frame of C -> B: origin C, direction (L - cx, -cy) / lcb
-    emit_whole_edge(t, sigma, origin, cx, cy, (L - cx) / lcb, -cy / lcb, lcb, out_cb);
+    emit_whole_edge(t, sigma, origin, cx, cy, (L - cx) / lcb, -cy / lcb, lcb, angle, out_cb);
   const double dx = cx - t;
   return sigma + std::sqrt(dx * dx + cy * cy);
 }

@@ -34,11 +34,14 @@ namespace internal {
 // sigma + sqrt((x - sx)^2 + sy^2). The window is waiting to be propagated into face(h).
 // `origin` says which (pseudo-)source the image stands for: a vertex index, or the number of
 // vertices plus the index of a point source (see Seeding.h); children keep the origin of their parent.
+// `angle` is the direction of the x-axis of the frame of h in the turning frame of the origin (the log map,
+// engine/Direction_record.h; 0 when the log map is not asked for).
 struct Window
 {
   double b0, b1;
   double sx, sy;
   double sigma;
+  double angle;
   Index origin;
 };
 

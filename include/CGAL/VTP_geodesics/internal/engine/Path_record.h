@@ -38,6 +38,7 @@ struct Offer
   Index halfedge = NO_INDEX;
   double sx = 0., sy = 0.;
   double bend = std::numeric_limits<double>::quiet_NaN();
+  double angle = 0.;          // the window's angle (the log map, Direction_record.h)
 };
 
 // Offer of a straight segment from `origin`.
@@ -59,6 +60,7 @@ inline Offer offer_through_window(double distance, Index h, const Window& w, dou
   o.halfedge = h;
   o.sx = w.sx;
   o.sy = w.sy;
+  o.angle = w.angle;
   double bend;
   if(window_bend(w, px, py, bend))
     o.bend = bend;

@@ -17,6 +17,7 @@
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/Triangle_propagation.h>
 #include <CGAL/VTP_geodesics/internal/Window_storage.h>
+#include <CGAL/VTP_geodesics/internal/engine/Direction_record.h>
 #include <CGAL/VTP_geodesics/internal/engine/Known_vertices.h>
 #include <CGAL/VTP_geodesics/internal/engine/Path_record.h>
 #include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
@@ -47,6 +48,8 @@ struct Propagation_settings
   bool virtual_sources = false;        // one virtual source per vertex (VSP / PVSP) instead of windows
   bool second_virtual_source = false;  // with virtual_sources: a second one per vertex, of another root
   bool known_distances = false;        // the run starts from distances already known (Known_vertices.h)
+  bool log_map = false;                // the log map (Direction_record.h)
+  bool log_map_strict = false;         // with log_map: the strict polyhedral theta behind pseudo-sources
 };
 
 // The buffers of one thread: a list being propagated, its children, and counters.
@@ -81,6 +84,7 @@ public:
   Window_reset reset;
   Stop_rule stop;
   Path_record record;
+  Direction_record direction;          // the log map
   std::vector<Index> fifo;             // queued lists (sequential scheduling: FIFO order)
   Known_vertices known;                // runs from known distances
 
@@ -108,6 +112,7 @@ public:
     const std::size_t number_of_targets = targets.size();
     stop.start(m, s.limit, s.stop_at_targets, std::move(targets));
     record.start(s.record_paths, static_cast<std::size_t>(m.nv), number_of_targets);
+    direction.start(m, s.log_map, s.log_map_strict);
     known.start(static_cast<std::size_t>(m.nv), s.known_distances);
     m_events.clear();
     created = propagated = vertices_processed = pseudo_sources = 0;

@@ -179,6 +179,9 @@ public:
   const std::vector<Seed>& seeds() const { return m_seeds; }
   const std::vector<Target>& targets() const { return m_virtual_sources ? m_vsp.targets() : m_state.stop.targets(); }
   const Path_record& path_record() const { return m_virtual_sources ? m_vsp.record : m_state.record; }
+  // the log map: its sources (set before a run) and its angles after the run
+  Direction_record& direction() { return m_state.direction; }
+  const Direction_record& direction() const { return m_state.direction; }
 
 private:
   // Seeds m_seeds into the started state and runs the loop; returns the number of threads.

@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -51,21 +52,65 @@ public:
   // shared steps
   // ------------------------------------------------------------------------------------------
 
-  // Lowers the distance of v to what `offer` offers if that is shorter, and schedules v.
-  void light(Index v, const Offer& offer)
+  // Lowers the distance of v to what `offer` (of a window) offers if that is shorter, and schedules v.
+  void light(Index v, const Offer& offer) { light(v, offer, [&]() { return window_arrival(offer); }); }
+
+  // The same for any offer; arrival() gives the ray that reaches v (Direction_record.h), asked for only when
+  // the log map is.
+  template <class Arrival>
+  void light(Index v, const Offer& offer, const Arrival& arrival)
   {
-    if(offer.distance < dist[v])
+    const double old = dist[v];
+    if(offer.distance < old)
     {
       dist[v] = offer.distance;
       if(!label.empty())
         label[v] = label_of_origin(offer.origin);
       mark_lowered(v);
       record.on_vertex_lowered(v, offer);
+      if(direction.is_active())
+        direction.on_offer(v, offer.origin, offer.distance, old, arrival, dist);
       schedule.push(v, offer.distance);
     }
+    else if(direction.is_active() && offer.distance <= old * (1. + Path_record::tie)
+            && old < std::numeric_limits<double>::infinity())
+      direction.on_offer(v, offer.origin, offer.distance, old, arrival, dist);  // a tie
   }
 
-  void light(Index v, double value, Index origin) { light(v, straight_offer(value, origin)); }
+  // The ray of a window's offer to the third vertex C of face(h), in the frame of h. A path bent at an end of
+  // its edge that is a vertex (it ties the straight offer of that vertex) comes from that vertex.
+  Ray_arrival window_arrival(const Offer& o)
+  {
+    CGAL_assertion(o.halfedge != NO_INDEX);
+    const Mesh_arrays& m = *mesh;
+    const Index h = o.halfedge;
+    const Halfedge_geometry g = m.geometry[h];
+    const double c_dir = std::atan2(-g.cy, -g.cx);  // of prev(h), C -> A
+    if(!std::isnan(o.bend) && (o.bend <= 0. || o.bend >= g.length))
+    {
+      const Index end = o.bend <= 0. ? m.source[h] : m.target(h);
+      const bool emits = m.is_pseudo_source[end] || direction.is_source(end);
+      if(emits && direction.emission_angles(end, m_bend_angles))
+      {
+        if(o.bend <= 0.)  // from A along A -> C
+          return Ray_arrival{Direction_record::angle_of(m_bend_angles, h), g.cx, g.cy, Mesh_arrays::prev(h), c_dir, end};
+        const Index bc = Mesh_arrays::next(h);  // from B along B -> C, in the frame of B -> C
+        return Ray_arrival{Direction_record::angle_of(m_bend_angles, bc), g.l_next, 0., Mesh_arrays::prev(h),
+                           halfedge_direction_in_frame(m, bc, Mesh_arrays::prev(h)), end};
+      }
+      if(emits)  // strict: theta of the vertex
+        return Ray_arrival{0., 1., 0., NO_INDEX, 0., end};
+    }
+    if(!std::isnan(o.bend))
+    {
+      // bent at a vertex that does not turn geodesics (nearly flat) or inside the edge (an upper bound): the
+      // direction of the ray to the bend, the length of the path
+      const double ax = o.bend - o.sx, ay = -o.sy, bx = g.cx - o.bend, by = g.cy;
+      const double a = std::sqrt(ax * ax + ay * ay), scale = a > 0. ? (a + std::sqrt(bx * bx + by * by)) / a : 1.;
+      return Ray_arrival{o.angle, ax * scale, ay * scale, Mesh_arrays::prev(h), c_dir};
+    }
+    return Ray_arrival{o.angle, g.cx - o.sx, g.cy - o.sy, Mesh_arrays::prev(h), c_dir};
+  }
 
   // Target t is reached at distance d straight from `origin` (serial).
   void offer_to_target(Index t, double d, Index origin)
@@ -119,11 +164,19 @@ public:
     const double dv = dist[v];
     if(dv > 0.)
       ++pseudo_sources;
+    // the log map: the direction of each half-edge leaving v in the turning frame of v
+    const bool angles = direction.is_active() && direction.emission_angles(v, m_angles);
     for(Index c = m.corner_begin[v]; c < m.corner_begin[v + 1]; ++c)
     {
       const Index h = m.corners[c];
-      light(m.target(h), dv + m.geometry[h].length, v);
-      light(m.source[Mesh_arrays::prev(h)], dv + m.geometry[h].l_prev, v);
+      const Halfedge_geometry gh = m.geometry[h];
+      const double base = angles ? Direction_record::angle_of(m_angles, h) : 0.;
+      light(m.target(h), straight_offer(dv + gh.length, v), [&]() {
+        return Ray_arrival{base, gh.length, 0., Mesh_arrays::next(h), std::atan2(gh.cy, gh.cx - gh.length)};
+      });
+      light(m.source[Mesh_arrays::prev(h)], straight_offer(dv + gh.l_prev, v), [&]() {
+        return Ray_arrival{base, gh.cx, gh.cy, Mesh_arrays::prev(h), std::atan2(-gh.cy, -gh.cx)};
+      });
     }
     for(Index c = m.corner_begin[v]; c < m.corner_begin[v + 1]; ++c)
     {
@@ -133,10 +186,16 @@ public:
       if(o == NO_INDEX)
         continue;
       const Halfedge_geometry& ge = m.geometry[e];
+      double angle = 0.;  // the direction of C -> B in the turning frame of v (the log map)
+      if(angles)
+      {
+        const Halfedge_geometry gh = m.geometry[h];
+        angle = Direction_record::angle_of(m_angles, h) + std::atan2(-gh.cy, gh.length - gh.cx);
+      }
       if(m.is_degenerate_face[Mesh_arrays::face(h)])
       {
         // v lies on the line of B-C (up to rounding): no window can start from it
-        emit_point(o, ge.length - ge.cx, dv, v);
+        emit_point(o, ge.length - ge.cx, dv, v, angle);
         continue;
       }
       Window w;
@@ -145,6 +204,7 @@ public:
       w.sx = ge.length - ge.cx;
       w.sy = -ge.cy;
       w.sigma = dv;
+      w.angle = angle;
       w.origin = v;
       if(!(w.sy < 0.))
         continue;
@@ -155,8 +215,9 @@ public:
   // A point source at distance dv lying at abscissa t on the half-edge o: if it is inside the edge, it is
   // a point source for face(o) (the windows it starts cover the two other edges of face(o)). When face(o)
   // has zero area, the point is carried on through the edge of face(o) that contains it (lighting the
-  // third vertex, on the line), a bounded number of times.
-  void emit_point(Index o, double t, double dv, Index origin)
+  // third vertex, on the line), a bounded number of times. `angle`: the direction of the x-axis of o in the
+  // turning frame of the origin (the log map).
+  void emit_point(Index o, double t, double dv, Index origin, double angle)
   {
     const Mesh_arrays& m = *mesh;
     for(int step = 0; step < 64 && o != NO_INDEX; ++step)
@@ -167,12 +228,15 @@ public:
       const Index c = m.source[Mesh_arrays::prev(o)];
       const Index h_ac = m.opposite[Mesh_arrays::prev(o)];
       const Index h_cb = m.opposite[Mesh_arrays::next(o)];
+      const auto arrival = [&]() {
+        return Ray_arrival{angle, g.cx - t, g.cy, Mesh_arrays::prev(o), std::atan2(-g.cy, -g.cx)};
+      };
       if(!m.is_degenerate_face[Mesh_arrays::face(o)])
       {
         m_emit_ac.clear();
         m_emit_cb.clear();
-        light(c, propagate_edge_point(g, t, dv, origin, h_ac != NO_INDEX, h_cb != NO_INDEX, m_emit_ac, m_emit_cb),
-              origin);
+        light(c, straight_offer(propagate_edge_point(g, t, dv, origin, angle, h_ac != NO_INDEX, h_cb != NO_INDEX,
+                                                     m_emit_ac, m_emit_cb), origin), arrival);
         for(const Window& w : m_emit_ac)
           store_emitted(h_ac, w);
         for(const Window& w : m_emit_cb)
@@ -180,13 +244,17 @@ public:
         return;
       }
       const double dx = g.cx - t;
-      light(c, dv + std::sqrt(dx * dx + g.cy * g.cy), origin);
+      light(c, straight_offer(dv + std::sqrt(dx * dx + g.cy * g.cy), origin), arrival);
       if(t < g.cx)
+      {
         o = h_ac;            // A -> C, same abscissa
+        angle += std::atan2(g.cy, g.cx);
+      }
       else if(t > g.cx)
       {
         o = h_cb;            // C -> B, from C
         t -= g.cx;
+        angle += std::atan2(-g.cy, g.length - g.cx);
       }
       else
         return;              // the point is C itself
@@ -253,7 +321,8 @@ public:
     const Index h_cb = m.opposite[Mesh_arrays::next(h)];
     const Index h_ac = m.opposite[Mesh_arrays::prev(h)];
     const Propagation_result r = propagate_list(g, s.in, s.list.ends, settings.minimum_window_ratio,
-                                                h_ac != NO_INDEX, h_cb != NO_INDEX, s.out_ac, s.out_cb, s.list.xc);
+                                                h_ac != NO_INDEX, h_cb != NO_INDEX, s.out_ac, s.out_cb, s.list.xc,
+                                                direction.is_active());
     s.propagated += r.propagated;
     offer.distance = r.distance_to_C;
     if(offer.distance < std::numeric_limits<double>::infinity())
@@ -261,6 +330,8 @@ public:
       const Window& w = s.in[r.best];
       offer.origin = w.origin;
       record.on_list_offer(offer, h, w, g.cx, g.cy);
+      if(direction.is_active())  // (the log map needs the ray too)
+        offer = offer_through_window(offer.distance, h, w, g.cx, g.cy);
     }
     return offer;
   }
@@ -296,6 +367,7 @@ public:
 
 private:
   std::vector<Window> m_emit_ac, m_emit_cb;
+  std::vector<std::pair<Index, double> > m_angles, m_bend_angles;  // the log map: of the vertex emitting
 };
 
 } // namespace internal

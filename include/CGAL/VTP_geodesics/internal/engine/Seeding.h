@@ -34,6 +34,7 @@ namespace internal {
 struct Seed : Surface_point
 {
   Index label = 0;
+  Index user_face = NO_INDEX;  // a point given as a face location: the face given (the frame of the log map)
 };
 
 // The seed of the point of face f with barycentric coordinates (b0, b1, b2) with respect to the vertices
@@ -164,12 +165,17 @@ inline void seed_sources(Propagation_state& st, const std::vector<Seed>& seeds)
     if(s.kind == Seed::ON_EDGE)
     {
       const Index h = s.element;
-      const double length = m.geometry[h].length;
-      st.light(m.source[h], s.x, origin);
-      st.light(m.target(h), length - s.x, origin);
-      st.emit_point(h, s.x, 0., origin);
+      const Halfedge_geometry g = m.geometry[h];
+      const double length = g.length;
+      // the log map: the direction of the x-axis of h in the frame of the user's face
+      const double angle = st.direction.is_active() ? st.direction.seed_angle[i] : 0.;
+      st.light(m.source[h], straight_offer(s.x, origin), [&]() { return Ray_arrival{angle, -s.x, 0., h, 0.}; });
+      st.light(m.target(h), straight_offer(length - s.x, origin), [&]() {
+        return Ray_arrival{angle, length - s.x, 0., Mesh_arrays::next(h), std::atan2(g.cy, g.cx - length)};
+      });
+      st.emit_point(h, s.x, 0., origin, angle);
       if(m.opposite[h] != NO_INDEX)
-        st.emit_point(m.opposite[h], length - s.x, 0., origin);
+        st.emit_point(m.opposite[h], length - s.x, 0., origin, angle + TANGENT_FRAME_PI);
       // targets in the faces of the edge are reached straight
       const Index sides[2] = { h, m.opposite[h] };
       const double abscissa[2] = { s.x, length - s.x };
@@ -186,10 +192,14 @@ inline void seed_sources(Propagation_state& st, const std::vector<Seed>& seeds)
     {
       const Index h0 = 3 * s.element;
       const Face_frame frame(m, s.element);
+      // the log map: the direction of the x-axis of h0 in the frame of the user's face
+      const double angle = st.direction.is_active() ? st.direction.seed_angle[i] : 0.;
       for(int k = 0; k < 3; ++k)
       {
         const double dx = s.x - frame.x[k], dy = s.y - frame.y[k];
-        st.light(m.source[h0 + k], std::sqrt(dx * dx + dy * dy), origin);
+        st.light(m.source[h0 + k], straight_offer(std::sqrt(dx * dx + dy * dy), origin), [&]() {
+          return Ray_arrival{angle, -dx, -dy, h0 + k, halfedge_direction_in_frame(m, h0, h0 + k)};
+        });
       }
       st.stop.for_each_target_in_face(s.element, [&](Index t) {
         const Target& target = st.stop.targets()[static_cast<std::size_t>(t)];
@@ -212,6 +222,7 @@ inline void seed_sources(Propagation_state& st, const std::vector<Seed>& seeds)
         w.sx = w.b1 - x;
         w.sy = -y;
         w.sigma = 0.;
+        w.angle = angle + halfedge_direction_in_frame(m, h0, h0 + k) + TANGENT_FRAME_PI;  // o, the reverse of h0 + k
         w.origin = origin;
         if(w.sy < 0.)
           st.store_emitted(o, w);

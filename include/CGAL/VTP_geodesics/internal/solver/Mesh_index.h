@@ -163,7 +163,9 @@ public:
       b[k] = (std::max)(0., b[k]);
       sum += b[k];
     }
-    return seed_from_barycentric(arrays, id, b[0] / sum, b[1] / sum, b[2] / sum, label);
+    Seed s = seed_from_barycentric(arrays, id, b[0] / sum, b[1] / sum, b[2] / sum, label);
+    s.user_face = id;
+    return s;
   }
 
   // the target of a vertex or a face location (validated as sources are; `role` and `position` name it in

@@ -1,0 +1,278 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_ENGINE_DIRECTION_RECORD_H
+#define CGAL_VTP_GEODESICS_INTERNAL_ENGINE_DIRECTION_RECORD_H
+
+#include <CGAL/license/VTP_geodesics.h>
+
+#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/Tangent_frame.h>
+
+#include <CGAL/assertions.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace VTP_geodesics {
+namespace internal {
+
+// The log map (geodesic polar coordinates), a hook of the propagation like the path record: per vertex the
+// angle theta of the offer that gave its distance, with no trace-back.
+//
+// Every window carries `angle`: the direction of the x-axis of its edge's frame in the *turning frame* of its
+// origin, so that the ray from the origin's image (sx, sy) to a point (px, py) leaves the origin at
+// gamma = angle + atan2(py - sy, px - sx) (children add the change of frame, Triangle_propagation.h).
+// - A source vertex c: the turning frame is its unscaled frame (Tangent_frame.h, minus the user's reference
+//   divided by the scale): theta = scale(c) * gamma.
+// - A source point (inside a face or an edge): the frame of the user's face: theta = gamma.
+// - A pseudo-source s (a saddle or border vertex the geodesic passes through): the turning frame is the
+//   tangent plane of the source, s's directions turned so that the line that reaches s goes on straight
+//   (straightest geodesics: equal angles on both sides, S(s) / 2 each at an interior vertex; at a border
+//   vertex the continued line makes the angle pi with the incoming one). A vertex v behind s gets the point
+//   P(s) + |s v| (cos gamma, sin gamma) of the tangent plane, P(s) = rho(s) (cos theta(s), sin theta(s)),
+//   and theta(v) its angle (rho stays the distance). With `strict`, theta(v) = theta(s) (polyhedral).
+//
+// Memory: 16 bytes per vertex (theta, turn, via), allocated only when the log map is asked for; 8 bytes per
+// window (Window::angle).
+struct Ray_arrival
+{
+  double angle;   // the direction of the x-axis of the frame F below, in the turning frame of the origin
+  double dx, dy;  // the vector from the origin's image to the vertex, in F
+  Index g;        // a half-edge leaving the vertex, in a face of the ray's last stretch
+  double g_dir;   // its direction in F
+  Index origin = NO_INDEX;  // if not NO_INDEX, the origin of the ray (a path bent at a vertex: that vertex)
+};
+
+// A vertex source of the log map: its reference half-edge (NO_INDEX: the border rule) and the theta of the
+// user's reference direction (subtracted).
+struct Log_map_source
+{
+  Index vertex = NO_INDEX;
+  Index reference = NO_INDEX;
+  double offset = 0.;
+};
+
+class Direction_record
+{
+public:
+  std::vector<double> theta;  // per vertex
+  // per vertex, a pseudo-source: the turning angle of its fan (a float: 1e-7 rad behind pseudo-sources is far
+  // below the mesh's own error there, and keeps the record at 16 bytes per vertex)
+  std::vector<float> turn;
+  // per vertex: the last vertex its geodesic passes through, NO_INDEX, or -2 - k for the vertex source k
+  std::vector<Index> via;
+  // Set by the caller before a run: the vertex sources, and per seed the direction of the x-axis of its
+  // half-edge's frame (edge seeds: the seed's half-edge; face seeds: 3f) in the user's face frame, minus the
+  // user's reference (point seeds only).
+  std::vector<Log_map_source> vertex_sources;
+  std::vector<double> seed_angle;
+
+  // Prepares a run (throws Invalid_input_error for a source vertex whose faces are not one fan).
+  void start(const Mesh_arrays& m, bool active, bool strict)
+  {
+    m_active = active;
+    m_strict = strict;
+    m_mesh = &m;
+    if(!active)
+    {
+      theta.clear();
+      turn.clear();
+      via.clear();
+      return;
+    }
+    const std::size_t nv = static_cast<std::size_t>(m.nv);
+    theta.assign(nv, 0.);
+    turn.assign(nv, 0.);
+    via.assign(nv, NO_INDEX);
+    m_frames.clear();
+    for(const Log_map_source& s : vertex_sources)
+    {
+      Vertex_frame frame;
+      if(!make_vertex_frame(m, s.vertex, s.reference, frame))
+        throw Invalid_input_error("the log map needs a source vertex whose faces form one fan around it");
+      via[s.vertex] = -2 - static_cast<Index>(m_frames.size());
+      m_frames.push_back(std::make_pair(frame, s.offset));
+    }
+  }
+
+  bool is_active() const { return m_active; }
+  bool is_source(Index v) const { return via[v] < NO_INDEX; }
+  bool is_strict() const { return m_strict; }
+
+  // An offer of `distance` from `origin` to v, whose distance was `old` (dist: the distances). It gives v its
+  // direction if it is shorter by more than rounding (Path_record::tie); on a tie, if its key is smaller: the
+  // last vertex it passes through (none first, then the least index), then theta in [0, 2 pi). So the choice
+  // does not depend on the order of the offers (VTP and PVTP), and a path that grazes a pseudo-source goes on
+  // straight.
+  template <class Arrival>
+  void on_offer(Index v, Index origin, double distance, double old, const Arrival& arrival,
+                const std::vector<double>& dist)
+  {
+    const bool lower = !(old < std::numeric_limits<double>::infinity()) || distance < old * (1. - 1e-12);
+    if(!lower && is_source(v))
+      return;
+    const Ray_arrival r = arrival();
+    double t, a;
+    Index last;
+    direction_of(origin, r, dist, t, a, last);
+    if(!lower && !(last < via[v] || (last == via[v] && angle_in_0_2pi(t) < angle_in_0_2pi(theta[v]))))
+      return;
+    theta[v] = t;
+    via[v] = last;
+    const Mesh_arrays& m = *m_mesh;
+    if(m_strict || !m.is_pseudo_source[v] || r.g == NO_INDEX)
+      return;
+    // the turning angle: the continued line (beta_in + S/2, or + pi at the border) goes on at `a`
+    bool border = false;
+    double sum = 0., phi = 0.;
+    fan_angles(r.g, border, sum, phi);
+    const double beta_in = phi + (std::atan2(-r.dy, -r.dx) - r.g_dir);
+    turn[v] = static_cast<float>(angle_in_0_2pi(a - (beta_in + (border ? TANGENT_FRAME_PI : 0.5 * sum))));
+  }
+
+  // The direction of the ray r from `origin` at its end: theta, the direction of its last stretch in the
+  // tangent plane of the source (a), the last vertex it passes through (last).
+  void direction_of(Index origin, const Ray_arrival& r, const std::vector<double>& dist, double& t, double& a,
+                    Index& last) const
+  {
+    const Mesh_arrays& m = *m_mesh;
+    if(r.origin != NO_INDEX)
+      origin = r.origin;
+    const double gamma = r.angle + std::atan2(r.dy, r.dx);
+    t = a = gamma;
+    last = NO_INDEX;
+    if(origin >= m.nv)
+      return;
+    if(is_source(origin))
+    {
+      a = t = m_frames[static_cast<std::size_t>(-2 - via[origin])].first.scale * gamma;
+      return;
+    }
+    last = origin;
+    t = theta[origin];
+    if(!m_strict)
+    {
+      const double run = std::sqrt(r.dx * r.dx + r.dy * r.dy), rho = dist[origin];
+      t = std::atan2(rho * std::sin(t) + run * std::sin(gamma), rho * std::cos(t) + run * std::cos(gamma));
+    }
+  }
+
+  // The direction of h (leaving v) in the turning frame of v, for the windows and the rays v starts (v a
+  // source or a pseudo-source); false when they need none (strict, v a pseudo-source).
+  bool emission_angles(Index v, std::vector<std::pair<Index, double> >& out)
+  {
+    const Mesh_arrays& m = *m_mesh;
+    out.clear();
+    if(is_source(v))
+    {
+      const auto& f = m_frames[static_cast<std::size_t>(-2 - via[v])];
+      for(std::size_t i = 0; i < f.first.halfedges.size(); ++i)
+        out.push_back(std::make_pair(f.first.halfedges[i], f.first.phi[i] - f.second / f.first.scale));
+      return true;
+    }
+    if(m_strict)
+      return false;
+    for(Index c = m.corner_begin[v]; c < m.corner_begin[v + 1]; ++c)
+    {
+      const Index h = m.corners[c];
+      bool seen = false;
+      for(const auto& a : out)
+        seen = seen || a.first == h;
+      if(seen)
+        continue;
+      bool border = false;
+      const double t = turn[v];
+      walk_fan(fan_first(h, border), [&](Index g, double phi) { out.push_back(std::make_pair(g, t + phi)); });
+    }
+    return true;
+  }
+
+  // The angle of h in `angles` (as left by emission_angles()).
+  static double angle_of(const std::vector<std::pair<Index, double> >& angles, Index h)
+  {
+    for(const auto& a : angles)
+      if(a.first == h)
+        return a.second;
+    CGAL_assertion(false);
+    return 0.;
+  }
+
+private:
+  // The fan of faces around source(h) that holds h: its first half-edge, counter-clockwise (the border
+  // half-edge leaving the vertex, or the least half-edge of a closed fan).
+  Index fan_first(Index h, bool& border) const
+  {
+    const Mesh_arrays& m = *m_mesh;
+    const Index v = m.source[h];
+    const Index degree = m.corner_begin[v + 1] - m.corner_begin[v];
+    Index first = h, g = h;
+    border = false;
+    for(Index k = 0; k < degree; ++k)
+    {
+      const Index p = cw_outgoing(m, g);
+      if(p == NO_INDEX)
+      {
+        border = true;
+        return g;
+      }
+      if(p == h)
+        break;
+      g = p;
+      first = (std::min)(first, g);
+    }
+    return first;
+  }
+
+  // Walks the fan from its first half-edge: f(g, phi) for each half-edge g of the fan, phi its unscaled
+  // angle; returns the sum of the corner angles.
+  template <class F>
+  double walk_fan(Index first, const F& f) const
+  {
+    const Mesh_arrays& m = *m_mesh;
+    const Index v = m.source[first];
+    const Index degree = m.corner_begin[v + 1] - m.corner_begin[v];
+    double sum = 0.;
+    Index g = first;
+    for(Index k = 0; k < degree && g != NO_INDEX; ++k)
+    {
+      f(g, sum);
+      sum += corner_angle_of(m, g);
+      g = ccw_outgoing(m, g);
+      if(g == first)
+        break;
+    }
+    return sum;
+  }
+
+  // the sum of the corner angles of the fan of h and the unscaled angle of h in it
+  void fan_angles(Index h, bool& border, double& sum, double& phi_of_h) const
+  {
+    sum = walk_fan(fan_first(h, border), [&](Index g, double phi) {
+      if(g == h)
+        phi_of_h = phi;
+    });
+  }
+
+  const Mesh_arrays* m_mesh = nullptr;
+  bool m_active = false, m_strict = false;
+  std::vector<std::pair<Vertex_frame, double> > m_frames;  // of the vertex sources, with their offsets
+};
+
+} // namespace internal
+} // namespace VTP_geodesics
+} // namespace CGAL
+
+#endif // CGAL_VTP_GEODESICS_INTERNAL_ENGINE_DIRECTION_RECORD_H
