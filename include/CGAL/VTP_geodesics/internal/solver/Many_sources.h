@@ -99,13 +99,16 @@ void compute_rows(const Mesh_arrays& arrays, const std::vector<Index>& position,
 }
 
 // Geodesic_distance_solver::compute_each() on the solver's mesh (Mesh_index `mesh`): the sources validated
-// (serially, before any row), the settings of `np` (no labels, paths nor targets; no initial distances), then
-// the rows.
+// (serially, before any row), the settings of `np` (no labels, paths nor targets; no initial distances; no log
+// map: refused when compiling), then the rows.
 template <class MeshIndex, class SourceRange, class RowSink, class NamedParameters>
 void compute_each_row(const MeshIndex& mesh, const SourceRange& sources, RowSink& sink, const NamedParameters& np,
                       bool parallel, std::vector<std::unique_ptr<Propagation_engine> >& workspaces,
                       Propagation_statistics& statistics)
 {
+  static_assert(CGAL::parameters::is_default_parameter<NamedParameters, internal_np::log_map_t>::value
+                  && CGAL::parameters::is_default_parameter<NamedParameters, internal_np::log_map_via_t>::value,
+                "compute_each() computes no log map: call compute() with log_map() for each source");
   typedef typename std::iterator_traits<decltype(std::begin(sources))>::value_type Source;
   const std::vector<Source> items(std::begin(sources), std::end(sources));
   std::vector<Seed> seeds;
