@@ -63,6 +63,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -116,6 +117,17 @@ void remember_read(std::size_t n, std::vector<vtp_support::fast_off_detail::Tria
 // (a second Solver on the same arrays reads nothing and checks again), returns true; else false.
 bool take_read(std::size_t n, const std::vector<vtp_support::fast_off_detail::Triangle>& triangles,
                Read_record& record);
+
+// Forgets the record of the last read_mesh() (a read that failed).
+void forget_read();
+
+// Keeps the record of a read by vtp_support's read_input_mesh() (no tables: the Solver checks the faces), that
+// returned n vertices and the m faces f; the time since t0 less the reader's checks and repairs is the reading.
+void remember_other_read(std::size_t n, const std::int64_t* f, std::size_t m, const vtp_support::Input_mesh& input,
+                         std::chrono::steady_clock::time_point t0);
+
+// Seconds since t0.
+double seconds_since(std::chrono::steady_clock::time_point t0);
 
 // The solver of one mesh, as Python's vtp_geodesics.Solver holds it.
 class Core_solver
