@@ -77,6 +77,18 @@ inline double halfedge_direction_in_frame(const Mesh_arrays& a, Index h, Index g
   return std::atan2(-q.cy, -q.cx);             // C -> A
 }
 
+// The same direction as a vector (not of unit length): cheaper where only angles between vectors are needed.
+inline std::array<double, 2> halfedge_vector_in_frame(const Mesh_arrays& a, Index h, Index g)
+{
+  CGAL_precondition(Mesh_arrays::face(h) == Mesh_arrays::face(g));
+  const Halfedge_geometry q = a.geometry[h];
+  if(g == h)
+    return {{1., 0.}};
+  if(g == Mesh_arrays::next(h))
+    return {{q.cx - q.length, q.cy}};
+  return {{-q.cx, -q.cy}};
+}
+
 // An angle brought into [0, 2 pi).
 inline double angle_in_0_2pi(double t)
 {

@@ -45,6 +45,12 @@ namespace internal {
 //   P(s) + |s v| (cos gamma, sin gamma) of the tangent plane, P(s) = rho(s) (cos theta(s), sin theta(s)),
 //   and theta(v) its angle (rho stays the distance). With `strict`, theta(v) = theta(s) (polyhedral).
 //
+// Cost: an offer (a distance lowered) costs one atan2; behind a pseudo-source, theta(v) is found once per
+// vertex after the run (finish()): until then theta[v] holds gamma and the sign bit of turn[v] says so, and
+// |s v| is D(v) - D(s) (the offer's distance is D(s) plus it). The turning angle of a pseudo-source needs the
+// angle of the incoming ray in its fan: products of unit vectors around the fan, two atan2, no atan2 per
+// corner.
+//
 // Memory: 16 bytes per vertex (theta, turn, via), allocated only when the log map is asked for; 8 bytes per
 // window (Window::angle).
 struct Ray_arrival
@@ -52,7 +58,7 @@ struct Ray_arrival
   double angle;   // the direction of the x-axis of the frame F below, in the turning frame of the origin
   double dx, dy;  // the vector from the origin's image to the vertex, in F
   Index g;        // a half-edge leaving the vertex, in a face of the ray's last stretch
-  double g_dir;   // its direction in F
+  double gx, gy;  // its direction in F (a vector of any length)
   Index origin = NO_INDEX;  // if not NO_INDEX, the origin of the ray (a path bent at a vertex: that vertex)
 };
 
@@ -70,7 +76,8 @@ class Direction_record
 public:
   std::vector<double> theta;  // per vertex
   // per vertex, a pseudo-source: the turning angle of its fan (a float: 1e-7 rad behind pseudo-sources is far
-  // below the mesh's own error there, and keeps the record at 16 bytes per vertex)
+  // below the mesh's own error there, and keeps the record at 16 bytes per vertex); its sign bit set while
+  // theta[v] holds gamma (to be resolved by finish())
   std::vector<float> turn;
   // per vertex: the last vertex its geodesic passes through, NO_INDEX, or -2 - k for the vertex source k
   std::vector<Index> via;
@@ -112,14 +119,13 @@ public:
   bool is_source(Index v) const { return via[v] < NO_INDEX; }
   bool is_strict() const { return m_strict; }
 
-  // An offer of `distance` from `origin` to v, whose distance was `old` (dist: the distances). It gives v its
+  // An offer of `distance` from `origin` to v, whose distance was `old`. It gives v its
   // direction if it is shorter by more than rounding (Path_record::tie); on a tie, if its key is smaller: the
-  // last vertex it passes through (none first, then the least index), then theta in [0, 2 pi). So the choice
-  // does not depend on the order of the offers (VTP and PVTP), and a path that grazes a pseudo-source goes on
-  // straight.
+  // last vertex it passes through (none first, then the least index), then theta (or, behind a vertex in the
+  // default mode, gamma) in [0, 2 pi). So the choice does not depend on the order of the offers (VTP and
+  // PVTP), and a path that grazes a pseudo-source goes on straight.
   template <class Arrival>
-  void on_offer(Index v, Index origin, double distance, double old, const Arrival& arrival,
-                const std::vector<double>& dist)
+  void on_offer(Index v, Index origin, double distance, double old, const Arrival& arrival)
   {
     const bool lower = !(old < std::numeric_limits<double>::infinity()) || distance < old * (1. - 1e-12);
     if(!lower && is_source(v))
@@ -127,26 +133,31 @@ public:
     const Ray_arrival r = arrival();
     double t, a;
     Index last;
-    direction_of(origin, r, dist, t, a, last);
+    direction_of(origin, r, t, a, last);
     if(!lower && !(last < via[v] || (last == via[v] && angle_in_0_2pi(t) < angle_in_0_2pi(theta[v]))))
       return;
     theta[v] = t;
     via[v] = last;
+    const bool lazy = !m_strict && last >= 0;  // theta[v] holds gamma
     const Mesh_arrays& m = *m_mesh;
-    if(m_strict || !m.is_pseudo_source[v] || r.g == NO_INDEX)
-      return;
-    // the turning angle: the continued line (beta_in + S/2, or + pi at the border) goes on at `a`
-    bool border = false;
-    double sum = 0., phi = 0.;
-    fan_angles(r.g, border, sum, phi);
-    const double beta_in = phi + (std::atan2(-r.dy, -r.dx) - r.g_dir);
-    turn[v] = static_cast<float>(angle_in_0_2pi(a - (beta_in + (border ? TANGENT_FRAME_PI : 0.5 * sum))));
+    float turning = 0.f;
+    if(!m_strict && m.is_pseudo_source[v] && r.g != NO_INDEX)
+    {
+      // the turning angle: the continued line (beta_in + S/2, or + pi at the border) goes on at `a`; beta_in,
+      // the direction of the reversed ray from the fan's first half-edge
+      bool border = false;
+      double sum = 0., phi = 0.;
+      fan_angles(r.g, border, sum, phi);
+      const double beta_in = phi + std::atan2(r.gy * r.dx - r.gx * r.dy, -(r.gx * r.dx + r.gy * r.dy));
+      turning = static_cast<float>(angle_in_0_2pi(a - (beta_in + (border ? TANGENT_FRAME_PI : 0.5 * sum))));
+    }
+    turn[v] = lazy ? -turning : turning;
   }
 
-  // The direction of the ray r from `origin` at its end: theta, the direction of its last stretch in the
-  // tangent plane of the source (a), the last vertex it passes through (last).
-  void direction_of(Index origin, const Ray_arrival& r, const std::vector<double>& dist, double& t, double& a,
-                    Index& last) const
+  // The direction of the ray r from `origin` at its end: theta (gamma behind a vertex in the default mode),
+  // the direction of its last stretch in the tangent plane of the source (a), the last vertex it passes
+  // through (last).
+  void direction_of(Index origin, const Ray_arrival& r, double& t, double& a, Index& last) const
   {
     const Mesh_arrays& m = *m_mesh;
     if(r.origin != NO_INDEX)
@@ -162,11 +173,35 @@ public:
       return;
     }
     last = origin;
-    t = theta[origin];
-    if(!m_strict)
+    if(m_strict)
+      t = theta[origin];
+  }
+
+  // After the run: theta of every vertex behind a vertex (default mode), from the coordinates of that vertex,
+  // nearer to the source first: P(s) + (D(v) - D(s)) (cos gamma, sin gamma).
+  void finish(const std::vector<double>& dist)
+  {
+    if(!m_active || m_strict)
+      return;
+    std::vector<Index> chain;
+    const std::size_t nv = theta.size();
+    for(std::size_t v0 = 0; v0 < nv; ++v0)
     {
-      const double run = std::sqrt(r.dx * r.dx + r.dy * r.dy), rho = dist[origin];
-      t = std::atan2(rho * std::sin(t) + run * std::sin(gamma), rho * std::cos(t) + run * std::cos(gamma));
+      Index x = static_cast<Index>(v0);
+      chain.clear();
+      while(std::signbit(turn[x]) && chain.size() <= nv)  // (a cycle of equal distances is cut)
+      {
+        chain.push_back(x);
+        x = via[x];
+      }
+      for(std::size_t k = chain.size(); k-- > 0;)
+      {
+        const Index u = chain[k], s = via[u];
+        turn[u] = std::fabs(turn[u]);
+        const double rho = dist[s], run = dist[u] - rho, t = theta[s], gamma = theta[u];
+        if(rho < std::numeric_limits<double>::infinity() && run < std::numeric_limits<double>::infinity())
+          theta[u] = std::atan2(rho * std::sin(t) + run * std::sin(gamma), rho * std::cos(t) + run * std::cos(gamma));
+      }
     }
   }
 
@@ -194,7 +229,7 @@ public:
       if(seen)
         continue;
       bool border = false;
-      const double t = turn[v];
+      const double t = std::fabs(turn[v]);
       walk_fan(fan_first(h, border), [&](Index g, double phi) { out.push_back(std::make_pair(g, t + phi)); });
     }
     return true;
@@ -257,13 +292,43 @@ private:
     return sum;
   }
 
-  // the sum of the corner angles of the fan of h and the unscaled angle of h in it
+  // The sum of the corner angles of the fan of h and the unscaled angle of h in it: the unit vectors of the
+  // corners multiplied around the fan (each corner below pi: a turn is counted when the product crosses the
+  // positive x-axis), one atan2 at h and one at the end.
   void fan_angles(Index h, bool& border, double& sum, double& phi_of_h) const
   {
-    sum = walk_fan(fan_first(h, border), [&](Index g, double phi) {
+    const Mesh_arrays& m = *m_mesh;
+    const Index first = fan_first(h, border);
+    const Index degree = m.corner_begin[m.source[first] + 1] - m.corner_begin[m.source[first]];
+    double zx = 1., zy = 0.;
+    int turns = 0;
+    phi_of_h = 0.;
+    Index g = first;
+    for(Index k = 0; k < degree && g != NO_INDEX; ++k)
+    {
       if(g == h)
-        phi_of_h = phi;
-    });
+        phi_of_h = product_angle(zx, zy, turns);
+      const Halfedge_geometry q = m.geometry[g];
+      const double ux = q.l_prev > 0. ? q.cx / q.l_prev : 1., uy = q.l_prev > 0. ? q.cy / q.l_prev : 0.;
+      const double x = zx * ux - zy * uy, y = zx * uy + zy * ux;
+      if(zy < 0. && !(y < 0.))
+        ++turns;
+      const double norm = std::sqrt(x * x + y * y);
+      zx = x / norm;
+      zy = y / norm;
+      g = ccw_outgoing(m, g);
+      if(g == first)
+        break;
+    }
+    sum = product_angle(zx, zy, turns);
+  }
+
+  static double product_angle(double zx, double zy, int turns)
+  {
+    double a = std::atan2(zy, zx);
+    if(a < 0.)
+      a += 2. * TANGENT_FRAME_PI;
+    return 2. * TANGENT_FRAME_PI * turns + a;
   }
 
   const Mesh_arrays* m_mesh = nullptr;

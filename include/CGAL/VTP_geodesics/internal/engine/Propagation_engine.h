@@ -94,6 +94,7 @@ public:
     if(settings.known_distances)
       known.move_into(m_state.dist, m_state.label, settings.want_labels);
     threads = propagate(parallel, threads);
+    m_state.direction.finish(m_state.dist);  // the log map behind pseudo-sources
     apply_cutoff();
     if(settings.unit != 1.)
       for(double& d : m_state.dist)

@@ -20,6 +20,7 @@
 
 #include <CGAL/assertions.h>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -69,12 +70,12 @@ public:
       mark_lowered(v);
       record.on_vertex_lowered(v, offer);
       if(direction.is_active())
-        direction.on_offer(v, offer.origin, offer.distance, old, arrival, dist);
+        direction.on_offer(v, offer.origin, offer.distance, old, arrival);
       schedule.push(v, offer.distance);
     }
     else if(direction.is_active() && offer.distance <= old * (1. + Path_record::tie)
             && old < std::numeric_limits<double>::infinity())
-      direction.on_offer(v, offer.origin, offer.distance, old, arrival, dist);  // a tie
+      direction.on_offer(v, offer.origin, offer.distance, old, arrival);  // a tie
   }
 
   // The ray of a window's offer to the third vertex C of face(h), in the frame of h. A path bent at an end of
@@ -85,7 +86,6 @@ public:
     const Mesh_arrays& m = *mesh;
     const Index h = o.halfedge;
     const Halfedge_geometry g = m.geometry[h];
-    const double c_dir = std::atan2(-g.cy, -g.cx);  // of prev(h), C -> A
     if(!std::isnan(o.bend) && (o.bend <= 0. || o.bend >= g.length))
     {
       const Index end = o.bend <= 0. ? m.source[h] : m.target(h);
@@ -93,13 +93,15 @@ public:
       if(emits && direction.emission_angles(end, m_bend_angles))
       {
         if(o.bend <= 0.)  // from A along A -> C
-          return Ray_arrival{Direction_record::angle_of(m_bend_angles, h), g.cx, g.cy, Mesh_arrays::prev(h), c_dir, end};
+          return Ray_arrival{Direction_record::angle_of(m_bend_angles, h), g.cx, g.cy, Mesh_arrays::prev(h), -g.cx, -g.cy,
+                             end};
         const Index bc = Mesh_arrays::next(h);  // from B along B -> C, in the frame of B -> C
-        return Ray_arrival{Direction_record::angle_of(m_bend_angles, bc), g.l_next, 0., Mesh_arrays::prev(h),
-                           halfedge_direction_in_frame(m, bc, Mesh_arrays::prev(h)), end};
+        const std::array<double, 2> c = halfedge_vector_in_frame(m, bc, Mesh_arrays::prev(h));
+        return Ray_arrival{Direction_record::angle_of(m_bend_angles, bc), g.l_next, 0., Mesh_arrays::prev(h), c[0],
+                           c[1], end};
       }
       if(emits)  // strict: theta of the vertex
-        return Ray_arrival{0., 1., 0., NO_INDEX, 0., end};
+        return Ray_arrival{0., 1., 0., NO_INDEX, 1., 0., end};
     }
     if(!std::isnan(o.bend))
     {
@@ -107,9 +109,9 @@ public:
       // direction of the ray to the bend, the length of the path
       const double ax = o.bend - o.sx, ay = -o.sy, bx = g.cx - o.bend, by = g.cy;
       const double a = std::sqrt(ax * ax + ay * ay), scale = a > 0. ? (a + std::sqrt(bx * bx + by * by)) / a : 1.;
-      return Ray_arrival{o.angle, ax * scale, ay * scale, Mesh_arrays::prev(h), c_dir};
+      return Ray_arrival{o.angle, ax * scale, ay * scale, Mesh_arrays::prev(h), -g.cx, -g.cy};
     }
-    return Ray_arrival{o.angle, g.cx - o.sx, g.cy - o.sy, Mesh_arrays::prev(h), c_dir};
+    return Ray_arrival{o.angle, g.cx - o.sx, g.cy - o.sy, Mesh_arrays::prev(h), -g.cx, -g.cy};
   }
 
   // Target t is reached at distance d straight from `origin` (serial).
@@ -172,10 +174,10 @@ public:
       const Halfedge_geometry gh = m.geometry[h];
       const double base = angles ? Direction_record::angle_of(m_angles, h) : 0.;
       light(m.target(h), straight_offer(dv + gh.length, v), [&]() {
-        return Ray_arrival{base, gh.length, 0., Mesh_arrays::next(h), std::atan2(gh.cy, gh.cx - gh.length)};
+        return Ray_arrival{base, gh.length, 0., Mesh_arrays::next(h), gh.cx - gh.length, gh.cy};
       });
       light(m.source[Mesh_arrays::prev(h)], straight_offer(dv + gh.l_prev, v), [&]() {
-        return Ray_arrival{base, gh.cx, gh.cy, Mesh_arrays::prev(h), std::atan2(-gh.cy, -gh.cx)};
+        return Ray_arrival{base, gh.cx, gh.cy, Mesh_arrays::prev(h), -gh.cx, -gh.cy};
       });
     }
     for(Index c = m.corner_begin[v]; c < m.corner_begin[v + 1]; ++c)
@@ -229,7 +231,7 @@ public:
       const Index h_ac = m.opposite[Mesh_arrays::prev(o)];
       const Index h_cb = m.opposite[Mesh_arrays::next(o)];
       const auto arrival = [&]() {
-        return Ray_arrival{angle, g.cx - t, g.cy, Mesh_arrays::prev(o), std::atan2(-g.cy, -g.cx)};
+        return Ray_arrival{angle, g.cx - t, g.cy, Mesh_arrays::prev(o), -g.cx, -g.cy};
       };
       if(!m.is_degenerate_face[Mesh_arrays::face(o)])
       {

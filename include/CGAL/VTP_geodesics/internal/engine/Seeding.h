@@ -22,6 +22,7 @@
 
 #include <CGAL/assertions.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -169,9 +170,9 @@ inline void seed_sources(Propagation_state& st, const std::vector<Seed>& seeds)
       const double length = g.length;
       // the log map: the direction of the x-axis of h in the frame of the user's face
       const double angle = st.direction.is_active() ? st.direction.seed_angle[i] : 0.;
-      st.light(m.source[h], straight_offer(s.x, origin), [&]() { return Ray_arrival{angle, -s.x, 0., h, 0.}; });
+      st.light(m.source[h], straight_offer(s.x, origin), [&]() { return Ray_arrival{angle, -s.x, 0., h, 1., 0.}; });
       st.light(m.target(h), straight_offer(length - s.x, origin), [&]() {
-        return Ray_arrival{angle, length - s.x, 0., Mesh_arrays::next(h), std::atan2(g.cy, g.cx - length)};
+        return Ray_arrival{angle, length - s.x, 0., Mesh_arrays::next(h), g.cx - length, g.cy};
       });
       st.emit_point(h, s.x, 0., origin, angle);
       if(m.opposite[h] != NO_INDEX)
@@ -198,7 +199,8 @@ inline void seed_sources(Propagation_state& st, const std::vector<Seed>& seeds)
       {
         const double dx = s.x - frame.x[k], dy = s.y - frame.y[k];
         st.light(m.source[h0 + k], straight_offer(std::sqrt(dx * dx + dy * dy), origin), [&]() {
-          return Ray_arrival{angle, -dx, -dy, h0 + k, halfedge_direction_in_frame(m, h0, h0 + k)};
+          const std::array<double, 2> g = halfedge_vector_in_frame(m, h0, h0 + k);
+          return Ray_arrival{angle, -dx, -dy, h0 + k, g[0], g[1]};
         });
       }
       st.stop.for_each_target_in_face(s.element, [&](Index t) {
