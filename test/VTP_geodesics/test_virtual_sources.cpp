@@ -598,13 +598,21 @@ TEST_P(Virtual_sources, Parallel_rounds_give_the_same_bits_on_any_number_of_thre
     {
       const std::string what = "jitter " + std::to_string(jitter) + ", " + std::to_string(threads) + " threads";
       std::vector<double> d(index_range(mesh));
-      solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
-                                         sources,
-                                         VSP.number_of_threads(threads).nearest_source_map(
-                                           labelled(labels)));
-      EXPECT_TRUE(identical(d, d1)) << what;
-      EXPECT_EQ(labels, labels1) << what;
-      const CGAL::VTP_geodesics::Propagation_statistics st = solver.statistics();
+      // (on a busy machine the master may find the team slower and run the rounds alone: then the run is done
+      // again, up to 20 times, until the team ran a tenth of the rounds; every run must give the same bits)
+      CGAL::VTP_geodesics::Propagation_statistics st;
+      for(int attempt = 0; attempt < 20; ++attempt)
+      {
+        solver.compute<CGAL::Parallel_tag>(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, mesh)),
+                                           sources,
+                                           VSP.number_of_threads(threads).nearest_source_map(
+                                             labelled(labels)));
+        EXPECT_TRUE(identical(d, d1)) << what;
+        EXPECT_EQ(labels, labels1) << what;
+        st = solver.statistics();
+        if(!(threads > 1 && st.threads > 1) || st.parallel_rounds > st.rounds / 10)
+          break;
+      }
       EXPECT_EQ(st.method, GetParam() == 2 ? "pvsp2" : "pvsp");
       EXPECT_EQ(st.vertices_processed, num_vertices(mesh));
       EXPECT_GT(st.rounds, 0u);

@@ -294,33 +294,64 @@ private:
 
   // The sum of the corner angles of the fan of h and the unscaled angle of h in it: the unit vectors of the
   // corners multiplied around the fan (each corner below pi: a turn is counted when the product crosses the
-  // positive x-axis), one atan2 at h and one at the end.
+  // positive x-axis), one atan2 at the first half-edge and one at the end. A closed fan is walked once from h
+  // (its first half-edge, the least, is met on the way); a border fan from its border half-edge.
   void fan_angles(Index h, bool& border, double& sum, double& phi_of_h) const
   {
     const Mesh_arrays& m = *m_mesh;
+    const Index degree = m.corner_begin[m.source[h] + 1] - m.corner_begin[m.source[h]];
+    double z[2] = {1., 0.}, at_least[2] = {1., 0.};
+    int turns = 0, turns_at_least = 0;
+    Index least = h, g = h;
+    for(Index k = 0; k < degree; ++k)
+    {
+      if(g < least)
+      {
+        least = g;
+        at_least[0] = z[0];
+        at_least[1] = z[1];
+        turns_at_least = turns;
+      }
+      turn_by_corner(g, z, turns);
+      g = ccw_outgoing(m, g);
+      if(g == NO_INDEX)
+        break;
+      if(g == h)
+      {
+        border = false;
+        sum = product_angle(z[0], z[1], turns);
+        phi_of_h = least == h ? 0. : sum - product_angle(at_least[0], at_least[1], turns_at_least);
+        return;
+      }
+    }
     const Index first = fan_first(h, border);
-    const Index degree = m.corner_begin[m.source[first] + 1] - m.corner_begin[m.source[first]];
-    double zx = 1., zy = 0.;
-    int turns = 0;
+    z[0] = 1.;
+    z[1] = 0.;
+    turns = 0;
     phi_of_h = 0.;
-    Index g = first;
+    g = first;
     for(Index k = 0; k < degree && g != NO_INDEX; ++k)
     {
       if(g == h)
-        phi_of_h = product_angle(zx, zy, turns);
-      const Halfedge_geometry q = m.geometry[g];
-      const double ux = q.l_prev > 0. ? q.cx / q.l_prev : 1., uy = q.l_prev > 0. ? q.cy / q.l_prev : 0.;
-      const double x = zx * ux - zy * uy, y = zx * uy + zy * ux;
-      if(zy < 0. && !(y < 0.))
-        ++turns;
-      const double norm = std::sqrt(x * x + y * y);
-      zx = x / norm;
-      zy = y / norm;
+        phi_of_h = product_angle(z[0], z[1], turns);
+      turn_by_corner(g, z, turns);
       g = ccw_outgoing(m, g);
       if(g == first)
         break;
     }
-    sum = product_angle(zx, zy, turns);
+    sum = product_angle(z[0], z[1], turns);
+  }
+
+  // z (a unit vector, `turns` whole turns) turned by the corner angle at source(g) in face(g)
+  void turn_by_corner(Index g, double z[2], int& turns) const
+  {
+    const Halfedge_geometry q = m_mesh->geometry[g];
+    const double ux = q.l_prev > 0. ? q.cx / q.l_prev : 1., uy = q.l_prev > 0. ? q.cy / q.l_prev : 0.;
+    const double x = z[0] * ux - z[1] * uy, y = z[0] * uy + z[1] * ux;
+    if(z[1] < 0. && !(y < 0.))
+      ++turns;
+    z[0] = x;  // (products of unit vectors: no renormalisation for the few corners of a fan)
+    z[1] = y;
   }
 
   static double product_angle(double zx, double zy, int turns)
