@@ -16,6 +16,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 namespace vtp_geodesics_app {
 
@@ -57,9 +58,18 @@ Log_map_results log_map_on_file_vertices(const Arguments& args, const vtp_suppor
                    static_cast<vtp_support::Mesh::size_type>(run.log_map_via[i]))))
                : -1;
   }
-  r.rho = input.labels_on_file_vertices(rho, run.distances, infinity);
-  r.theta = input.labels_on_file_vertices(theta, run.distances, nan);
-  r.via = input.labels_on_file_vertices(via, run.distances, -1LL);
+  if(input.direct)
+  {
+    r.rho = std::move(rho);
+    r.theta = std::move(theta);
+    r.via = std::move(via);
+  }
+  else
+  {
+    r.rho = input.labels_on_file_vertices(rho, run.distances, infinity);
+    r.theta = input.labels_on_file_vertices(theta, run.distances, nan);
+    r.via = input.labels_on_file_vertices(via, run.distances, -1LL);
+  }
   for(std::size_t v : args.sources)  // a source vertex (even one in no face) is at 0, as in --output
   {
     r.rho[v] = 0.;

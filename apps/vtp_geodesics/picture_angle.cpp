@@ -75,25 +75,41 @@ void Distance_picture::draw_angle_wheel(::_cairo* cr) const
   cairo_move_to(cr, x0 + 10., m_margin + 12.);
   cairo_show_text(cr, "geodesic polar angle");
 
-  // the wheel: thin sectors, angles counter-clockwise on the picture (its y axis points down)
+  // the wheel: a ring of thin sectors, angles counter-clockwise on the picture (its y axis points down)
   const int sectors = 360;
+  const double inner = 0.5 * radius;
   for(int i = 0; i < sectors; ++i)
   {
-    const double a0 = 2. * pi * i / sectors, a1 = 2. * pi * (i + 1.05) / sectors;
+    const double a0 = 2. * pi * i / sectors, a1 = 2. * pi * (i + 1.2) / sectors;
     double r, g, b;
     hue_of_angle(2. * pi * (i + 0.5) / sectors, r, g, b);
     cairo_set_source_rgb(cr, r, g, b);
-    cairo_move_to(cr, cx, cy);
+    cairo_new_path(cr);
     cairo_arc_negative(cr, cx, cy, radius, -a0, -a1);
+    cairo_arc(cr, cx, cy, inner, -a1, -a0);
     cairo_close_path(cr);
     cairo_fill(cr);
   }
   cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
   cairo_set_line_width(cr, 1.);
+  cairo_new_path(cr);
   cairo_arc(cr, cx, cy, radius, 0., 2. * pi);
   cairo_stroke(cr);
-  cairo_arc(cr, cx, cy, 3., 0., 2. * pi);
-  cairo_fill(cr);
+  cairo_new_path(cr);
+  cairo_arc(cr, cx, cy, inner, 0., 2. * pi);
+  cairo_stroke(cr);
+  // theta = 0, and the sense in which it grows
+  cairo_move_to(cr, cx + inner * 0.3, cy);
+  cairo_line_to(cr, cx + inner * 0.9, cy);
+  cairo_stroke(cr);
+  cairo_new_path(cr);
+  cairo_arc_negative(cr, cx, cy, inner * 0.6, -0.15, -1.2);
+  cairo_stroke(cr);
+  const double tip = -1.2;
+  cairo_move_to(cr, cx + inner * 0.6 * std::cos(tip) - 6., cy + inner * 0.6 * std::sin(tip) - 1.);
+  cairo_line_to(cr, cx + inner * 0.6 * std::cos(tip), cy + inner * 0.6 * std::sin(tip));
+  cairo_line_to(cr, cx + inner * 0.6 * std::cos(tip) - 1., cy + inner * 0.6 * std::sin(tip) + 6.);
+  cairo_stroke(cr);
 
   const char* names[4] = { "0", "\xcf\x80/2", "\xcf\x80", "3\xcf\x80/2" };
   for(int k = 0; k < 4; ++k)

@@ -147,6 +147,8 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
   std::vector<std::size_t> label_of_source;
   for(std::size_t i = 0; i < request.source_vertices.size(); ++i)
   {
+    if(request.log_map && mesh.is_isolated(request.source_vertices[i]))
+      continue;  // it reaches nothing, and has no tangent frame (file_results.cpp puts it at 0)
     solver.add_source(request.source_vertices[i]);
     label_of_source.push_back(request.source_vertex_labels[i]);
   }

@@ -189,6 +189,18 @@ def test_repaired_mesh():
     assert np.isfinite(x0[:7]).all() and np.abs(np.linalg.norm(x0[1:7], axis=1) - 1.).max() < 1e-12
 
 
+def test_isolated_source_vertex():
+    # a tetrahedron and vertex 4 in no face (a valid mesh, no repair): the isolated source is at 0, reaches nothing
+    V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [5, 5, 5]], float)
+    F = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+    s = vtp_geodesics.Solver(V, F)
+    x = s.log_map(4)
+    assert (x[4] == 0.).all() and np.isinf(x[:4]).all()
+    x = s.log_map([4, 1])
+    assert (x[4] == 0.).all() and (x[1] == 0.).all()
+    assert np.abs(np.linalg.norm(x[[0, 2, 3]], axis=1) - s.distances(1)[[0, 2, 3]]).max() < 1e-12
+
+
 @pytest.mark.parametrize("kwargs, error, message", [
     (dict(method="avtp"), ValueError, "vtp"),
     (dict(method="vsp"), ValueError, "vtp"),

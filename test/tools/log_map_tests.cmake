@@ -77,6 +77,14 @@ vtp_cli_test(log_map_repaired_split_source 0 "${lm}.nmv0.txt" "" LINES 8 SOURCE_
 vtp_log_map_check(log_map_repaired_format AFTER log_map_repaired_split_source
                   ARGS format "${lm}.nmv0.txt" 8 "${lm}.nmv0.d.txt")
 
+# A source vertex in no face (data/tetrahedron_isolated.off, vertex 4, read as it is): at 0, and it reaches nothing.
+vtp_cli_test(log_map_isolated_source 0 "${lm}.iso.txt" "" LINES 5 SOURCE_LINE none VALUES "1=0 0 -1|4=0 0 -1"
+             "${cli_data}/tetrahedron_isolated.off" --source 4,1 --log-map-output "${lm}.iso.txt")
+vtp_log_map_check(log_map_isolated_source_format AFTER log_map_isolated_source ARGS format "${lm}.iso.txt" 5)
+vtp_cli_test(log_map_isolated_source_alone 0 "${lm}.iso4.txt" "" LINES 5 SOURCE_LINE none
+             VALUES "0=inf nan -1|3=inf nan -1|4=0 0 -1"
+             "${cli_data}/tetrahedron_isolated.off" --source 4 --log-map-output "${lm}.iso4.txt")
+
 # The picture of theta (a hue wheel, with the isolines); the output machinery of the other files (a symbolic
 # link followed, standard output).
 vtp_cli_test(log_map_picture 0 "${lm}.png" "" CHECK png --source 7 --picture "${lm}.png" --picture-colour angle)
