@@ -232,9 +232,10 @@ const vtp_support::Option_table<Arguments>& option_table()
       "those of s, turned at s as a straightest geodesic)",
       [](Arguments& a, const std::string&, const std::string&) { a.log_map_strict = true; } },
     { "--reference-direction", "X,Y,Z",
-      "theta = 0 of the log map: (X,Y,Z) projected onto the tangent plane\n"
-      "of each source (default: at a vertex the edge to\n"
-      "source(halfedge(v)), at a point the first edge of its face)",
+      "the log map's theta = 0: (X,Y,Z) projected\n"
+      "onto the tangent plane of each source (default: at a vertex the\n"
+      "edge to source(halfedge(v)), at a point the first edge of its\n"
+      "face)",
       [](Arguments& a, const std::string& n, const std::string& v) {
         a.reference_direction = parse_point(n, v);
         if(a.reference_direction[0] == 0. && a.reference_direction[1] == 0. && a.reference_direction[2] == 0.)
