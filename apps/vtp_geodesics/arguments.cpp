@@ -189,14 +189,16 @@ const vtp_support::Option_table<Arguments>& option_table()
       "and the paths drawn",
       [](Arguments& a, const std::string& n, const std::string& v) { a.picture = file_name(n, v); } },
     { "--picture-colour", "C",
-      "what --picture colours: distances (the default) or labels (each\n"
+      "what --picture colours: distances (the default), labels (each\n"
       "nearest-source cell in its own colour, the borders between cells\n"
-      "drawn; with --farthest-points: the geodesic Voronoi cells); needs\n"
-      "--picture",
+      "drawn; with --farthest-points: the geodesic Voronoi cells) or\n"
+      "angle (theta of the log map on a hue wheel, with the distance\n"
+      "isolines; as --log-map-output); needs --picture",
       [](Arguments& a, const std::string& n, const std::string& v) {
-        if(v != "distances" && v != "labels")
-          throw Tool_error("unknown value '" + v + "' for " + n + " (expected distances or labels)");
+        if(v != "distances" && v != "labels" && v != "angle")
+          throw Tool_error("unknown value '" + v + "' for " + n + " (expected distances, labels or angle)");
         a.colour_labels = v == "labels";
+        a.colour_angle = v == "angle";
         a.has_picture_colour = true;
       } },
     { "--isolines", "N", "about N isolines on the picture, at round distances (default: 10;\n0: none)",
@@ -214,6 +216,31 @@ const vtp_support::Option_table<Arguments>& option_table()
         if(a.view[0] == 0. && a.view[1] == 0. && a.view[2] == 0.)
           throw Tool_error("the direction given to " + n + " is zero");
         a.has_view = true;
+      } },
+    { "--log-map-output", "FILE",
+      "write the log map (geodesic polar coordinates around the nearest\n"
+      "source), one line per vertex of the file: \"rho theta via\"; rho\n"
+      "the distance, theta in [0, 2 pi) the angle at which the geodesic\n"
+      "leaves the source (counter-clockwise seen from the faces' side,\n"
+      "from the reference direction), via the last vertex (file order)\n"
+      "the geodesic passes through, -1 if none; \"inf nan -1\" where\n"
+      "unreached; - for standard output. Methods vtp and pvtp only",
+      [](Arguments& a, const std::string& n, const std::string& v) { a.log_map_output = file_name(n, v); } },
+    { "--log-map-strict", nullptr,
+      "the strict polyhedral theta: a vertex behind a saddle or border\n"
+      "vertex s gets the theta of s (default: the coordinates go on from\n"
+      "those of s, turned at s as a straightest geodesic)",
+      [](Arguments& a, const std::string&, const std::string&) { a.log_map_strict = true; } },
+    { "--reference-direction", "X,Y,Z",
+      "the log map's theta = 0: (X,Y,Z) projected\n"
+      "onto the tangent plane of each source (default: at a vertex the\n"
+      "edge to source(halfedge(v)), at a point the first edge of its\n"
+      "face)",
+      [](Arguments& a, const std::string& n, const std::string& v) {
+        a.reference_direction = parse_point(n, v);
+        if(a.reference_direction[0] == 0. && a.reference_direction[1] == 0. && a.reference_direction[2] == 0.)
+          throw Tool_error("the direction given to " + n + " is zero");
+        a.has_reference_direction = true;
       } },
     { "--stats-json", "FILE|-", "write statistics as one JSON object to FILE, or to stdout with \"-\"",
       [](Arguments& a, const std::string& n, const std::string& v) { a.stats_json = file_name(n, v); } },
@@ -284,12 +311,30 @@ void check_sampling_arguments(const Arguments& a)
     throw Tool_error("--farthest-points takes no --check-cgal");
 }
 
+// The log map: exact methods, one run from the sources (no sampling, no joining runs).
+void check_log_map_arguments(const Arguments& a, const vtp_support::Method_info& m)
+{
+  if(!a.wants_log_map())
+  {
+    if(a.log_map_strict || a.has_reference_direction)
+      throw Tool_error("--log-map-strict and --reference-direction need --log-map-output or --picture-colour angle");
+    return;
+  }
+  if(m.approximate || m.virtual_sources)
+    throw Tool_error("the log map (--log-map-output, --picture-colour angle) needs --method vtp or pvtp, not "
+                     + std::string(m.name) + " (its lines carry no direction)");
+  if(a.farthest_points > 0 || a.through_pinches)
+    throw Tool_error("the log map (--log-map-output, --picture-colour angle) takes no --farthest-points nor "
+                     "--through-pinches");
+}
+
 void check_arguments(const Arguments& a)
 {
   const vtp_support::Method_info* m = vtp_support::find_method(a.method);
   if(m == nullptr)
     throw Tool_error("unknown method '" + a.method + "' (expected " + vtp_support::method_names() + ")");
   check_sampling_arguments(a);
+  check_log_map_arguments(a, *m);
   if((a.has_lambda || a.has_lambda_g) && !m->approximate)
     throw Tool_error("--lambda and --lambda-g need --method avtp or pavtp");
   if(!a.target_output.empty() && !a.has_targets())
@@ -306,9 +351,9 @@ void check_arguments(const Arguments& a)
   if(a.has_paths() && a.path_output.empty() && a.picture.empty())
     throw Tool_error("--path-to and --path-to-point need --path-output (or --picture, which draws the paths)");
   const std::string* files[] = { &a.output, &a.stats_json, &a.picture, &a.labels, &a.target_output, &a.path_output,
-                                 &a.samples_output };
+                                 &a.samples_output, &a.log_map_output };
   const char* names[] = { "--output", "--stats-json", "--picture", "--labels", "--target-output", "--path-output",
-                          "--samples-output" };
+                          "--samples-output", "--log-map-output" };
   const int n = static_cast<int>(sizeof(names) / sizeof(names[0]));
   for(int i = 0; i < n; ++i)
     for(int j = i + 1; j < n; ++j)
@@ -344,8 +389,8 @@ void print_usage(std::ostream& os, const std::string& default_mesh)
         "Computes exact geodesic distances from sources (vertices or points of the surface) to all\n"
         "vertices of a triangle mesh by vertex-oriented triangle propagation (VTP): the distance of a\n"
         "vertex is its distance to the nearest source. Optionally: the nearest source of each vertex,\n"
-        "a distance limit, distances at targets, geodesic paths, and farthest-point sampling with\n"
-        "its geodesic Voronoi cells.\n"
+        "a distance limit, distances at targets, geodesic paths, farthest-point sampling with\n"
+        "its geodesic Voronoi cells, and geodesic polar coordinates (the log map).\n"
         "\n";
   const std::size_t column = 25;
   vtp_support::print_help_item(os, "MESH", "mesh file: " + vtp_support::readable_extensions_text() + "\n(default: "

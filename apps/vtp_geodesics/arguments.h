@@ -79,8 +79,15 @@ struct Arguments
   bool has_radius = false;
   std::string samples_output;             // empty: none; "-": standard output
   bool colour_labels = false;             // --picture-colour labels
+  bool colour_angle = false;              // --picture-colour angle (the log map's theta)
   bool has_picture_colour = false;        // --picture-colour given (it needs --picture)
   bool help = false;
+  // The log map (log_map_output.h): --log-map-output FILE, --log-map-strict, --reference-direction X,Y,Z
+  std::string log_map_output;             // empty: none; "-": standard output
+  bool log_map_strict = false;
+  bool has_reference_direction = false;
+  std::array<double, 3> reference_direction = { { 1., 0., 0. } };
+  bool wants_log_map() const { return !log_map_output.empty() || colour_angle; }
 
   std::size_t number_of_sources() const { return sources.size() + source_points.size(); }
   // several sources: the outputs tell the nearest one (the labels)

@@ -31,6 +31,7 @@ File_results file_results(const Arguments& args, const vtp_support::Input_mesh& 
     r.paths.push_back(std::move(t));
 
   // Per vertex of the file; a file vertex at a source is at 0, labelled by the first source there.
+  r.log_map = log_map_on_file_vertices(args, input, result);  // (before the distances are moved)
   if(!args.picture.empty() && !input.direct)
     r.mesh_distances = result.distances;
   if(request.run.want_labels)

@@ -15,6 +15,7 @@
 // the correspondence that the reading keeps (vtp_support::Input_mesh: on_file_vertices(), file_vertex_of()).
 
 #include "arguments.h"
+#include "log_map_output.h"
 #include "request.h"
 #include "run.h"
 
@@ -43,6 +44,7 @@ struct File_results
   double max_distance = 0.;                  // the largest finite distance
   bool checked = false;                      // --check-cgal: the distances against CGAL's
   vtp_support::Distance_comparison comparison;
+  Log_map_results log_map;                   // --log-map-output, --picture-colour angle (else empty)
 };
 
 // Puts the results of `request` back in the file's terms (moves from `result`'s distances and paths).

@@ -120,6 +120,8 @@ void write_picture(std::ostream& os, const vtp_support::Mesh& mesh, const std::v
   Distance_picture picture(options);
   if(request.labels != nullptr)
     picture.set_labels(*request.labels);
+  if(request.angles != nullptr)
+    picture.set_angles(*request.angles);
   const vtp_support::Mesh::size_type nv = mesh.number_of_vertices();
   picture.set_mesh(
     static_cast<std::size_t>(nv),
@@ -180,6 +182,8 @@ void write_outputs(Output_files& files, const Arguments& args, const vtp_support
   if(!args.path_output.empty())
     files.write(args.path_output,
                 [&](std::ostream& os) { write_paths(os, path_format(args.path_output), results.paths); });
+  if(!args.log_map_output.empty())
+    files.write(args.log_map_output, [&](std::ostream& os) { write_log_map(os, results.log_map); });
   if(!args.picture.empty())
     files.write(args.picture, [&](std::ostream& os) {
       // the mesh of the computation, with the sources (or the samples) and the paths
@@ -196,6 +200,8 @@ void write_outputs(Output_files& files, const Arguments& args, const vtp_support
       p.polylines = results.paths;
       if(args.colour_labels)
         p.labels = &run.labels;
+      if(args.colour_angle)
+        p.angles = &run.log_map;
       write_picture(os, input.mesh, input.direct ? results.distances : results.mesh_distances, results.max_distance,
                     p);
     });

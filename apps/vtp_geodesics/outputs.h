@@ -59,6 +59,7 @@ struct Picture_request
   std::vector<std::array<double, 3> > markers;                // the sources
   std::vector<std::vector<std::array<double, 3> > > polylines; // the paths
   const std::vector<int>* labels = nullptr;                   // per mesh vertex: colour the labels instead
+  const std::vector<std::array<double, 2> >* angles = nullptr; // per mesh vertex: colour the log map's theta
 };
 
 // Draws the distance field on the mesh of the computation (`mesh_distances`: per mesh vertex) as a PNG picture.

@@ -22,6 +22,7 @@
 //   picture.cpp          the view (direction, projection, layout) and the visibility of points
 //   picture_raster.cpp   the rasterizer: depth test, shading, isolines, label colours, downsampling
 //   picture_overlay.cpp  the overlay (cairo) and the PNG encoding (libpng)
+//   picture_angle.cpp    the colours of angles (the log map's theta) and their wheel
 //
 // Usage:
 //   Distance_picture picture(options);
@@ -39,6 +40,8 @@
 #include <ostream>
 #include <string>
 #include <vector>
+
+struct _cairo;  // cairo_t (picture_angle.cpp)
 
 namespace vtp_geodesics_app {
 
@@ -77,6 +80,11 @@ public:
   // set_mesh(). Inside a face whose corners have different labels, each point takes the label of the corner of
   // largest barycentric coordinate, and the border between two labels is drawn dark.
   void set_labels(std::vector<int> labels) { m_labels = std::move(labels); }
+
+  // Colours the mesh by the angle of `xy` (per vertex: the log map's tangent coordinates, interpolated linearly
+  // inside each face) on a hue wheel, keeping the isolines of the values; a wheel instead of the colour bar
+  // (picture_angle.cpp). Call before set_mesh().
+  void set_angles(std::vector<std::array<double, 2> > xy) { m_angles = std::move(xy); }
 
   // Draws the mesh: `point_of(i)` (i < nv) gives the point of vertex i, `face_of(f)` (f < nf) the three vertex
   // indices of face f, `values[i]` the value of vertex i (not finite: no value, drawn grey). Colours go from 0
@@ -131,6 +139,10 @@ private:
   void fill_colour_table();
   void downsample();
 
+  // picture_angle.cpp
+  void angle_colour(const Triangle& t, const std::array<float, 3>& w, double& r, double& g, double& b) const;
+  void draw_angle_wheel(::_cairo* cr) const;
+
   // picture_overlay.cpp
   struct Overlay;
   void draw_overlay();
@@ -151,6 +163,7 @@ private:
   std::vector<Vec3> m_markers;
   std::vector<std::vector<Vec3> > m_polylines;
   std::vector<int> m_labels;           // per vertex, if the picture colours labels (set_labels())
+  std::vector<std::array<double, 2> > m_angles; // per vertex, if the picture colours angles (set_angles())
 };
 
 } // namespace vtp_geodesics_app

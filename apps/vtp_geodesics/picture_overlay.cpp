@@ -215,7 +215,9 @@ void Distance_picture::draw_overlay()
 
   Overlay::polylines(*this, cr);
   Overlay::markers(*this, cr);
-  if(m_labels.empty())
+  if(!m_angles.empty())
+    draw_angle_wheel(cr);
+  else if(m_labels.empty())
     Overlay::colour_bar(*this, cr);
 
   cairo_destroy(cr);

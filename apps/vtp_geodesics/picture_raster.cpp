@@ -128,6 +128,8 @@ void Distance_picture::shade(std::size_t s, const std::vector<float>& sx, const 
     r = c[0];
     g = c[1];
     b = c[2];
+    if(!m_angles.empty())
+      angle_colour(t, { { w0, w1, w2 } }, r, g, b);
     if(m_step > 0.)
     {
       const double k = std::round(v / m_step);

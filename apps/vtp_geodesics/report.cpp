@@ -48,6 +48,7 @@ Report make_report(const std::string& mesh_file, const Arguments& args, const vt
   if(!args.source_points.empty())
     report.sources_text += (args.sources.empty() ? "" : " and ") + std::to_string(args.source_points.size())
                            + (args.source_points.size() == 1 ? " surface point" : " surface points");
+  report.log_map_strict = args.log_map_strict;
   report.has_max_distance = args.has_max_distance;
   report.max_distance_limit = args.max_distance;
   report.run = &run;
@@ -95,6 +96,9 @@ std::string stats_json(const Report& r)
        << ", \"min_cell_area\": " << json_value(*areas.first)
        << ", \"max_cell_area\": " << json_value(*areas.second);
   }
+  if(!f.log_map.rho.empty())
+    os << ", \"log_map\": " << json_value(std::string(r.log_map_strict ? "strict" : "default"))
+       << ", \"log_map_behind_vertices\": " << f.log_map.behind_vertices;
   if(f.checked)
     os << ", \"cgal_seconds\": " << json_value(s.cgal_seconds)
        << ", \"max_abs_diff\": " << json_value(f.comparison.max_abs_diff)

@@ -38,6 +38,7 @@ struct Report
   bool single_vertex_source = false;       // one source, a vertex:
   std::size_t source = 0;                  // that vertex (file order)
   std::string sources_text;                // for people: "0, 17, 42 and 1 surface point"
+  bool log_map_strict = false;             // --log-map-strict
   bool has_max_distance = false;
   double max_distance_limit = 0.;
   const Run_result* run = nullptr;         // the computation

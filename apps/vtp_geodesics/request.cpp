@@ -139,6 +139,10 @@ Request make_request(const Arguments& args, const vtp_support::Method_info& meth
     run.traces.push_back(t);
   }
   run.check_cgal = args.check_cgal;
+  run.log_map = args.wants_log_map();
+  run.log_map_strict = args.log_map_strict;
+  run.has_reference_direction = args.has_reference_direction;
+  run.reference_direction = args.reference_direction;
   if(args.through_pinches && !input.direct)
   {
     // the copies of each split vertex, once (coincident vertices of the file that the repair merged share them)

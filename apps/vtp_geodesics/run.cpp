@@ -93,6 +93,31 @@ void run_sampling(const vtp_support::Method_info& method, Solver& solver, const 
   r.statistics = fps.statistics;
 }
 
+// The run with the log map (vtp, pvtp): the named parameters `np` of the run, and the log map's, into r.log_map
+// and r.log_map_via; the nearest sources into `labels` (sized to the mesh).
+template <class Tag, class NamedParameters>
+void compute_log_map(Solver& solver, const vtp_support::Mesh& mesh, const Run_request& request,
+                     const NamedParameters& np, std::vector<std::size_t>& labels, Run_result& r)
+{
+  const std::size_t n = r.mesh_vertices;
+  const double infinity = std::numeric_limits<double>::infinity();
+  const auto index = get(boost::vertex_index, mesh);
+  const CGAL::Constant_property_map<vtp_support::Vertex_index, double> no_map;
+  r.log_map.assign(n, std::array<double, 2>{ { infinity, infinity } });
+  std::vector<vtp_support::Vertex_index> via(n);
+  const auto lm = np.nearest_source_map(boost::make_iterator_property_map(labels.begin(), index))
+                    .log_map(boost::make_iterator_property_map(r.log_map.begin(), index))
+                    .log_map_via(boost::make_iterator_property_map(via.begin(), index))
+                    .log_map_strict(request.log_map_strict);
+  if(request.has_reference_direction)
+    solver.template compute<Tag>(no_map, lm.reference_direction(request.reference_direction));
+  else
+    solver.template compute<Tag>(no_map, lm);
+  r.log_map_via.resize(n);
+  for(std::size_t i = 0; i < n; ++i)
+    r.log_map_via[i] = via[i] == vtp_support::Vertex_index() ? -1 : static_cast<long long>(std::size_t(via[i]));
+}
+
 } // namespace
 
 Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& request)
@@ -122,6 +147,8 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
   std::vector<std::size_t> label_of_source;
   for(std::size_t i = 0; i < request.source_vertices.size(); ++i)
   {
+    if(request.log_map && mesh.is_isolated(request.source_vertices[i]))
+      continue;  // it reaches nothing, and has no tangent frame (file_results.cpp puts it at 0)
     solver.add_source(request.source_vertices[i]);
     label_of_source.push_back(request.source_vertex_labels[i]);
   }
@@ -157,10 +184,15 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
     r.target_location_distances.assign(request.target_locations.size(), infinity);
     if(request.want_labels)
       r.labels.assign(r.mesh_vertices, -1);
+    if(request.log_map)
+    {
+      r.log_map.assign(r.mesh_vertices, std::array<double, 2>{ { infinity, infinity } });
+      r.log_map_via.assign(r.mesh_vertices, -1);
+    }
   }
   else
   {
-    if(request.want_labels)
+    if(request.want_labels || request.log_map)
       labels.assign(r.mesh_vertices, VTP::no_source);
     vtp_support::with_method(method, lambda, request.threads, [&](auto tag, const auto& method_np) {
       typedef decltype(tag) Tag;
@@ -172,7 +204,9 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
                         .targets(targets)
                         .stop_at_targets(request.stop_at_targets && !join)
                         .record_paths(!request.paths.empty());
-      if(request.want_labels)
+      if(request.log_map)
+        compute_log_map<Tag>(solver, mesh, request, np, labels, r);
+      else if(request.want_labels)
         solver.compute<Tag>(no_map, np.nearest_source_map(boost::make_iterator_property_map(
                                       labels.begin(), get(boost::vertex_index, mesh))));
       else

@@ -77,6 +77,11 @@ struct Run_request
   bool has_first = false;
   vtp_support::Vertex_index first;
   double radius = 0.;
+  // The log map (vtp, pvtp; see log_map_output.h): the run also gives each vertex its tangent coordinates
+  bool log_map = false;
+  bool log_map_strict = false;
+  bool has_reference_direction = false;
+  std::array<double, 3> reference_direction = { { 1., 0., 0. } };
 };
 
 struct Run_result
@@ -101,6 +106,10 @@ struct Run_result
   std::vector<vtp_support::Vertex_index> samples;
   std::vector<double> radii;
   std::vector<double> cell_areas, cell_uncertainty;
+  // log_map: per mesh vertex, rho (cos theta, sin theta) ({inf, inf} if unreached) and the last mesh vertex its
+  // geodesic passes through (-1: none)
+  std::vector<std::array<double, 2> > log_map;
+  std::vector<long long> log_map_via;
 };
 
 // Runs `request` on `mesh`; throws Tool_error (e.g. a path to a vertex that no source reaches) or the

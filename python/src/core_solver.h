@@ -22,6 +22,7 @@
 //   matrices.cpp   matrix_dense(), matrix_sparse(): rows on all cores, Ctrl-C and progress every 0.2 s
 //   sampling.cpp   farthest_point_sampling(), with the Voronoi cell areas
 //   straightest.cpp  trace(): straightest geodesics (the exp map), many walks on the solver's threads
+//   log_map.cpp    log_map(): geodesic polar coordinates (VTP, PVTP), in the caller's frames
 //   io.cpp         read_mesh(), symmetric_min_csr(); the conversions of vertex indices, face locations and
 //                  barycentric coordinates between Python's arrays and the library
 //
@@ -164,6 +165,12 @@ public:
   py::tuple trace(const Index_array& start_vertices, const Index_array& start_faces, const Double_array& start_bary,
                   const Double_array& directions, const Double_array& lengths, int threads);
 
+  // log_map.cpp
+  py::tuple log_map(const Index_array& sources, const Index_array& point_faces, const Double_array& point_bary,
+                    double max_distance, const Double_array& reference, bool strict, const std::string& method_name,
+                    int threads);
+  std::array<double, 4> caller_face_frame(Face_index f) const;
+
   // matrices.cpp
   py::array matrix_dense(const Index_array& sources, const Index_array& columns, bool all_columns,
                          double max_distance, bool single, const std::string& method_name, double lam, int threads,
@@ -263,6 +270,7 @@ void define_matrices(py::class_<Core_solver>& c);
 void define_sampling(py::class_<Core_solver>& c);
 void define_io(py::module_& m);
 void define_straightest(py::class_<Core_solver>& c);
+void define_log_map(py::class_<Core_solver>& c);
 
 } // namespace vtp_python
 

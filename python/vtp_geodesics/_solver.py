@@ -6,12 +6,13 @@ import warnings as _warnings
 
 from . import _core
 from ._arguments import check_threads, mesh_arrays
+from ._log_map import LogMap
 from ._matrices import Matrices
 from ._queries import Queries
 from ._sampling import Sampling
 
 
-class Solver(Queries, Matrices, Sampling):
+class Solver(Queries, Matrices, Sampling, LogMap):
     """Geodesic distances on one triangle mesh: ``Solver(V, F, *, threads=0, repair=True, through_pinches=False)``.
 
     The constructor checks the mesh and does the per-mesh preprocessing once; every query then runs
@@ -80,6 +81,8 @@ class Solver(Queries, Matrices, Sampling):
         one row per source, on all cores: dense ndarray, or scipy.sparse.csr_matrix with a finite limit.
     locate(xyz)
         the nearest surface points of (k, 3) positions, as (faces, barycentric).
+    log_map(sources=0, *, points=None, max_distance=inf, reference=None, strict=False, return_via=False)
+        geodesic polar coordinates around the nearest source, float64 (n, 2) rho * (cos theta, sin theta).
     statistics
         the library's statistics of the last computation, as a dict.
     """

@@ -494,4 +494,15 @@ TEST(LogMap, RejectedInput)
   EXPECT_THROW(log_map_of(solver, mesh, Vertex_index(1000), VP::log_map_strict(false)), CGAL::VTP_geodesics::Invalid_input_error);
 }
 
+// A source vertex in no face has no tangent frame: a clear error (it used to read the null half-edge).
+TEST(LogMap, IsolatedSourceVertex)
+{
+  Surface_mesh mesh = to_mesh<Surface_mesh>(planar_grid(4, 4, 1., 1.));
+  const Vertex_index isolated = mesh.add_vertex(Point_3(5., 5., 0.));
+  Log_solver solver(mesh);
+  EXPECT_THROW(log_map_of(solver, mesh, isolated, VP::log_map_strict(false)), CGAL::VTP_geodesics::Invalid_input_error);
+  EXPECT_THROW(solver.straightest_geodesic(isolated, std::array<double, 3>{1., 0., 0.}, 1.),
+               CGAL::VTP_geodesics::Invalid_input_error);
+}
+
 } // namespace

@@ -19,10 +19,13 @@
 
 #include <CGAL/assertions.h>
 
+#include <boost/graph/graph_traits.hpp>
+
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -316,12 +319,15 @@ double vertex_theta_of_3d(const Mesh_arrays& a, const Vertex_frame& frame, const
 // the user's mesh: the reference half-edge of a vertex
 // ------------------------------------------------------------------------------------------------
 // The half-edge of the arrays from v to source(halfedge(v)), NO_INDEX if that edge is on the border (the
-// frame takes the border half-edge then). `index` is a Mesh_index (solver/Mesh_index.h): its mesh `tm` and
+// frame takes the border half-edge then), or for a vertex in no face. `index` is a Mesh_index (solver/Mesh_index.h): its mesh `tm` and
 // face_index().
 template <class MeshIndex, class VertexDescriptor>
 Index vertex_reference_halfedge(const MeshIndex& index, VertexDescriptor v)
 {
   const auto& tm = index.tm;
+  typedef typename std::decay<decltype(tm)>::type Mesh;
+  if(halfedge(v, tm) == boost::graph_traits<Mesh>::null_halfedge())
+    return NO_INDEX;  // a vertex in no face: no frame (make_vertex_frame() says so)
   const auto h = opposite(halfedge(v, tm), tm);
   if(is_border(h, tm))
     return NO_INDEX;

@@ -1,0 +1,78 @@
+"""The log map of a solver (private; ``vtp_geodesics.Solver.log_map``): geodesic polar coordinates around the
+nearest source, in one run of VTP or PVTP."""
+
+import math as _math
+
+import numpy as _np
+
+from ._arguments import (SOURCE_DEFAULT, as_float_array, check_float, check_method, check_threads, source_vertices,
+                         surface_points)
+
+
+class LogMap:
+    """The log map of ``Solver`` (which holds the compiled solver ``_core``)."""
+
+    def log_map(self, sources=SOURCE_DEFAULT, *, points=None, max_distance=_math.inf, reference=None, strict=False,
+                return_via=False, method="vtp", threads=0):
+        """Geodesic polar coordinates (the discrete logarithmic map) around the nearest source: for every vertex,
+        ``rho * (cos theta, sin theta)``, rho its exact geodesic distance and theta the angle at which its
+        geodesic leaves its nearest source, in that source's tangent frame. One propagation (no trace-back of
+        paths): about the time of ``distances()``.
+
+        Parameters
+        ----------
+        sources : int or array-like of int, default 0
+            Source vertices (indices into V); the default is vertex 0 when no ``points`` are given.
+        points : (faces, barycentric) or array-like (k, 3), optional
+            Sources at points of the surface, as in ``distances()``.
+        max_distance : float, default inf
+            Distance limit (local patches): vertices farther get ``inf``; the work is that of the region within.
+        reference : array-like (3,), optional
+            The direction of theta = 0, projected onto the tangent plane of each source. By default: at a
+            vertex v, the edge from v to ``source(halfedge(v))`` of the library (the frame of ``trace()`` at a
+            vertex); at a point of a face, F[face][0] -> F[face][1] (the frame of ``trace()`` there), so that
+            ``trace(c, log[v] / rho[v], rho[v])`` walks from the source c towards v.
+        strict : bool, default False
+            False: behind a saddle or boundary vertex s, the coordinates go on from those of s, turned at s as
+            a straightest geodesic (a wedge of directions stays a wedge). True: the strict polyhedral angle,
+            every vertex behind s gets the theta of s.
+        return_via : bool, default False
+            Also return, for every vertex, the last vertex its geodesic passes through (-1: none).
+        method : str, default "vtp"
+            "vtp" or "pvtp" (the same coordinates on several threads); the other methods carry no direction.
+        threads : int, default 0
+            Threads of "pvtp" (0: the solver's ``threads``).
+
+        Returns
+        -------
+        coordinates : ndarray float64 (n, 2)
+            ``rho * (cos theta, sin theta)``; ``(inf, inf)`` where unreached (or beyond ``max_distance``);
+            ``(0, 0)`` at a source vertex. With several sources, relative to the nearest (in its frame).
+            Angles grow counter-clockwise seen from the side the faces' normals point to; at a vertex source
+            they are scaled by 2 pi / its angle sum (pi / sum at a boundary vertex).
+        via : ndarray int64 (n,), only with ``return_via=True``
+            The last vertex of the geodesic before the vertex (a saddle or boundary vertex it turns at), -1 if
+            it passes through none.
+
+        Raises
+        ------
+        ValueError
+            No source, an index out of range, invalid barycentric coordinates, a negative limit, a method other
+            than vtp / pvtp, a zero or non-finite reference or one orthogonal to a source's tangent plane, a
+            source vertex whose faces do not form one fan.
+        """
+        src = source_vertices(sources, points)
+        pf, pb = surface_points(points, self._core.locate)
+        if src.size == 0 and pf.size == 0:
+            raise ValueError("no source: sources is empty and no points are given")
+        if reference is None:
+            ref = _np.zeros(0)
+        else:
+            ref = as_float_array(reference, "reference").reshape(-1)
+            if ref.shape != (3,):
+                raise ValueError("reference must be a 3D direction (3,), got shape %s" % (_np.shape(reference),))
+        if not isinstance(strict, (bool, _np.bool_)):
+            raise TypeError("strict must be a bool, got %r" % (strict,))
+        x, via = self._core.log_map(src, pf, pb, check_float(max_distance, "max_distance"), ref, bool(strict),
+                                    check_method(method), check_threads(threads))
+        return (x, via) if return_via else x
