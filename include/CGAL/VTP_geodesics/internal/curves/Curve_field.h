@@ -1,0 +1,331 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_CURVES_CURVE_FIELD_H
+#define CGAL_VTP_GEODESICS_INTERNAL_CURVES_CURVE_FIELD_H
+
+#include <CGAL/license/VTP_geodesics.h>
+
+#include <CGAL/VTP_geodesics/internal/Face_frame.h>
+#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/engine/Path_record.h>
+#include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace VTP_geodesics {
+namespace internal {
+
+// The distance field inside the faces, from the trace-back record of a computation (Path_record.h).
+//
+// A candidate of a face is a point (x, y) of the plane of the face (its frame, that of half-edge 3f) with a
+// distance `base`: the candidate's distance at a point p of the face is base + |p - (x, y)|. The candidates
+// of face f are
+//  - its corners v, with base D(v) (the path to v, then straight to p: a real path, an upper bound);
+//  - the image of the origin of each corner's recorded offer (Offer: the window through which the geodesic
+//    reached the corner), unfolded into f when the offer came through f itself or through a face sharing an
+//    edge of f at that corner, with base the origin's distance (the offer's distance less |v - image|); a
+//    bent offer gives its bend point instead;
+//  - the sources lying in f (or on its edges), base 0.
+// The field in f is the least candidate distance. It is the exact distance wherever the geodesic to p comes
+// through one of these images (the common case: a face whose corners are reached through the same window,
+// or through windows that also cover p); it can be above it where the geodesic to p comes through a window
+// that reached no corner of f (then a corner's candidate, a real path, bounds it), and below it where an
+// image is used for a point the window does not see (its segment to p leaves the window): the
+// measurements (doc/VTP_geodesics/curves.txt) say how often and by how much.
+struct Curve_candidate
+{
+  double x, y, base;
+  Index label;
+};
+
+class Curve_field
+{
+public:
+  // `distances`: per vertex, in the engine's unit (+infinity: unreached); `labels`: the engine's labels if
+  // it has them (else empty: the labels are found along the record).
+  Curve_field(const Mesh_arrays& m, const Path_record& record, const std::vector<Seed>& seeds,
+              const std::vector<double>& distances, const std::vector<Index>& labels)
+    : m_mesh(m), m_record(record), m_seeds(seeds), m_distance(distances)
+  {
+    for(std::size_t i = 0; i < seeds.size(); ++i)
+    {
+      const Seed& s = seeds[i];
+      if(s.kind == Seed::IN_FACE)
+        m_face_seeds.emplace_back(s.element, static_cast<Index>(i));
+      else if(s.kind == Seed::ON_EDGE)
+      {
+        m_face_seeds.emplace_back(Mesh_arrays::face(s.element), static_cast<Index>(i));
+        if(m.opposite[s.element] != NO_INDEX)
+          m_face_seeds.emplace_back(Mesh_arrays::face(m.opposite[s.element]), static_cast<Index>(i));
+      }
+    }
+    std::sort(m_face_seeds.begin(), m_face_seeds.end());
+    if(labels.size() == distances.size())
+      m_label = labels;
+    else
+      find_labels();
+  }
+
+  double distance(Index v) const { return m_distance[static_cast<std::size_t>(v)]; }
+  Index label(Index v) const { return m_label[static_cast<std::size_t>(v)]; }
+
+  // the candidates of face f (see above), in the frame of f
+  void candidates(Index f, std::vector<Curve_candidate>& out) const
+  {
+    out.clear();
+    const Face_frame frame(m_mesh, f);
+    for(int k = 0; k < 3; ++k)
+    {
+      const Index v = m_mesh.source[3 * f + k];
+      const double d = distance(v);
+      if(!(d < std::numeric_limits<double>::infinity()))
+        continue;
+      out.push_back(Curve_candidate{frame.x[k], frame.y[k], d, label(v)});
+      const Offer& o = m_record.vertex[static_cast<std::size_t>(v)];
+      if(o.origin == NO_INDEX)
+        continue;
+      if(o.halfedge == NO_INDEX)
+      {
+        // straight from a source point of a face next to f (those of f and its edges are added below)
+        if(o.origin >= m_mesh.nv)
+        {
+          const Seed& s = m_seeds[static_cast<std::size_t>(o.origin - m_mesh.nv)];
+          const Index g = s.kind == Seed::IN_FACE ? s.element
+                        : (s.kind == Seed::ON_EDGE ? Mesh_arrays::face(s.element) : NO_INDEX);
+          if(g == NO_INDEX || has_seed(f, o.origin - m_mesh.nv))
+            continue;
+          double px, py, x, y;
+          for(int side = 0; side < 2; ++side)
+          {
+            const Index gg = side == 0 ? g
+                           : (s.kind == Seed::ON_EDGE && m_mesh.opposite[s.element] != NO_INDEX
+                                ? Mesh_arrays::face(m_mesh.opposite[s.element]) : NO_INDEX);
+            if(gg == NO_INDEX)
+              continue;
+            seed_in_face(s, gg, px, py);
+            if(unfold(gg, px, py, f, k, frame, x, y))
+            {
+              out.push_back(Curve_candidate{x, y, 0., s.label});
+              break;
+            }
+          }
+        }
+        continue;
+      }
+      double x, y, ix, iy;
+      const bool bent = is_bent(o);
+      if(image_in_face(o, bent, f, k, frame, x, y))
+      {
+        const Halfedge_geometry& g = m_mesh.geometry[o.halfedge];
+        ix = bent ? o.bend : o.sx;
+        iy = bent ? 0. : o.sy;
+        const double base = o.distance - std::sqrt((g.cx - ix) * (g.cx - ix) + (g.cy - iy) * (g.cy - iy));
+        out.push_back(Curve_candidate{x, y, (std::max)(base, 0.), label(v)});
+      }
+    }
+    auto range = std::equal_range(m_face_seeds.begin(), m_face_seeds.end(), std::make_pair(f, Index(-1)),
+                                  [](const std::pair<Index, Index>& a, const std::pair<Index, Index>& b) {
+                                    return a.first < b.first;
+                                  });
+    for(auto it = range.first; it != range.second; ++it)
+    {
+      const Seed& s = m_seeds[static_cast<std::size_t>(it->second)];
+      double x, y;
+      seed_in_face(s, f, x, y);
+      out.push_back(Curve_candidate{x, y, 0., s.label});
+    }
+  }
+
+  // whether seed i lies in face f or on its edges
+  bool has_seed(Index f, Index i) const
+  {
+    return std::binary_search(m_face_seeds.begin(), m_face_seeds.end(), std::make_pair(f, i));
+  }
+
+  // the least candidate distance at (x, y), over the candidates of label `label` (any if NO_INDEX); sets
+  // `which` to the index of the least one (-1: none)
+  static double value(const std::vector<Curve_candidate>& c, double x, double y, Index label, int& which)
+  {
+    double best = std::numeric_limits<double>::infinity();
+    which = -1;
+    for(std::size_t i = 0; i < c.size(); ++i)
+      if(label == NO_INDEX || c[i].label == label)
+      {
+        const double d = c[i].base + std::sqrt((x - c[i].x) * (x - c[i].x) + (y - c[i].y) * (y - c[i].y));
+        if(d < best)
+        {
+          best = d;
+          which = static_cast<int>(i);
+        }
+      }
+    return best;
+  }
+  static double value(const std::vector<Curve_candidate>& c, double x, double y, Index label = NO_INDEX)
+  {
+    int which;
+    return value(c, x, y, label, which);
+  }
+
+  const Mesh_arrays& mesh() const { return m_mesh; }
+
+private:
+  // The image of the offer `o` of corner k of face f (frame `frame`) in the frame of f, when the offer came
+  // through f or through a face that shares an edge of f at that corner.
+  bool image_in_face(const Offer& o, bool bent, Index f, int k, const Face_frame& frame, double& x, double& y) const
+  {
+    const Index h = o.halfedge;
+    const double ix = bent ? o.bend : o.sx, iy = bent ? 0. : o.sy;
+    const Index g = Mesh_arrays::face(h);
+    double px, py;
+    Face_frame(m_mesh, g).from_edge_frame(static_cast<int>(h % 3), ix, iy, px, py);
+    return unfold(g, px, py, f, k, frame, x, y);
+  }
+
+  // The point (px, py) of the frame of face g in the frame of f, where g and f are faces around corner k of f:
+  // unfolded across the edges at that corner, the way that crosses fewer edges (at most 16).
+  bool unfold(Index g, double px, double py, Index f, int k, const Face_frame& frame, double& x, double& y) const
+  {
+    if(g == f)
+    {
+      x = px;
+      y = py;
+      return true;
+    }
+    const Index v = m_mesh.source[3 * f + k];
+    for(int steps = 1; steps <= 16; ++steps)
+      for(int way = 0; way < 2; ++way)
+      {
+        Index cur = g;
+        double cx = px, cy = py;
+        int s = 0;
+        for(; s < steps; ++s)
+        {
+          int kc = 0;
+          while(kc < 3 && m_mesh.source[3 * cur + kc] != v)
+            ++kc;
+          if(kc == 3)
+            break;
+          const Index e = way == 0 ? 3 * cur + kc : 3 * cur + (kc + 2) % 3;  // out of v, or into v
+          const Index oe = m_mesh.opposite[e];
+          if(oe == NO_INDEX)
+            break;
+          // in the frame of e (cur on its left), then in that of oe (reversed, its face on its left)
+          double qx, qy;
+          Face_frame(m_mesh, cur).to_edge_frame(static_cast<int>(e % 3), cx, cy, qx, qy);
+          cur = Mesh_arrays::face(oe);
+          Face_frame(m_mesh, cur).from_edge_frame(static_cast<int>(oe % 3), m_mesh.geometry[e].length - qx, -qy, cx, cy);
+        }
+        if(s == steps && cur == f)
+        {
+          x = cx;
+          y = cy;
+          return true;
+        }
+      }
+    (void)frame;
+    return false;
+  }
+
+  // The position of seed s in the frame of face g (a face of its edge, or its face)
+  void seed_in_face(const Seed& s, Index g, double& x, double& y) const
+  {
+    if(s.kind == Seed::IN_FACE)
+    {
+      x = s.x;
+      y = s.y;
+      return;
+    }
+    Index h = s.element;
+    double t = s.x;
+    if(Mesh_arrays::face(h) != g)
+    {
+      t = m_mesh.geometry[h].length - t;
+      h = m_mesh.opposite[h];
+    }
+    Face_frame(m_mesh, g).from_edge_frame(static_cast<int>(h % 3), t, 0., x, y);
+  }
+
+  // Whether the offer bends at the end of its window: a bend on the straight line from the image to the
+  // vertex (a window ending at a vertex the path goes straight through, up to rounding) is no bend.
+  bool is_bent(const Offer& o) const
+  {
+    if(!(o.bend == o.bend))
+      return false;
+    const Halfedge_geometry& g = m_mesh.geometry[o.halfedge];
+    const double straight = std::hypot(g.cx - o.sx, g.cy - o.sy);
+    const double bent = std::hypot(g.cx - o.bend, g.cy) + std::hypot(o.bend - o.sx, o.sy);
+    return bent - straight > 1e-12 * bent;
+  }
+
+  // The label of each vertex: that of the source its recorded path comes from (NO_INDEX: unreached).
+  void find_labels()
+  {
+    const std::size_t nv = m_distance.size();
+    const Index unknown = -2;
+    m_label.assign(nv, unknown);
+    std::vector<Index> vertex_seed(0);
+    for(const Seed& s : m_seeds)
+      if(s.kind == Seed::AT_VERTEX)
+      {
+        Index& l = m_label[static_cast<std::size_t>(s.element)];
+        l = (l == unknown || s.label < l) ? s.label : l;
+      }
+    std::vector<Index> chain;
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      Index w = static_cast<Index>(v);
+      Index found = NO_INDEX;
+      chain.clear();
+      for(std::size_t step = 0; step <= nv; ++step)
+      {
+        const Index l = m_label[static_cast<std::size_t>(w)];
+        if(l != unknown)
+        {
+          found = l;
+          break;
+        }
+        chain.push_back(w);
+        const Offer& o = m_record.vertex[static_cast<std::size_t>(w)];
+        if(!(m_distance[static_cast<std::size_t>(w)] < std::numeric_limits<double>::infinity())
+           || o.origin == NO_INDEX)
+          break;
+        if(o.origin >= m_mesh.nv)
+        {
+          found = m_seeds[static_cast<std::size_t>(o.origin - m_mesh.nv)].label;
+          break;
+        }
+        w = o.origin;
+      }
+      for(Index u : chain)
+        m_label[static_cast<std::size_t>(u)] = found;
+    }
+  }
+
+  const Mesh_arrays& m_mesh;
+  const Path_record& m_record;
+  const std::vector<Seed>& m_seeds;
+  const std::vector<double>& m_distance;
+  std::vector<Index> m_label;
+  std::vector<std::pair<Index, Index> > m_face_seeds;  // (face, seed), sorted
+};
+
+} // namespace internal
+} // namespace VTP_geodesics
+} // namespace CGAL
+
+#endif // CGAL_VTP_GEODESICS_INTERNAL_CURVES_CURVE_FIELD_H
