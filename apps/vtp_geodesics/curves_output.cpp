@@ -17,6 +17,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <utility>
@@ -38,7 +40,12 @@ std::vector<double> curve_levels(const Curve_solver& solver, const std::vector<d
     return levels;
   const double step = picture_detail::isoline_step(largest, isolines);
   for(int k = 1; step * k <= largest && k <= 100000; ++k)
-    levels.push_back(step * k);
+  {
+    // k times the round step, rounded to 12 significant digits (0.6, not 0.6000000000000001)
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.12g", step * k);
+    levels.push_back(std::strtod(text, nullptr));
+  }
   return levels;
 }
 
