@@ -324,7 +324,6 @@ private:
     const std::size_t nv = m_distance.size();
     const Index unknown = -2;
     m_label.assign(nv, unknown);
-    std::vector<Index> vertex_seed(0);
     for(const Seed& s : m_seeds)
       if(s.kind == Seed::AT_VERTEX)
       {
