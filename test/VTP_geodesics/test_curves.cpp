@@ -283,6 +283,41 @@ TEST(Curves, RealMeshesByTargets)
   }
 }
 
+// The cells' areas from the exact borders: on the plane with two sources, 1/2 each; on a real mesh, they add up
+// to the area of the mesh.
+TEST(Curves, VoronoiAreasFromTheBorders)
+{
+  const Surface_mesh m = to_mesh<Surface_mesh>(planar_grid(20, 20, 1., 1.));
+  Curve_solver s(m);
+  const std::vector<Vertex_index> two = { Vertex_index(static_cast<Surface_mesh::size_type>(grid_vertex(20, 5, 10))),
+                                          Vertex_index(static_cast<Surface_mesh::size_type>(grid_vertex(20, 14, 10))) };
+  s.compute(CGAL::Constant_property_map<Vertex_index, double>(), two, VG::parameters::record_paths(true));
+  // two vertices of a row: the bisector is the line x = (x0 + x1) / 2 = 0.475, between two columns of vertices
+  const Point_3 a = m.point(two[0]), b = m.point(two[1]);
+  ASSERT_EQ(a.y(), b.y());
+  const VG::Voronoi_cell_areas cells = VG::geodesic_voronoi_cell_areas(s);
+  for(const Curve& k : VG::geodesic_cell_borders(s))
+    for(std::size_t i = 0; i < k.points.size(); ++i)
+      EXPECT_NEAR(k.points[i].x(), 0.5 * (a.x() + b.x()), 1e-12) << i << " of " << k.points.size() << " " << k.points[i];
+  ASSERT_EQ(cells.areas.size(), 2u);
+  EXPECT_NEAR(cells.areas[0], 0.5 * (a.x() + b.x()), 1e-12);
+  EXPECT_NEAR(cells.areas[0] + cells.areas[1], 1., 1e-12);
+  const Surface_mesh e = load_mesh("elephant.off");
+  Curve_solver t(e);
+  std::vector<Vertex_index> sources;
+  for(std::size_t i = 0; i < 5; ++i)
+    sources.push_back(Vertex_index(static_cast<Surface_mesh::size_type>(i * e.number_of_vertices() / 5)));
+  t.compute(CGAL::Constant_property_map<Vertex_index, double>(), sources, VG::parameters::record_paths(true));
+  const VG::Voronoi_cell_areas ecells = VG::geodesic_voronoi_cell_areas(t);
+  double total = 0., sum = 0.;
+  for(Face_index f : e.faces())
+    total += std::sqrt(CGAL::squared_area(e.point(e.source(e.halfedge(f))), e.point(e.target(e.halfedge(f))),
+                                          e.point(e.target(e.next(e.halfedge(f))))));
+  for(double x : ecells.areas)
+    sum += x;
+  EXPECT_NEAR(sum, total, 1e-12 * total);
+}
+
 TEST(Curves, BadInput)
 {
   const Surface_mesh m = to_mesh<Surface_mesh>(planar_grid(4, 4, 1., 1.));

@@ -15,6 +15,7 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
+#include <CGAL/VTP_geodesics/geodesic_voronoi_cells.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/internal/curves/Curve_extraction.h>
 #include <CGAL/VTP_geodesics/internal/curves/Curve_refinement.h>
@@ -70,7 +71,8 @@ namespace internal {
 
 template <class Solver, class NP>
 std::vector<Geodesic_curve<typename Solver::face_descriptor, typename Solver::Point_3> >
-extract_curves(const Solver& solver, const std::vector<double>* levels, const NP& np, Geodesic_curves_report* report)
+extract_curves(const Solver& solver, const std::vector<double>* levels, const NP& np, Geodesic_curves_report* report,
+               Voronoi_cell_areas* cell_areas = nullptr)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -114,6 +116,19 @@ extract_curves(const Solver& solver, const std::vector<double>* levels, const NP
   }
   else
     curves = extraction.borders(pairs);
+  if(cell_areas != nullptr)
+  {
+    std::size_t cells = 0;
+    for(const Seed& s : engine.seeds())
+      cells = (std::max)(cells, static_cast<std::size_t>(s.label) + 1);
+    cell_areas->areas.assign(cells, 0.);
+    cell_areas->uncertainty.assign(cells, 0.);
+    for(std::size_t i = 0; i < extraction.areas.size() && i < cells; ++i)
+    {
+      cell_areas->areas[i] = extraction.areas[i] * scale * scale;
+      cell_areas->uncertainty[i] = extraction.area_bounds[i] * scale * scale;
+    }
+  }
   std::vector<Curve> out(curves.size());
   std::size_t points = 0;
   for(std::size_t i = 0; i < curves.size(); ++i)
@@ -222,6 +237,24 @@ geodesic_cell_borders(const Solver& solver, const NamedParameters& np = paramete
                       Geodesic_curves_report* report = nullptr)
 {
   return internal::extract_curves(solver, nullptr, np, report);
+}
+
+/// \ingroup PkgVTPGeodesicsRef
+/// The area of the geodesic Voronoi cell of each source of the last computation of `solver` (which used
+/// `record_paths(true)`), from the split of the faces by the borders of `geodesic_cell_borders()`: a face whose
+/// corners have one label is in that cell; a face with two or three labels is cut along the border pieces (the
+/// polygons of its corners). The areas add up to the area of the faces whose corners are all reached (to
+/// rounding). `uncertainty[i]`: the chord tolerance times the length of the border of cell i, a bound of the
+/// area between the chords and the borders (where the borders are exact; see the manual, curves).
+/// \param np optional: `chord_tolerance`, `vertex_point_map` (as `geodesic_isolines()`)
+/// \throws Invalid_input_error as `geodesic_cell_borders()`.
+template <class Solver, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Voronoi_cell_areas geodesic_voronoi_cell_areas(const Solver& solver,
+                                               const NamedParameters& np = parameters::default_values())
+{
+  Voronoi_cell_areas r;
+  internal::extract_curves(solver, nullptr, np, nullptr, &r);
+  return r;
 }
 
 } // namespace VTP_geodesics

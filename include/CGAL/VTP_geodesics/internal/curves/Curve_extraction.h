@@ -46,7 +46,7 @@ struct Extracted_curve
 class Curve_extraction
 {
 public:
-  Curve_extraction(const Curve_field& field, double tolerance) : m_pieces(field, tolerance) {}
+  Curve_extraction(const Curve_field& field, double tolerance) : m_pieces(field, tolerance), m_tolerance(tolerance) {}
 
   const Curve_pieces& pieces() const { return m_pieces; }
 
@@ -178,8 +178,13 @@ public:
       Index l[3];
       for(int k = 0; k < 3; ++k)
         l[k] = field.label(m.source[3 * f + k]);
-      if((l[0] == l[1] && l[1] == l[2]) || l[0] == NO_INDEX || l[1] == NO_INDEX || l[2] == NO_INDEX)
+      if(l[0] == NO_INDEX || l[1] == NO_INDEX || l[2] == NO_INDEX)
+        continue;  // (a face with an unreached corner is in no cell)
+      if(l[0] == l[1] && l[1] == l[2])
+      {
+        add_area(l[0], face_area(m, f), 0.);
         continue;
+      }
       field.candidates(f, c);
       // the edge points
       double ex[3], ey[3];
@@ -208,6 +213,11 @@ public:
         add_border_piece(f, c, l[odd], l[(odd + 1) % 3], set_index(l[odd], l[(odd + 1) % 3]),
                          ex[a], ey[a], ep[a], 2 * lower_of(m, 3 * f + a), ex[b], ey[b], ep[b], 2 * lower_of(m, 3 * f + b),
                          pieces);
+        // the cells' areas: the polygon of the odd corner and the piece, the rest of the face
+        const std::vector<Curve_point>& border = pieces.back().points;
+        const double part = polygon_area(m, f, odd, border, nullptr), bound = m_tolerance * polyline_length(m, f, border);
+        add_area(l[odd], part, bound);
+        add_area(l[(odd + 1) % 3], face_area(m, f) - part, bound);
         continue;
       }
       // three cells: the junction where the three are equal
@@ -218,6 +228,19 @@ public:
       for(int k = 0; k < 3; ++k)
         add_border_piece(f, c, l[k], l[(k + 1) % 3], set_index(l[k], l[(k + 1) % 3]), ex[k], ey[k], ep[k],
                          2 * lower_of(m, 3 * f + k), jx, jy, jp, 6 * m.nf + f, pieces);
+      // the cells' areas: corner k, the piece of edge k to the junction, that of edge k + 2 back
+      const std::size_t last = pieces.size();
+      double bound = 0., sum = 0.;
+      for(int k = 0; k < 3; ++k)
+        bound += m_tolerance * polyline_length(m, f, pieces[last - 3 + static_cast<std::size_t>(k)].points);
+      for(int k = 0; k < 3; ++k)
+      {
+        const double part = k < 2 ? polygon_area(m, f, k, pieces[last - 3 + static_cast<std::size_t>(k)].points,
+                                                 &pieces[last - 3 + static_cast<std::size_t>((k + 2) % 3)].points)
+                                  : face_area(m, f) - sum;
+        sum += part;
+        add_area(l[k], part, bound);
+      }
     }
     return chain(pieces, m);
   }
@@ -383,8 +406,26 @@ private:
     return curves;
   }
 
+  void add_area(Index label, double area, double bound)
+  {
+    const std::size_t i = static_cast<std::size_t>(label);
+    if(areas.size() <= i)
+    {
+      areas.resize(i + 1, 0.);
+      area_bounds.resize(i + 1, 0.);
+    }
+    areas[i] += area;
+    area_bounds[i] += bound;
+  }
+
   Curve_pieces m_pieces;
+  double m_tolerance;
   std::vector<Curve_candidate> m_cf, m_cg;
+
+public:
+  // after borders(): per label, the area of its cell (engine unit) from the split of the faces by the borders,
+  // and the tolerance times the length of its border (a bound of the area between the chords and the curve)
+  std::vector<double> areas, area_bounds;
 
 public:
   std::size_t m_border_fallbacks = 0, m_junction_fallbacks = 0;

@@ -118,6 +118,22 @@ public:
       const Offer& o = m_record.vertex[static_cast<std::size_t>(v)];
       if(o.origin == NO_INDEX)
         continue;
+      if(o.halfedge == NO_INDEX && o.origin < m_mesh.nv)
+      {
+        // straight along an edge from the vertex o.origin: its position unfolded around v into f, counted only
+        // where no windowed candidate sees the point (an empty window: it sees nothing)
+        double p[3][2];
+        const Index g = face_with_edge(v, o.origin, p[0][0], p[0][1]);
+        if(g != NO_INDEX && g != f && unfold(g, p, 1, f, k))
+        {
+          Curve_candidate q{p[0][0], p[0][1], distance(o.origin), label(v)};
+          q.gated = true;
+          q.gx0 = q.gx1 = p[0][0];
+          q.gy0 = q.gy1 = p[0][1];
+          out.push_back(q);
+        }
+        continue;
+      }
       if(o.halfedge == NO_INDEX)
       {
         // straight from a source point of a face next to f (those of f and its edges are added below)
@@ -272,6 +288,25 @@ private:
       }
     }
     return true;
+  }
+
+  // a face with the edge (v, u) and the position of u in its frame (NO_INDEX: none)
+  Index face_with_edge(Index v, Index u, double& x, double& y) const
+  {
+    for(Index i = m_mesh.corner_begin[v]; i < m_mesh.corner_begin[v + 1]; ++i)
+    {
+      const Index h = m_mesh.corners[i];  // from v, in face(h)
+      const Index g = Mesh_arrays::face(h);
+      for(int k = 0; k < 3; ++k)
+        if(m_mesh.source[3 * g + k] == u)
+        {
+          const Face_frame fr(m_mesh, g);
+          x = fr.x[k];
+          y = fr.y[k];
+          return g;
+        }
+    }
+    return NO_INDEX;
   }
 
   // the edge of face `cur` at its corner v crossed going around v one way (out of v) or the other (into v);

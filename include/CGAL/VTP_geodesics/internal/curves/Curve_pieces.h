@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -42,6 +43,64 @@ struct Curve_piece
   Index key[2];
   std::vector<Curve_point> points;
 };
+
+// the area of face f (from its frame)
+inline double face_area(const Mesh_arrays& m, Index f)
+{
+  const Halfedge_geometry g = m.geometry[3 * f];
+  return 0.5 * g.length * g.cy;
+}
+
+inline void frame_point(const Face_frame& fr, const Curve_point& p, double& x, double& y)
+{
+  x = p.b[1] * fr.x[1] + p.b[2] * fr.x[2];
+  y = p.b[2] * fr.y[2];
+}
+
+// the area of the polygon of corner k of face f, the points of `first` in order, then those of `second`
+// backwards (if not null)
+inline double polygon_area(const Mesh_arrays& m, Index f, int k, const std::vector<Curve_point>& first,
+                         const std::vector<Curve_point>* second)
+{
+  const Face_frame fr(m, f);
+  std::vector<std::pair<double, double> > q;
+  q.emplace_back(fr.x[k], fr.y[k]);
+  double x, y;
+  for(const Curve_point& p : first)
+  {
+    frame_point(fr, p, x, y);
+    q.emplace_back(x, y);
+  }
+  if(second != nullptr)
+    for(std::size_t i = second->size(); i-- > 0;)
+    {
+      frame_point(fr, (*second)[i], x, y);
+      q.emplace_back(x, y);
+    }
+  double twice = 0.;
+  for(std::size_t i = 0; i < q.size(); ++i)
+  {
+    const std::pair<double, double>& a = q[i];
+    const std::pair<double, double>& b = q[(i + 1) % q.size()];
+    twice += a.first * b.second - a.second * b.first;
+  }
+  return 0.5 * std::abs(twice);
+}
+
+inline double polyline_length(const Mesh_arrays& m, Index f, const std::vector<Curve_point>& points)
+{
+  const Face_frame fr(m, f);
+  double length = 0., x0 = 0., y0 = 0., x, y;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    frame_point(fr, points[i], x, y);
+    if(i > 0)
+      length += std::hypot(x - x0, y - y0);
+    x0 = x;
+    y0 = y;
+  }
+  return length;
+}
 
 // The zero of f on [a, b] where f(a) and f(b) have opposite signs (Illinois variant of regula falsi).
 template <class F>
