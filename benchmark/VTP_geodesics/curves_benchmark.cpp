@@ -180,6 +180,22 @@ int main(int argc, char** argv)
         border_error.push_back(std::abs(d[0][i] - d[1][i]) / largest);
     }
     print_errors("border points equidistant (exact runs)", border_error, 1e-9);
+    // the cells' areas from the borders against the area of the mesh
+    const VG::Voronoi_cell_areas cells = VG::geodesic_voronoi_cell_areas(solver);
+    double sum = 0., bound = 0., area = 0.;
+    for(std::size_t i = 0; i < cells.areas.size(); ++i)
+    {
+      sum += cells.areas[i];
+      bound += cells.uncertainty[i];
+    }
+    for(auto f : mesh.faces())
+    {
+      const auto h = mesh.halfedge(f);
+      area += std::sqrt(CGAL::squared_area(mesh.point(mesh.source(h)), mesh.point(mesh.target(h)),
+                                           mesh.point(mesh.target(mesh.next(h)))));
+    }
+    std::cout << "cell areas from the borders: sum " << sum << ", mesh area " << area << ", relative difference "
+              << std::abs(sum - area) / area << ", chord bound (sum of uncertainty) " << bound << "\n";
   }
   return 0;
 }
