@@ -208,6 +208,29 @@ const vtp_support::Option_table<Arguments>& option_table()
           throw Tool_error("too many isolines for " + n + " (at most 1000)");
         a.isolines = static_cast<int>(k);
       } },
+    { "--curves-output", "FILE",
+      "write the isolines as curves on the exact distance (the levels of\n"
+      "--isolines, or --levels) and, with several sources or\n"
+      "--farthest-points, the borders of their cells, as OBJ polylines:\n"
+      "'v' and 'l' lines, one group per level ('g level_<value>') and per\n"
+      "pair of neighbour cells ('g border_<i>_<j>'); see the manual (curves)",
+      [](Arguments& a, const std::string& n, const std::string& v) { a.curves_output = file_name(n, v); } },
+    { "--levels", "A,B,...",
+      "the levels of --curves-output (each >= 0), instead of those of\n"
+      "--isolines",
+      [](Arguments& a, const std::string& n, const std::string& v) {
+        std::size_t start = 0;
+        a.levels.clear();
+        while(start <= v.size())
+        {
+          const std::size_t end = std::min(v.find(',', start), v.size());
+          const double x = parse_double(n, v.substr(start, end - start));
+          if(!(x >= 0.) || std::isinf(x))
+            throw Tool_error(n + ": every level must be finite and >= 0");
+          a.levels.push_back(x);
+          start = end + 1;
+        }
+      } },
     { "--view", "X,Y,Z",
       "viewing direction of the picture (default: along the shortest side\n"
       "of the bounding box)",
@@ -346,14 +369,18 @@ void check_arguments(const Arguments& a)
   if(a.through_pinches && (a.has_paths() || !a.target_points.empty() || a.farthest_points > 0 || a.check_cgal))
     throw Tool_error("--through-pinches takes no --path-to, --path-to-point, --target-point, --farthest-points nor "
                      "--check-cgal (whose reference runs on the cut surface)");
+  if(!a.levels.empty() && a.curves_output.empty())
+    throw Tool_error("--levels needs --curves-output");
+  if(!a.curves_output.empty() && a.through_pinches)
+    throw Tool_error("--curves-output takes no --through-pinches");
   if(a.has_picture_colour && a.picture.empty())
     throw Tool_error("--picture-colour needs --picture");
   if(a.has_paths() && a.path_output.empty() && a.picture.empty())
     throw Tool_error("--path-to and --path-to-point need --path-output (or --picture, which draws the paths)");
   const std::string* files[] = { &a.output, &a.stats_json, &a.picture, &a.labels, &a.target_output, &a.path_output,
-                                 &a.samples_output, &a.log_map_output };
+                                 &a.samples_output, &a.log_map_output, &a.curves_output };
   const char* names[] = { "--output", "--stats-json", "--picture", "--labels", "--target-output", "--path-output",
-                          "--samples-output", "--log-map-output" };
+                          "--samples-output", "--log-map-output", "--curves-output" };
   const int n = static_cast<int>(sizeof(names) / sizeof(names[0]));
   for(int i = 0; i < n; ++i)
     for(int j = i + 1; j < n; ++j)

@@ -59,6 +59,8 @@ struct Arguments
   std::string stats_json;                 // empty: none; "-": standard output
   std::string picture;                    // empty: none
   int isolines = 10;
+  std::string curves_output;              // --curves-output: empty: none
+  std::vector<double> levels;             // --levels (empty: those of --isolines)
   bool has_view = false;
   std::array<double, 3> view = { { 0., 0., -1. } };
   bool check_cgal = false;

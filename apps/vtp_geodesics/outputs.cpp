@@ -184,6 +184,8 @@ void write_outputs(Output_files& files, const Arguments& args, const vtp_support
                 [&](std::ostream& os) { write_paths(os, path_format(args.path_output), results.paths); });
   if(!args.log_map_output.empty())
     files.write(args.log_map_output, [&](std::ostream& os) { write_log_map(os, results.log_map); });
+  if(!args.curves_output.empty())
+    files.write(args.curves_output, [&](std::ostream& os) { write_curves_obj(os, run.curves); });
   if(!args.picture.empty())
     files.write(args.picture, [&](std::ostream& os) {
       // the mesh of the computation, with the sources (or the samples) and the paths

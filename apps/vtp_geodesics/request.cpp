@@ -116,6 +116,9 @@ Request make_request(const Arguments& args, const vtp_support::Method_info& meth
     run.source_locations.push_back(r.source_points[j].location);
     run.source_location_labels.push_back(args.sources.size() + j);
   }
+  run.want_curves = !args.curves_output.empty();
+  run.curve_levels = args.levels;
+  run.curve_isolines = args.isolines;
   run.want_labels = args.several_sources() || !args.labels.empty() || args.farthest_points > 0 || args.colour_labels;
   run.max_distance = args.max_distance;
   for(std::size_t v : args.targets)

@@ -91,6 +91,17 @@ void run_sampling(const vtp_support::Method_info& method, Solver& solver, const 
   for(std::size_t i = 0; i < r.mesh_vertices; ++i)
     r.labels[i] = fps.labels[i] == VTP::no_source ? -1 : static_cast<int>(fps.labels[i]);
   r.statistics = fps.statistics;
+  if(request.want_curves && !fps.samples.empty())
+  {
+    // the samples as sources, recorded, for the curves of their field
+    vtp_support::with_method(method, lambda, request.threads, [&](auto tag, const auto& method_np) {
+      typedef decltype(tag) Tag;
+      const CGAL::Constant_property_map<vtp_support::Vertex_index, double> no_map;
+      solver.compute<Tag>(no_map, fps.samples, method_np.lambda_g(request.lambda_g).record_paths(true));
+    });
+    r.curves = extract_curve_sets(solver, curve_levels(solver, request.curve_levels, request.curve_isolines),
+                                  fps.samples.size() > 1, std::vector<std::size_t>());
+  }
 }
 
 // The run with the log map (vtp, pvtp): the named parameters `np` of the run, and the log map's, into r.log_map
@@ -203,7 +214,7 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
                         .maximum_distance(join ? infinity : request.max_distance)
                         .targets(targets)
                         .stop_at_targets(request.stop_at_targets && !join)
-                        .record_paths(!request.paths.empty());
+                        .record_paths(!request.paths.empty() || request.want_curves);
       if(request.log_map)
         compute_log_map<Tag>(solver, mesh, request, np, labels, r);
       else if(request.want_labels)
@@ -246,6 +257,11 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
         }
     }
   }
+
+  // The curves, from the same record (not after runs through the split vertices: refused by the arguments)
+  if(request.want_curves && !label_of_source.empty())
+    r.curves = extract_curve_sets(solver, curve_levels(solver, request.curve_levels, request.curve_isolines),
+                                  label_of_source.size() > 1, label_of_source);
 
   // The paths, from the trace-back recorded by the run; a vertex path from its copy nearest to a source.
   const std::string beyond = request.max_distance < infinity ? " (or it lies beyond --max-distance)" : "";

@@ -13,6 +13,7 @@
 // The computation: the only part of vtp_geodesics that calls the VTP_geodesics library (run.cpp). Everything
 // it returns is plain data.
 
+#include "curves_output.h"
 #include "locate.h"
 
 #include <vtp_support/methods.h>
@@ -35,6 +36,11 @@ struct Run_request
   bool has_lambda = false;                // approximate methods: reset period (default: the recommended one)
   double lambda = 0.;
   double lambda_g = 1.;                   // approximate methods: guard band
+  // --curves-output: the isolines at curve_levels (empty: about `curve_isolines` round levels), and the
+  // borders of the cells with several sources (curves_output.h)
+  bool want_curves = false;
+  std::vector<double> curve_levels;
+  int curve_isolines = 10;
   // The sources: mesh vertices, then points of the surface, each with the index of the source of the command
   // line it stands for (its label; the copies of a vertex share one). None: nothing is computed (all +inf).
   std::vector<vtp_support::Vertex_index> source_vertices;
@@ -110,6 +116,7 @@ struct Run_result
   // geodesic passes through (-1: none)
   std::vector<std::array<double, 2> > log_map;
   std::vector<long long> log_map_via;
+  std::vector<Curve_set> curves;          // --curves-output
 };
 
 // Runs `request` on `mesh`; throws Tool_error (e.g. a path to a vertex that no source reaches) or the

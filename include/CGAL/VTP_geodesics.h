@@ -23,5 +23,6 @@
 #include <CGAL/VTP_geodesics/geodesic_distances.h>
 #include <CGAL/VTP_geodesics/farthest_point_sampling.h>
 #include <CGAL/VTP_geodesics/geodesic_voronoi_cells.h>
+#include <CGAL/VTP_geodesics/geodesic_curves.h>
 
 #endif // CGAL_VTP_GEODESICS_H

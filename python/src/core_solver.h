@@ -179,6 +179,10 @@ public:
                           double max_distance, bool single, const std::string& method_name, double lam, int threads,
                           bool progress);
 
+  // curves.cpp
+  py::list curves(const Index_array& sources, const Index_array& point_faces, const Double_array& point_bary,
+                  const Double_array& levels, bool borders, double chord_tolerance, int exact_refinement);
+
   // sampling.cpp
   py::tuple farthest_point_sampling(std::int64_t k, std::int64_t first, double radius, const std::string& method_name,
                                     double lam, int threads);
@@ -271,6 +275,7 @@ void define_sampling(py::class_<Core_solver>& c);
 void define_io(py::module_& m);
 void define_straightest(py::class_<Core_solver>& c);
 void define_log_map(py::class_<Core_solver>& c);
+void define_curves(py::class_<Core_solver>& c);
 
 } // namespace vtp_python
 

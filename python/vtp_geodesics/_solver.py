@@ -7,12 +7,13 @@ import warnings as _warnings
 from . import _core
 from ._arguments import check_threads, mesh_arrays
 from ._log_map import LogMap
+from ._curves import Curves
 from ._matrices import Matrices
 from ._queries import Queries
 from ._sampling import Sampling
 
 
-class Solver(Queries, Matrices, Sampling, LogMap):
+class Solver(Queries, Matrices, Sampling, LogMap, Curves):
     """Geodesic distances on one triangle mesh: ``Solver(V, F, *, threads=0, repair=True, through_pinches=False)``.
 
     The constructor checks the mesh and does the per-mesh preprocessing once; every query then runs

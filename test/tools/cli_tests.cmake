@@ -468,3 +468,12 @@ add_test(NAME cli_installed_tool
 if(VTP_GEODESICS_PICTURE_TEST_ENVIRONMENT)
   set_tests_properties(cli_installed_tool PROPERTIES ENVIRONMENT "${VTP_GEODESICS_PICTURE_TEST_ENVIRONMENT}")
 endif()
+
+# --curves-output (the manual's page on curves): isolines and cell borders as OBJ polylines; bad levels and
+# --levels alone are refused without writing anything.
+set(curves "${cli_dir}/curves")
+vtp_cli_test(curves_isolines 0 "" "" --source 0 --isolines 5 --curves-output "${curves}.iso.obj")
+vtp_cli_test(curves_borders 0 "" "" --source 0,1000 --levels 0.1,0.2 --curves-output "${curves}.cells.obj")
+vtp_cli_test(curves_bad_level 2 "${curves}.bad.obj" "" ERROR "--levels: every level must be finite and >= 0"
+             --source 0 --levels 0.1,-1 --curves-output "${curves}.bad.obj")
+vtp_cli_test(curves_levels_alone 2 "" "" ERROR "--levels needs --curves-output" --source 0 --levels 0.1)

@@ -34,7 +34,6 @@
 #include <CGAL/VTP_geodesics/internal/source_forms.h>
 
 #include <CGAL/disable_warnings.h>
-
 #include <CGAL/assertions.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
@@ -108,7 +107,6 @@ public:
 
 private:
   typedef internal::Index Index;
-
 public:
   /// \name Creation
   /// @{
@@ -402,6 +400,8 @@ public:
 
   /// \cond SKIP_IN_MANUAL
   const internal::Mesh_arrays& mesh_arrays() const { return m_mesh.arrays; }
+  const internal::Mesh_index<TriangleMesh>& mesh_index() const { return m_mesh; }  // (geodesic_curves.h)
+  const internal::Propagation_engine& engine() const { return m_engine; }
   /// \endcond
 
 private:

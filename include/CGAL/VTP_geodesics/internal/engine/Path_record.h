@@ -39,6 +39,7 @@ struct Offer
   double sx = 0., sy = 0.;
   double bend = std::numeric_limits<double>::quiet_NaN();
   double angle = 0.;          // the window's angle (the log map, Direction_record.h)
+  double b0 = 0., b1 = 0.;    // the window's interval on `halfedge` (the curves, geodesic_curves.h)
 };
 
 // Offer of a straight segment from `origin`.
@@ -61,6 +62,8 @@ inline Offer offer_through_window(double distance, Index h, const Window& w, dou
   o.sx = w.sx;
   o.sy = w.sy;
   o.angle = w.angle;
+  o.b0 = w.b0;
+  o.b1 = w.b1;
   double bend;
   if(window_bend(w, px, py, bend))
     o.bend = bend;

@@ -1,0 +1,201 @@
+// vtp_curves_benchmark: the cost and the exactness of the isolines and cell borders of geodesic_curves.h on a
+// mesh (doc/VTP_geodesics/curves.txt).
+//
+//   vtp_curves_benchmark MESH [--levels N] [--samples K] [--sources S] [--refine R]
+//
+// One distance run from vertex 0 with record_paths(true) (timed beside the same run without the record), the
+// isolines at N levels (default 20: the largest distance times i / (N + 1)) timed, then K points (default
+// 1,000) taken evenly from all the isoline points, each checked by one exact run that has them all as
+// targets: |exact distance - level| / largest distance; beside it, for the same points, what the linear
+// interpolation of the vertex distances gives: |interpolated - exact| / largest distance. With S > 1, the
+// borders of the cells of S sources (vertices spread over the index range) are checked the same way (the
+// two cells' sources, one run each): |d_i - d_j| / largest distance. With R > 0, the isolines are refined by R
+// exact runs (named parameter exact_refinement).
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/VTP_geodesics.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef Mesh::Vertex_index Vertex;
+typedef CGAL::VTP_geodesics::Geodesic_distance_solver<Mesh> Solver;
+namespace VG = CGAL::VTP_geodesics;
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void print_errors(const char* what, std::vector<double> e, double threshold)
+{
+  std::sort(e.begin(), e.end());
+  const std::size_t n = e.size();
+  std::size_t within = 0;
+  for(double x : e)
+    within += x <= threshold ? 1 : 0;
+  std::cout << what << ": " << n << " points, " << within << " within " << threshold << " (" << 100. * within / (n ? n : 1)
+            << "%), median " << (n ? e[n / 2] : 0.) << ", 99% " << (n ? e[n * 99 / 100] : 0.) << ", max "
+            << (n ? e[n - 1] : 0.) << " (relative to the largest distance)\n";
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if(argc < 2)
+  {
+    std::cerr << "usage: vtp_curves_benchmark MESH [--levels N] [--samples K] [--sources S]\n";
+    return 2;
+  }
+  int number_of_levels = 20, sources_count = 1, refine = 0;
+  std::size_t samples = 1000;
+  for(int i = 2; i + 1 < argc; i += 2)
+  {
+    const std::string a = argv[i];
+    if(a == "--levels")
+      number_of_levels = std::atoi(argv[i + 1]);
+    else if(a == "--samples")
+      samples = static_cast<std::size_t>(std::atol(argv[i + 1]));
+    else if(a == "--refine")
+      refine = std::atoi(argv[i + 1]);
+    else if(a == "--sources")
+      sources_count = std::atoi(argv[i + 1]);
+    else
+    {
+      std::cerr << "unknown option " << a << "\n";
+      return 2;
+    }
+  }
+  Mesh mesh;
+  if(!CGAL::IO::read_polygon_mesh(argv[1], mesh) || mesh.is_empty())
+  {
+    std::cerr << "cannot read " << argv[1] << "\n";
+    return 1;
+  }
+  Solver solver(mesh);
+  const Vertex source = *mesh.vertices().begin();
+  CGAL::Constant_property_map<Vertex, double> discard;
+  auto t0 = std::chrono::steady_clock::now();
+  solver.compute(discard, source);
+  const double plain = seconds_since(t0);
+  t0 = std::chrono::steady_clock::now();
+  solver.compute(discard, source, VG::parameters::record_paths(true));
+  const double recorded = seconds_since(t0);
+  double largest = 0.;
+  for(double d : solver.distances())
+    if(std::isfinite(d))
+      largest = (std::max)(largest, d);
+  std::vector<double> levels;
+  for(int i = 1; i <= number_of_levels; ++i)
+    levels.push_back(largest * i / (number_of_levels + 1));
+  VG::Geodesic_curves_report report;
+  t0 = std::chrono::steady_clock::now();
+  const auto curves = VG::geodesic_isolines(solver, levels, VG::parameters::exact_refinement(refine), &report);
+  const double extraction = seconds_since(t0);
+  std::cout << argv[1] << ": " << mesh.number_of_vertices() << " vertices, " << mesh.number_of_faces() << " faces\n"
+            << "distance run " << plain << " s, with record_paths " << recorded << " s; " << number_of_levels
+            << " levels: " << curves.size() << " curves, " << report.points << " points in " << extraction
+            << " s = " << 100. * extraction / recorded << "% of the recorded run (" << 100. * extraction / plain
+            << "% of the plain run)\n"
+            << "exact refinement runs: " << refine << " (residual before the last moves: " << report.residual / largest
+            << " of the largest distance)\n"
+            << "left on the chord: " << report.undecided << ", edge points interpolated: " << report.edge_fallbacks << "\n";
+  // the sample
+  std::vector<Solver::Face_location> points;
+  std::vector<double> at_level;
+  std::size_t total = report.points, index = 0;
+  const std::size_t stride = (std::max)(std::size_t(1), total / (samples ? samples : 1));
+  for(const auto& c : curves)
+    for(const auto& l : c.locations)
+    {
+      if(index++ % stride == 0 && points.size() < samples)
+      {
+        points.push_back(l);
+        at_level.push_back(c.level);
+      }
+    }
+  Solver exact(mesh);
+  exact.compute(discard, source, VG::parameters::targets(points));
+  std::vector<double> curve_error, linear_error;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    const double d = exact.target_distance(i);
+    curve_error.push_back(std::abs(d - at_level[i]) / largest);
+    const auto h = mesh.halfedge(points[i].first);
+    const Vertex v[3] = { mesh.source(h), mesh.target(h), mesh.target(mesh.next(h)) };
+    double interpolated = 0.;
+    for(int k = 0; k < 3; ++k)
+      interpolated += points[i].second[static_cast<std::size_t>(k)] * solver.distance(v[k]);
+    linear_error.push_back(std::abs(interpolated - d) / largest);
+  }
+  print_errors("isoline points at their level (exact run)", curve_error, 1e-9);
+  print_errors("linear interpolation of the vertex distances at the same points", linear_error, 1e-9);
+  if(sources_count > 1)
+  {
+    std::vector<Vertex> sources;
+    const std::size_t nv = mesh.number_of_vertices();
+    for(int i = 0; i < sources_count; ++i)
+      sources.push_back(Vertex(static_cast<Mesh::size_type>(nv * static_cast<std::size_t>(i) / static_cast<std::size_t>(sources_count))));
+    solver.compute(discard, sources, VG::parameters::record_paths(true));
+    VG::Geodesic_curves_report border_report;
+    t0 = std::chrono::steady_clock::now();
+    const auto borders = VG::geodesic_cell_borders(solver, VG::parameters::default_values(), &border_report);
+    const double border_time = seconds_since(t0);
+    std::size_t border_points = 0;
+    for(const auto& b : borders)
+      border_points += b.points.size();
+    std::cout << sources_count << " sources: " << borders.size() << " borders, " << border_points << " points in "
+              << border_time << " s\n";
+    std::vector<double> border_error;
+    const std::size_t border_stride = (std::max)(std::size_t(1), border_points / (samples ? samples : 1));
+    std::size_t q = 0;
+    for(const auto& b : borders)
+    {
+      std::vector<Solver::Face_location> chosen;
+      for(const auto& l : b.locations)
+        if(q++ % border_stride == 0)
+          chosen.push_back(l);
+      if(chosen.empty())
+        continue;
+      std::vector<double> d[2];
+      for(int j = 0; j < 2; ++j)
+      {
+        exact.compute(discard, sources[b.cells[static_cast<std::size_t>(j)]], VG::parameters::targets(chosen));
+        for(std::size_t i = 0; i < chosen.size(); ++i)
+          d[j].push_back(exact.target_distance(i));
+      }
+      for(std::size_t i = 0; i < chosen.size(); ++i)
+        border_error.push_back(std::abs(d[0][i] - d[1][i]) / largest);
+    }
+    print_errors("border points equidistant (exact runs)", border_error, 1e-9);
+    // the cells' areas from the borders against the area of the mesh
+    const VG::Voronoi_cell_areas cells = VG::geodesic_voronoi_cell_areas(solver);
+    double sum = 0., bound = 0., area = 0.;
+    for(std::size_t i = 0; i < cells.areas.size(); ++i)
+    {
+      sum += cells.areas[i];
+      bound += cells.uncertainty[i];
+    }
+    for(auto f : mesh.faces())
+    {
+      const auto h = mesh.halfedge(f);
+      area += std::sqrt(CGAL::squared_area(mesh.point(mesh.source(h)), mesh.point(mesh.target(h)),
+                                           mesh.point(mesh.target(mesh.next(h)))));
+    }
+    std::cout << "cell areas from the borders: sum " << sum << ", mesh area " << area << ", relative difference "
+              << std::abs(sum - area) / area << ", chord bound (sum of uncertainty) " << bound << "\n";
+  }
+  return 0;
+}

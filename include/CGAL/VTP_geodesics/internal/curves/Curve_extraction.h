@@ -1,0 +1,438 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_CURVES_CURVE_EXTRACTION_H
+#define CGAL_VTP_GEODESICS_INTERNAL_CURVES_CURVE_EXTRACTION_H
+
+#include <CGAL/license/VTP_geodesics.h>
+
+#include <CGAL/VTP_geodesics/internal/curves/Curve_pieces.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace VTP_geodesics {
+namespace internal {
+
+// A curve of a set (a level, or a pair of cells): its points, each in a face, consecutive points in a
+// common face; closed or open (an open curve ends on the border of the mesh, at a junction of three cells,
+// or where a corner of a face is unreached).
+struct Extracted_curve
+{
+  Index set;
+  bool closed;
+  std::vector<Curve_point> points;
+};
+
+// The isolines and the cell borders of a field (Curve_field.h). Which edges a curve crosses is decided by
+// the values at their ends (the vertex distances, or labels), as marching triangles would, so that the
+// pieces of two faces meet at the same edge point; where the curve crosses an edge and how it runs inside
+// a face come from the candidates (Curve_pieces.h).
+class Curve_extraction
+{
+public:
+  Curve_extraction(const Curve_field& field, double tolerance) : m_pieces(field, tolerance), m_tolerance(tolerance) {}
+
+  const Curve_pieces& pieces() const { return m_pieces; }
+
+  // The isolines at `levels` (engine unit); set i is levels[i].
+  std::vector<Extracted_curve> isolines(const std::vector<double>& levels)
+  {
+    const Curve_field& field = m_pieces.field();
+    const Mesh_arrays& m = field.mesh();
+    std::vector<std::size_t> order(levels.size());
+    for(std::size_t i = 0; i < order.size(); ++i)
+      order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return levels[a] < levels[b]; });
+    std::vector<double> sorted(levels.size());
+    for(std::size_t i = 0; i < order.size(); ++i)
+      sorted[i] = levels[order[i]];
+    std::vector<Curve_piece> pieces;
+    std::vector<Curve_candidate> c;
+    for(Index f = 0; f < m.nf; ++f)
+    {
+      double d[3];
+      for(int k = 0; k < 3; ++k)
+        d[k] = field.distance(m.source[3 * f + k]);
+      double lo = (std::min)({ d[0], d[1], d[2] });
+      const double hi = (std::max)({ d[0], d[1], d[2] });
+      if(!(lo < std::numeric_limits<double>::infinity()))
+        continue;
+      // on an edge of length l, the distance is at least (d_a + d_b - l) / 2 (a dip between two vertices above
+      // a level)
+      for(int k = 0; k < 3; ++k)
+        lo = (std::min)(lo, 0.5 * (d[k] + d[(k + 1) % 3] - 1.01 * m.geometry[3 * f + k].length));
+      auto first = std::upper_bound(sorted.begin(), sorted.end(), lo);  // levels above the least value
+      if(first == sorted.end() || !(*first <= hi))
+        continue;
+      field.candidates(f, c);
+      for(auto it = first; it != sorted.end() && *it <= hi; ++it)
+        face_isoline(f, c, d, *it, static_cast<Index>(order[static_cast<std::size_t>(it - sorted.begin())]), pieces);
+    }
+    return chain(pieces, m);
+  }
+
+  // The pieces of the isoline at `level` (set `set`) in face f (candidates c, corner distances d): the
+  // crossings of its edges in counterclockwise order, each where the boundary leaves the part below the
+  // level joined to the next where it enters it again.
+  void face_isoline(Index f, const std::vector<Curve_candidate>& c, const double d[3], double level, Index set,
+                    std::vector<Curve_piece>& pieces)
+  {
+    const Mesh_arrays& m = m_pieces.field().mesh();
+    auto phi = [level](const std::vector<Curve_candidate>& cc, double x, double y) {
+      return Curve_field::value(cc, x, y) - level;
+    };
+    struct Crossing
+    {
+      Curve_point point;
+      double x, y;
+      Index key;
+      bool leaves;  // going counterclockwise, the boundary leaves the part below the level
+    };
+    Crossing cross[6];
+    int n = 0;
+    for(int k = 0; k < 3; ++k)
+    {
+      const int j = (k + 1) % 3;
+      const Index h = 3 * f + k;
+      const Index lower = lower_of(m, h);
+      const double da = h == lower ? d[k] : d[j], db = h == lower ? d[j] : d[k];
+      double t[2];
+      const int count = m_pieces.isoline_crossings(lower, level, da, db, t);
+      for(int i = 0; i < count; ++i)
+      {
+        const int along_lower = h == lower ? i : count - 1 - i;  // (crossings are listed in the order of h)
+        const double ti = t[along_lower];
+        Crossing& x = cross[n++];
+        x.point = Curve_pieces::edge_curve_point(h, lower, ti);
+        m_pieces.edge_point(h, h == lower ? ti : 1. - ti, x.x, x.y);
+        x.key = 2 * lower + along_lower;
+        x.leaves = count == 1 ? d[k] < level : i == 1;
+      }
+    }
+    for(int i = 0; i < n; ++i)
+    {
+      if(!cross[i].leaves)
+        continue;
+      int j = (i + 1) % n;
+      while(j != i && cross[j].leaves)
+        j = (j + 1) % n;
+      if(j == i)
+        break;
+      Curve_piece piece;
+      piece.set = set;
+      piece.key[0] = cross[i].key;
+      piece.key[1] = cross[j].key;
+      piece.points.push_back(cross[i].point);
+      double radius = std::numeric_limits<double>::infinity();
+      for(const Crossing* e : { &cross[i], &cross[j] })
+      {
+        int which;
+        Curve_field::value(c, e->x, e->y, NO_INDEX, which);
+        if(which >= 0)
+          radius = (std::min)(radius, level - c[static_cast<std::size_t>(which)].base);
+      }
+      const double chord = std::hypot(cross[j].x - cross[i].x, cross[j].y - cross[i].y);
+      m_pieces.interior(f, c, cross[i].x, cross[i].y, cross[j].x, cross[j].y, m_pieces.number_of_chords(chord, radius),
+                        phi, piece.points);
+      piece.points.push_back(cross[j].point);
+      pieces.push_back(std::move(piece));
+    }
+  }
+
+  // The borders between the cells of the labels; `pairs` receives the two labels of each set.
+  std::vector<Extracted_curve> borders(std::vector<std::pair<Index, Index> >& pairs)
+  {
+    const Curve_field& field = m_pieces.field();
+    const Mesh_arrays& m = field.mesh();
+    std::map<std::pair<Index, Index>, Index> set_of;
+    auto set_index = [&](Index a, Index b) {
+      const std::pair<Index, Index> key(std::min(a, b), std::max(a, b));
+      auto it = set_of.find(key);
+      if(it != set_of.end())
+        return it->second;
+      const Index s = static_cast<Index>(pairs.size());
+      pairs.push_back(key);
+      set_of[key] = s;
+      return s;
+    };
+    std::vector<Curve_piece> pieces;
+    std::vector<Curve_candidate> c;
+    for(Index f = 0; f < m.nf; ++f)
+    {
+      Index l[3];
+      for(int k = 0; k < 3; ++k)
+        l[k] = field.label(m.source[3 * f + k]);
+      if(l[0] == NO_INDEX || l[1] == NO_INDEX || l[2] == NO_INDEX)
+        continue;  // (a face with an unreached corner is in no cell)
+      if(l[0] == l[1] && l[1] == l[2])
+      {
+        add_area(l[0], face_area(m, f), 0.);
+        continue;
+      }
+      field.candidates(f, c);
+      // the edge points
+      double ex[3], ey[3];
+      Curve_point ep[3];
+      for(int k = 0; k < 3; ++k)
+      {
+        const int j = (k + 1) % 3;
+        if(l[k] == l[j])
+          continue;
+        const Index h = 3 * f + k;
+        const Index o = m.opposite[h];
+        const Index lower = (o == NO_INDEX || h < o) ? h : o;
+        const Index la = h == lower ? l[k] : l[j], lb = h == lower ? l[j] : l[k];
+        const double t = border_crossing(lower, la, lb);
+        ep[k] = Curve_pieces::edge_curve_point(h, lower, t);
+        m_pieces.edge_point(h, h == lower ? t : 1. - t, ex[k], ey[k]);
+      }
+      const bool three = l[0] != l[1] && l[1] != l[2] && l[2] != l[0];
+      if(!three)
+      {
+        int odd = 0;
+        for(int k = 0; k < 3; ++k)
+          if(l[(k + 1) % 3] == l[(k + 2) % 3])
+            odd = k;
+        const int a = odd, b = (odd + 2) % 3;  // the edges odd -> odd+1 and odd+2 -> odd
+        add_border_piece(f, c, l[odd], l[(odd + 1) % 3], set_index(l[odd], l[(odd + 1) % 3]),
+                         ex[a], ey[a], ep[a], 2 * lower_of(m, 3 * f + a), ex[b], ey[b], ep[b], 2 * lower_of(m, 3 * f + b),
+                         pieces);
+        // the cells' areas: the polygon of the odd corner and the piece, the rest of the face
+        const std::vector<Curve_point>& border = pieces.back().points;
+        const double part = polygon_area(m, f, odd, border, nullptr), bound = m_tolerance * polyline_length(m, f, border);
+        add_area(l[odd], part, bound);
+        add_area(l[(odd + 1) % 3], face_area(m, f) - part, bound);
+        continue;
+      }
+      // three cells: the junction where the three are equal
+      double jx = (ex[0] + ex[1] + ex[2]) / 3., jy = (ey[0] + ey[1] + ey[2]) / 3.;
+      junction(f, c, l, jx, jy);
+      const Face_frame fr(m, f);
+      const Curve_point jp = Curve_pieces::point_in_face(f, fr, jx, jy);
+      for(int k = 0; k < 3; ++k)
+        add_border_piece(f, c, l[k], l[(k + 1) % 3], set_index(l[k], l[(k + 1) % 3]), ex[k], ey[k], ep[k],
+                         2 * lower_of(m, 3 * f + k), jx, jy, jp, 6 * m.nf + f, pieces);
+      // the cells' areas: corner k, the piece of edge k to the junction, that of edge k + 2 back
+      const std::size_t last = pieces.size();
+      double bound = 0., sum = 0.;
+      for(int k = 0; k < 3; ++k)
+        bound += m_tolerance * polyline_length(m, f, pieces[last - 3 + static_cast<std::size_t>(k)].points);
+      for(int k = 0; k < 3; ++k)
+      {
+        const double part = k < 2 ? polygon_area(m, f, k, pieces[last - 3 + static_cast<std::size_t>(k)].points,
+                                                 &pieces[last - 3 + static_cast<std::size_t>((k + 2) % 3)].points)
+                                  : face_area(m, f) - sum;
+        sum += part;
+        add_area(l[k], part, bound);
+      }
+    }
+    return chain(pieces, m);
+  }
+
+private:
+  static Index lower_of(const Mesh_arrays& m, Index h)
+  {
+    const Index o = m.opposite[h];
+    return (o == NO_INDEX || h < o) ? h : o;
+  }
+
+  // the border of cells la (negative side) and lb on the lower half-edge c
+  double border_crossing(Index c, Index la, Index lb)
+  {
+    auto value_of = [](Index label) {
+      return [label](const std::vector<Curve_candidate>& cc, double x, double y) {
+        return Curve_field::value(cc, x, y, label);
+      };
+    };
+    const Curve_field& field = m_pieces.field();
+    const Mesh_arrays& m = field.mesh();
+    const Index o = m.opposite[c];
+    field.candidates(Mesh_arrays::face(c), m_cf);
+    if(o != NO_INDEX)
+      field.candidates(Mesh_arrays::face(o), m_cg);
+    else
+      m_cg.clear();
+    auto psi = [&](double t) {
+      return m_pieces.edge_value(c, t, m_cf, m_cg, value_of(la)) - m_pieces.edge_value(c, t, m_cf, m_cg, value_of(lb));
+    };
+    const double f0 = psi(0.), f1 = psi(1.);
+    if(!(f0 <= 0. && f1 >= 0.) || !std::isfinite(f0) || !std::isfinite(f1))
+    {
+      ++m_border_fallbacks;
+      const double da = field.distance(m.source[c]), db = field.distance(m.target(c));
+      const double length = m.geometry[c].length;
+      return length > 0. ? (std::min)((std::max)((db - da + length) / (2. * length), 0.), 1.) : 0.5;
+    }
+    if(f0 == 0.)
+      return 0.;
+    if(f1 == 0.)
+      return 1.;
+    return bracketed_zero(psi, 0., 1., f0, f1, 1e-15);
+  }
+
+  void add_border_piece(Index f, const std::vector<Curve_candidate>& c, Index la, Index lb, Index set, double x0,
+                        double y0, const Curve_point& p0, Index k0, double x1, double y1, const Curve_point& p1,
+                        Index k1, std::vector<Curve_piece>& pieces)
+  {
+    auto psi = [la, lb](const std::vector<Curve_candidate>& cc, double x, double y) {
+      return Curve_field::value(cc, x, y, la) - Curve_field::value(cc, x, y, lb);
+    };
+    Curve_piece piece;
+    piece.set = set;
+    piece.key[0] = k0;
+    piece.key[1] = k1;
+    piece.points.push_back(p0);
+    const double r = (std::min)(Curve_field::value(c, x0, y0), Curve_field::value(c, x1, y1));
+    m_pieces.interior(f, c, x0, y0, x1, y1, m_pieces.number_of_chords(std::hypot(x1 - x0, y1 - y0), r), psi,
+                      piece.points);
+    piece.points.push_back(p1);
+    pieces.push_back(std::move(piece));
+  }
+
+  // Newton's method on (value_l0 - value_l1, value_l1 - value_l2) = 0 from (x, y), kept in the face
+  void junction(Index f, const std::vector<Curve_candidate>& c, const Index l[3], double& x, double& y)
+  {
+    const Face_frame fr(m_pieces.field().mesh(), f);
+    auto g = [&](double px, double py, double& g0, double& g1) {
+      const double v0 = Curve_field::value(c, px, py, l[0]), v1 = Curve_field::value(c, px, py, l[1]),
+                   v2 = Curve_field::value(c, px, py, l[2]);
+      g0 = v0 - v1;
+      g1 = v1 - v2;
+    };
+    const double scale = std::abs(fr.x[1]) + std::abs(fr.x[2]) + std::abs(fr.y[2]);
+    const double step = 1e-7 * scale;
+    for(int i = 0; i < 30; ++i)
+    {
+      double g0, g1, a0, a1, b0, b1;
+      g(x, y, g0, g1);
+      if(std::abs(g0) + std::abs(g1) <= 1e-15 * scale)
+        break;
+      g(x + step, y, a0, a1);
+      g(x, y + step, b0, b1);
+      const double j00 = (a0 - g0) / step, j10 = (a1 - g1) / step, j01 = (b0 - g0) / step, j11 = (b1 - g1) / step;
+      const double det = j00 * j11 - j01 * j10;
+      if(!(std::abs(det) > 0.) || !std::isfinite(det))
+        break;
+      const double nx = x - (j11 * g0 - j01 * g1) / det, ny = y - (-j10 * g0 + j00 * g1) / det;
+      // keep the point in the face
+      const Curve_point p = Curve_pieces::point_in_face(f, fr, nx, ny);
+      if(!(p.b[0] >= -1e-9 && p.b[1] >= -1e-9 && p.b[2] >= -1e-9))
+      {
+        ++m_junction_fallbacks;
+        break;
+      }
+      x = nx;
+      y = ny;
+    }
+  }
+
+  // Joins the pieces of each set into curves, at the keys of their ends.
+  static std::vector<Extracted_curve> chain(std::vector<Curve_piece>& pieces, const Mesh_arrays&)
+  {
+    std::stable_sort(pieces.begin(), pieces.end(),
+                     [](const Curve_piece& a, const Curve_piece& b) { return a.set < b.set; });
+    std::vector<Extracted_curve> curves;
+    std::vector<char> used(pieces.size(), 0);
+    std::unordered_map<Index, std::vector<std::size_t> > at;  // key -> 2 * piece + end
+    for(std::size_t begin = 0; begin < pieces.size();)
+    {
+      std::size_t end = begin;
+      while(end < pieces.size() && pieces[end].set == pieces[begin].set)
+        ++end;
+      at.clear();
+      for(std::size_t i = begin; i < end; ++i)
+        for(int e = 0; e < 2; ++e)
+          at[pieces[i].key[e]].push_back(2 * i + static_cast<std::size_t>(e));
+      auto walk = [&](std::size_t i, int e) {
+        Extracted_curve curve;
+        curve.set = pieces[i].set;
+        curve.closed = false;
+        const std::size_t first = i;
+        for(;;)
+        {
+          used[i] = 1;
+          std::vector<Curve_point>& p = pieces[i].points;
+          if(e == 1)
+            std::reverse(p.begin(), p.end());
+          curve.points.insert(curve.points.end(), p.begin() + (curve.points.empty() ? 0 : 1), p.end());
+          const Index key = pieces[i].key[1 - e];
+          std::size_t next = pieces.size();
+          int next_end = 0;
+          for(std::size_t x : at[key])
+            if(x / 2 != i && (!used[x / 2] || x / 2 == first))
+            {
+              next = x / 2;
+              next_end = static_cast<int>(x % 2);
+              break;
+            }
+          if(next == first)
+          {
+            curve.closed = true;
+            curve.points.pop_back();
+            break;
+          }
+          if(next == pieces.size())
+            break;
+          i = next;
+          e = next_end;
+        }
+        curves.push_back(std::move(curve));
+      };
+      for(std::size_t i = begin; i < end; ++i)  // open curves from their ends
+        for(int e = 0; e < 2 && !used[i]; ++e)
+          if(at[pieces[i].key[e]].size() == 1)
+            walk(i, e);
+      for(std::size_t i = begin; i < end; ++i)  // closed curves
+        if(!used[i])
+          walk(i, 0);
+      begin = end;
+    }
+    return curves;
+  }
+
+  void add_area(Index label, double area, double bound)
+  {
+    const std::size_t i = static_cast<std::size_t>(label);
+    if(areas.size() <= i)
+    {
+      areas.resize(i + 1, 0.);
+      area_bounds.resize(i + 1, 0.);
+    }
+    areas[i] += area;
+    area_bounds[i] += bound;
+  }
+
+  Curve_pieces m_pieces;
+  double m_tolerance;
+  std::vector<Curve_candidate> m_cf, m_cg;
+
+public:
+  // after borders(): per label, the area of its cell (engine unit) from the split of the faces by the borders,
+  // and the tolerance times the length of its border (a bound of the area between the chords and the curve)
+  std::vector<double> areas, area_bounds;
+
+public:
+  std::size_t m_border_fallbacks = 0, m_junction_fallbacks = 0;
+};
+
+} // namespace internal
+} // namespace VTP_geodesics
+} // namespace CGAL
+
+#endif // CGAL_VTP_GEODESICS_INTERNAL_CURVES_CURVE_EXTRACTION_H
