@@ -22,6 +22,7 @@
 //   matrices.cpp   matrix_dense(), matrix_sparse(): rows on all cores, Ctrl-C and progress every 0.2 s
 //   sampling.cpp   farthest_point_sampling(), with the Voronoi cell areas
 //   straightest.cpp  trace(): straightest geodesics (the exp map), many walks on the solver's threads
+//   patches.cpp    polar_patches(): the log map around many centres cut at a radius, CSR arrays
 //   io.cpp         read_mesh(), symmetric_min_csr(); the conversions of vertex indices, face locations and
 //                  barycentric coordinates between Python's arrays and the library
 //
@@ -160,6 +161,9 @@ public:
                   std::int64_t b_face, const Double_array& b_bary, const std::string& method_name, double lam);
   py::tuple locate(const Double_array& P);
 
+  // patches.cpp
+  py::tuple polar_patches(const Index_array& centres, double radius, bool strict, int threads);
+
   // straightest.cpp
   py::tuple trace(const Index_array& start_vertices, const Index_array& start_faces, const Double_array& start_bary,
                   const Double_array& directions, const Double_array& lengths, int threads);
@@ -263,6 +267,7 @@ void define_matrices(py::class_<Core_solver>& c);
 void define_sampling(py::class_<Core_solver>& c);
 void define_io(py::module_& m);
 void define_straightest(py::class_<Core_solver>& c);
+void define_patches(py::class_<Core_solver>& c);
 
 } // namespace vtp_python
 
