@@ -52,7 +52,7 @@ public:
   {
     CGAL_precondition(!settings.virtual_sources && !settings.want_labels && !settings.record_paths);
     CGAL_precondition(!settings.known_distances && !(settings.reset_step < std::numeric_limits<double>::infinity()));
-    if(m_state.mesh != &m)
+    if(m_state.mesh != &m || !m_complete)  // (a run that threw left its state half done: start afresh)
     {
       m_state.start(m, settings, 1, std::vector<Target>());
       m_reached.clear();
@@ -63,6 +63,7 @@ public:
       m_state.start_local(settings, m_reached);
       m_reached.clear();
     }
+    m_complete = false;
     m_state.reached = &m_reached;
     m_seeds.assign(1, seed);
     if(seed.kind == Seed::AT_VERTEX)
@@ -71,6 +72,7 @@ public:
     seed_sources(m_state, m_seeds);
     m_loop.run(m_state);
     m_state.reached = nullptr;
+    m_complete = true;
   }
 
   // The vertices the last run reached (each once), in the order they were first reached; those whose distance
@@ -119,6 +121,7 @@ private:
   Sequential_loop m_loop;
   std::vector<Seed> m_seeds;
   std::vector<Index> m_reached;
+  bool m_complete = false;  // the last run went to its end (put_back() then suffices)
 };
 
 } // namespace internal
