@@ -61,6 +61,13 @@ const vtp_support::Option_table<Arguments> options = {
       "scipy.sparse.csr_matrix((data, indices, indptr), shape); entries\n"
       "beyond R and unreachable vertices are absent",
       vtp_support::apply_distance_limit<Arguments, &Arguments::max_distance, &Arguments::has_max_distance> },
+    { "--polar", nullptr,
+      "with --max-distance R: the polar patches, geodesic polar coordinates\n"
+      "around each source: group /distances holds rho (as without --polar),\n"
+      "group /angles theta in [0, 2 pi) (data; its indices and indptr are\n"
+      "those of /distances), the log map of the library from the source\n"
+      "alone (method vtp)",
+      [](Arguments& a, const std::string&, const std::string&) { a.polar = true; } },
     { "--method", "vtp|avtp|vsp|vsp2",
       "exact VTP (default), approximate AVTP, or virtual source propagation\n"
       "(vsp: approximate, an upper bound, the fastest; vsp2: two virtual\n"
@@ -138,6 +145,10 @@ Arguments parse_arguments(int argc, char** argv)
     throw Tool_error("no --output file given");
   if(a.has_lambda && !a.method->approximate)
     throw Tool_error("--lambda needs --method avtp");
+  if(a.polar && !a.has_max_distance)
+    throw Tool_error("--polar needs --max-distance R (the patches are sparse rows within R)");
+  if(a.polar && std::string(a.method->name) != "vtp")
+    throw Tool_error("--polar needs --method vtp (the log map needs the exact method)");
   if(a.resume && a.force)
     throw Tool_error("--resume and --force exclude each other");
   return a;

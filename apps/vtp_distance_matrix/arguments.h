@@ -20,6 +20,7 @@ struct Arguments
   std::string output;
   bool float32 = false;
   bool has_max_distance = false;  // with a distance limit, the rows are sparse (CSR)
+  bool polar = false;             // --polar: the polar patches (rho and theta), sparse rows; needs --max-distance
   double max_distance = std::numeric_limits<double>::infinity();
   // --method: a sequential method of the table (vtp_support/methods.h; the rows run in parallel); vtp by default
   const vtp_support::Method_info* method = nullptr;

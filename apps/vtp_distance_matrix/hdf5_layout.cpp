@@ -181,6 +181,16 @@ Sparse_offsets create_sparse_file(const std::string& path, const File_descriptio
         path, "/distances/indptr");
   pointers.reset();
   group.reset();
+  if(d.polar)
+  {
+    Handle angles(H5Gcreate2(file.get(), "angles", H5P_DEFAULT, gcpl.get(), H5P_DEFAULT), H5Gclose);
+    check(angles.valid(), path, "/angles");
+    write_number_attribute(angles.get(), "shape", shape, 2, H5T_STD_I64LE, H5T_NATIVE_INT64, path);
+    offsets.angles = reserve_dataset(angles.get(), "data", 1, &nnz, value_type(d.float32), path);
+    check(H5Lcreate_hard(file.get(), "/distances/indices", angles.get(), "indices", H5P_DEFAULT, H5P_DEFAULT) >= 0
+            && H5Lcreate_hard(file.get(), "/distances/indptr", angles.get(), "indptr", H5P_DEFAULT, H5P_DEFAULT) >= 0,
+          path, "/angles/indices");
+  }
   close_file(file, path);
   return offsets;
 }

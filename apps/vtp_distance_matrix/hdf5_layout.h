@@ -8,6 +8,10 @@
 //   /distances/indices           int64 (nnz)               their vertices, ascending in each row
 //   /distances/indptr            int64 (rows + 1)          row i is data[indptr[i]:indptr[i+1]]
 //   /distances@shape             int64 (2)                 (rows, vertices)
+//   polar patches (--max-distance R --polar): /distances as above holds rho, and
+//   /angles/data                 float64|float32 (nnz)     theta in [0, 2 pi) of each entry of /distances
+//   /angles/indices, /angles/indptr  hard links to /distances/indices and /distances/indptr (one dataset each)
+//   /angles@shape                int64 (2)                 (rows, vertices)
 //   root attributes: signature (the run's parameters, see main), method, lambda, max_distance,
 //   mesh_vertices, format ("dense" or "csr").
 //
@@ -34,6 +38,7 @@ struct File_description
   std::vector<std::int64_t> sources;
   std::int64_t columns = 0;            // vertices of the mesh file
   bool float32 = false;
+  bool polar = false;                  // sparse: also /angles
   std::string signature;
   std::vector<std::pair<std::string, std::string> > text_attributes;
   std::vector<std::pair<std::string, double> > number_attributes;
@@ -46,6 +51,7 @@ std::uint64_t create_dense_file(const std::string& path, const File_description&
 struct Sparse_offsets
 {
   std::uint64_t data = 0, indices = 0;  // meaningless when there are no entries
+  std::uint64_t angles = 0;             // /angles/data (polar)
 };
 // Creates (truncates) `path` with the sparse layout for the given row pointers (rows + 1 values).
 Sparse_offsets create_sparse_file(const std::string& path, const File_description& d,

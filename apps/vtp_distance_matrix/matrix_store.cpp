@@ -250,7 +250,7 @@ void Matrix_store::continue_partial(Plan& plan)
       if(it == spool_sizes.end())
         it = spool_sizes.emplace(spool, file_size(spool_path(e.generation, e.rank))).first;
       valid = e.count <= columns && it->second >= 0
-              && static_cast<std::uint64_t>(it->second) >= e.offset + e.count * (8 + m_value_bytes);
+              && static_cast<std::uint64_t>(it->second) >= e.offset + e.count * spool_entry_bytes();
     }
     if(valid)
       ++plan.done_before;

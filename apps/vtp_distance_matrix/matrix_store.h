@@ -10,7 +10,8 @@
 //   OUT.part.lock      held (flock) by rank 0 while the run is on: a second run on the same output is
 //                      refused instead of mixing its rows with the first one's
 //   OUT.part.spool-G-R sparse runs only: the rows finished by rank R during the G-th start of the run,
-//                      appended in the order they finish (indices int64, then the values)
+//                      appended in the order they finish (indices int64, then the values; polar patches:
+//                      indices, rho, theta)
 //
 // Dense rows are written straight to their place in OUT.part (the HDF5 metadata was written and
 // closed before, see hdf5_layout.h). Sparse rows have unknown lengths and finish out of order: they
@@ -80,6 +81,9 @@ public:
   // Writes one row: the distances to every vertex (file order, +inf where unreachable). Call one at
   // a time. Throws Tool_error (e.g. a full disk).
   void write_row(std::int64_t row, const double* distances);
+  // Writes one sparse row of polar patches (file.polar): nnz entries, the vertices ascending, rho and theta.
+  void write_polar_row(std::int64_t row, const std::int64_t* indices, const double* rho, const double* theta,
+                       std::size_t nnz);
   // Rows written by this rank in this run.
   std::int64_t rows_written() const { return m_rows_written; }
 
@@ -106,6 +110,10 @@ private:
   void unlock();
   void commit(bool force_now);
   std::uint64_t entry_check(std::int64_t row, const Entry& e) const;
+  // Sparse: the bytes of one entry of a row in a spool (its index and its value, or its two values).
+  std::uint64_t spool_entry_bytes() const { return 8 + m_value_bytes * (m_spec.file.polar ? 2 : 1); }
+  void write_sparse_row(std::int64_t row, const std::int64_t* indices, const double* const* values,
+                        std::size_t arrays, std::size_t nnz);
   bool read_journal(std::uint64_t& generation, std::vector<Entry>& entries, std::string& signature);
   void assemble_sparse();
   std::string spool_path(std::uint32_t generation, std::uint32_t rank) const;

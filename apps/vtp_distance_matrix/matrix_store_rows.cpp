@@ -48,23 +48,51 @@ void Matrix_store::write_row(std::int64_t row, const double* d)
         m_sparse_indices.push_back(static_cast<std::int64_t>(j));
         m_sparse_values.push_back(d[j]);
       }
-    const std::size_t nnz = m_sparse_indices.size();
-    e.offset = m_spool_end;
-    e.count = nnz;
-    if(nnz > 0)
+    const double* values = m_sparse_values.data();
+    write_sparse_row(row, m_sparse_indices.data(), &values, 1, m_sparse_indices.size());
+    return;
+  }
+  e.check = entry_check(row, e);
+  m_pending.emplace_back(row, e);
+  ++m_rows_written;
+  commit(false);
+}
+
+void Matrix_store::write_polar_row(std::int64_t row, const std::int64_t* indices, const double* rho,
+                                   const double* theta, std::size_t nnz)
+{
+  const double* values[2] = { rho, theta };
+  write_sparse_row(row, indices, values, 2, nnz);
+}
+
+// Appends a sparse row to this rank's spool (the indices, then each array of values) and records it.
+void Matrix_store::write_sparse_row(std::int64_t row, const std::int64_t* indices, const double* const* values,
+                                    std::size_t arrays, std::size_t nnz)
+{
+  Entry e;
+  e.generation = m_generation;
+  e.rank = static_cast<std::uint32_t>(m_job.rank());
+  e.offset = m_spool_end;
+  e.count = nnz;
+  if(nnz > 0)
+  {
+    std::uint64_t at = m_spool_end;
+    m_data.write_at(at, indices, nnz * sizeof(std::int64_t));
+    at += nnz * sizeof(std::int64_t);
+    for(std::size_t a = 0; a < arrays; ++a)
     {
-      m_data.write_at(m_spool_end, m_sparse_indices.data(), nnz * sizeof(std::int64_t));
       if(m_spec.file.float32)
       {
         m_float_row.resize(nnz);
         for(std::size_t k = 0; k < nnz; ++k)
-          m_float_row[k] = static_cast<float>(m_sparse_values[k]);
-        m_data.write_at(m_spool_end + nnz * sizeof(std::int64_t), m_float_row.data(), nnz * sizeof(float));
+          m_float_row[k] = static_cast<float>(values[a][k]);
+        m_data.write_at(at, m_float_row.data(), nnz * sizeof(float));
       }
       else
-        m_data.write_at(m_spool_end + nnz * sizeof(std::int64_t), m_sparse_values.data(), nnz * sizeof(double));
-      m_spool_end += nnz * (sizeof(std::int64_t) + m_value_bytes);
+        m_data.write_at(at, values[a], nnz * sizeof(double));
+      at += nnz * m_value_bytes;
     }
+    m_spool_end = at;
   }
   e.check = entry_check(row, e);
   m_pending.emplace_back(row, e);
@@ -149,6 +177,7 @@ void Matrix_store::assemble_sparse()
     sync_file(m_part);
     w.u64(offsets.data);
     w.u64(offsets.indices);
+    w.u64(offsets.angles);
     w.raw(entries.data(), entries.size() * sizeof(Entry));
   });
 
@@ -157,7 +186,7 @@ void Matrix_store::assemble_sparse()
   try
   {
     Byte_reader r{ bytes };
-    const std::uint64_t data_offset = r.u64(), indices_offset = r.u64();
+    const std::uint64_t data_offset = r.u64(), indices_offset = r.u64(), angles_offset = r.u64();
     std::vector<Entry> entries(m_spec.file.sources.size());
     r.raw(entries.data(), entries.size() * sizeof(Entry));
     std::uint64_t position = 0;  // indptr[row], as the rows go by
@@ -178,12 +207,15 @@ void Matrix_store::assemble_sparse()
       if(!spool)
         spool.reset(new Read_descriptor(spool_name));
       indices.resize(static_cast<std::size_t>(e.count * sizeof(std::int64_t)));
-      values.resize(static_cast<std::size_t>(e.count * m_value_bytes));
+      values.resize(static_cast<std::size_t>(e.count * (spool_entry_bytes() - 8)));  // rho (and theta)
       if(spool->fd < 0 || !read_at(spool->fd, e.offset, indices.data(), indices.size())
          || !read_at(spool->fd, e.offset + indices.size(), values.data(), values.size()))
         throw Tool_error("cannot read '" + spool_name + "'");
+      const std::size_t one = static_cast<std::size_t>(e.count * m_value_bytes);
       part.write_at(indices_offset + start * sizeof(std::int64_t), indices.data(), indices.size());
-      part.write_at(data_offset + start * m_value_bytes, values.data(), values.size());
+      part.write_at(data_offset + start * m_value_bytes, values.data(), one);
+      if(m_spec.file.polar)
+        part.write_at(angles_offset + start * m_value_bytes, values.data() + one, one);
     }
     if(part.is_open())
       part.close(true);

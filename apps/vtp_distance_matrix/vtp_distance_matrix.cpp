@@ -1,18 +1,20 @@
 // vtp_distance_matrix: geodesic distance matrices (many sources, every vertex) in HDF5.
 //
 //   vtp_distance_matrix MESH --sources all|A:B|V,V,...|FILE --output FILE.h5 [--float32]
-//                       [--max-distance R] [--method vtp|avtp] [--lambda L] [--threads T]
+//                       [--max-distance R [--polar]] [--method vtp|avtp] [--lambda L] [--threads T]
 //                       [--resume|--force] [--progress|--quiet]
 //
 // One row per source: the distances from that source vertex to every vertex of the mesh, in the
 // vertex order of the file; dense (float64 or float32, inf where unreachable) or, with a distance
 // limit, sparse rows in CSR form. Rows are computed on T threads (and, under mpirun, on every rank),
 // written to the output as they finish, and recorded in a journal, so that a run killed at any moment
-// continues with --resume. See README.md, section "Many sources", and the files of this folder:
+// continues with --resume. With --polar, the rows are the polar patches (rho and theta) within the limit.
+// See README.md, section "Many sources", and the files of this folder:
 //   arguments.*      the command line            source_list.*   --sources
 //   mesh_input.h     reading the mesh (support/) and its hash
 //   vtp_support/distance_rows.h  computing the rows (the library's batch call, compute_each; shared with the
 //                    benchmark's matrix_benchmark)
+//   polar_rows.h     the rows of --polar (the library's compute_each_polar_patch)
 //   matrix_store.*   output files, journal, resume, sparse assembly
 //   hdf5_layout.*    the HDF5 file               raw_file.*      positioned writes (POSIX or MPI-IO)
 //   job.*            MPI ranks, errors agreed by all ranks, progress counts   progress.*  the progress line
@@ -22,6 +24,7 @@
 #include "job.h"
 #include "matrix_store.h"
 #include "mesh_input.h"
+#include "polar_rows.h"
 #include "progress.h"
 #include "source_list.h"
 #include "tool_error.h"
@@ -90,6 +93,8 @@ std::string run_signature(const Arguments& a, const Mesh_input& input, const std
   s += std::string("method=") + a.method->name + "\n";
   s += "lambda=" + (a.method->approximate ? number_text(a.lambda) : std::string("-")) + "\n";
   s += "max_distance=" + (a.has_max_distance ? number_text(a.max_distance) : std::string("-")) + "\n";
+  if(a.polar)
+    s += "polar=rho,theta\n";  // (absent without --polar: the signatures of distance runs are unchanged)
   return s;
 }
 
@@ -145,6 +150,7 @@ int run(Job& job, int argc, char** argv)
   spec.file.sources = sources;
   spec.file.columns = static_cast<std::int64_t>(input.file_vertices);
   spec.file.float32 = args.float32;
+  spec.file.polar = args.polar;
   spec.file.signature = run_signature(args, input, sources);
   spec.file.text_attributes = { { "method", args.method->name },
                                 { "format", args.has_max_distance ? "csr" : "dense" } };
@@ -152,6 +158,8 @@ int run(Job& job, int argc, char** argv)
   spec.file.number_attributes = { { "lambda", args.method->approximate ? args.lambda : infinity },
                                   { "max_distance", args.has_max_distance ? args.max_distance : infinity } };
   spec.file.integer_attributes = { { "mesh_vertices", static_cast<std::int64_t>(input.file_vertices) } };
+  if(args.polar)
+    spec.file.integer_attributes.push_back({ "polar", 1 });
   Matrix_store store(job, spec);
   store.open(args.resume, args.force);
   if(talk && !store.note().empty())
@@ -171,14 +179,25 @@ int run(Job& job, int argc, char** argv)
   const int threads = args.threads > 0 ? args.threads : default_thread_count();
   try
   {
-    vtp_support::compute_rows(input, sources, store.rows_to_compute(), method, threads,
-                 [&](std::int64_t row, std::int64_t, const std::vector<double>& distances) {
-                   store.write_row(row, distances.data());
-                   if(job.is_root())
-                     progress.update(before + store.rows_written() + job.other_rows());
-                   else
-                     job.send_rows(store.rows_written(), false);
-                 });
+    auto count_row = [&]() {
+      if(job.is_root())
+        progress.update(before + store.rows_written() + job.other_rows());
+      else
+        job.send_rows(store.rows_written(), false);
+    };
+    if(args.polar)
+      compute_polar_rows(input, sources, store.rows_to_compute(), args.max_distance, threads,
+                         [&](std::int64_t row, const std::vector<std::int64_t>& indices, const std::vector<double>& rho,
+                             const std::vector<double>& theta) {
+                           store.write_polar_row(row, indices.data(), rho.data(), theta.data(), indices.size());
+                           count_row();
+                         });
+    else
+      vtp_support::compute_rows(input, sources, store.rows_to_compute(), method, threads,
+                   [&](std::int64_t row, std::int64_t, const std::vector<double>& distances) {
+                     store.write_row(row, distances.data());
+                     count_row();
+                   });
   }
   catch(const Tool_error& e)
   {

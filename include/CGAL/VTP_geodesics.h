@@ -20,6 +20,7 @@
 #include <CGAL/VTP_geodesics/Geodesic_traits_3.h>
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
 #include <CGAL/VTP_geodesics/Straightest_geodesic.h>
+#include <CGAL/VTP_geodesics/Polar_patches.h>
 #include <CGAL/VTP_geodesics/geodesic_distances.h>
 #include <CGAL/VTP_geodesics/farthest_point_sampling.h>
 #include <CGAL/VTP_geodesics/geodesic_voronoi_cells.h>

@@ -23,6 +23,7 @@
 //   sampling.cpp   farthest_point_sampling(), with the Voronoi cell areas
 //   straightest.cpp  trace(): straightest geodesics (the exp map), many walks on the solver's threads
 //   log_map.cpp    log_map(): geodesic polar coordinates (VTP, PVTP), in the caller's frames
+//   patches.cpp    polar_patches(): the log map around many centres cut at a radius, CSR arrays
 //   io.cpp         read_mesh(), symmetric_min_csr(); the conversions of vertex indices, face locations and
 //                  barycentric coordinates between Python's arrays and the library
 //
@@ -161,6 +162,9 @@ public:
                   std::int64_t b_face, const Double_array& b_bary, const std::string& method_name, double lam);
   py::tuple locate(const Double_array& P);
 
+  // patches.cpp
+  py::tuple polar_patches(const Index_array& centres, double radius, bool strict, int threads);
+
   // straightest.cpp
   py::tuple trace(const Index_array& start_vertices, const Index_array& start_faces, const Double_array& start_bary,
                   const Double_array& directions, const Double_array& lengths, int threads);
@@ -276,6 +280,7 @@ void define_io(py::module_& m);
 void define_straightest(py::class_<Core_solver>& c);
 void define_log_map(py::class_<Core_solver>& c);
 void define_curves(py::class_<Core_solver>& c);
+void define_patches(py::class_<Core_solver>& c);
 
 } // namespace vtp_python
 

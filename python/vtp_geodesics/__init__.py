@@ -22,10 +22,11 @@ the packages of the same names.
 from . import _core
 from ._arguments import methods, recommended_lambda
 from ._io import read_mesh
+from ._patches import PolarPatches
 from ._sampling import FarthestPointSamples
 from ._solver import Solver
 
-__all__ = ["Solver", "FarthestPointSamples", "read_mesh", "methods", "recommended_lambda"]
+__all__ = ["Solver", "FarthestPointSamples", "PolarPatches", "read_mesh", "methods", "recommended_lambda"]
 
 # the public names are vtp_geodesics.<name> (in help(), reprs and pickles), wherever they are defined
 Solver.__module__ = read_mesh.__module__ = __name__

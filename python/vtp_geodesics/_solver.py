@@ -1,6 +1,6 @@
 """The solver of one mesh (private; see ``vtp_geodesics.Solver``): its construction and properties here, its
 queries by topic in ``_queries`` (distances, paths, one distance, locating points), ``_matrices`` (distance
-matrices) and ``_sampling`` (farthest-point sampling)."""
+matrices), ``_sampling`` (farthest-point sampling) and ``_patches`` (polar patches)."""
 
 import warnings as _warnings
 
@@ -9,11 +9,12 @@ from ._arguments import check_threads, mesh_arrays
 from ._log_map import LogMap
 from ._curves import Curves
 from ._matrices import Matrices
+from ._patches import Patches
 from ._queries import Queries
 from ._sampling import Sampling
 
 
-class Solver(Queries, Matrices, Sampling, LogMap, Curves):
+class Solver(Queries, Matrices, Sampling, LogMap, Curves, Patches):
     """Geodesic distances on one triangle mesh: ``Solver(V, F, *, threads=0, repair=True, through_pinches=False)``.
 
     The constructor checks the mesh and does the per-mesh preprocessing once; every query then runs

@@ -5,7 +5,7 @@ Run by ctest, one test per name (see CMakeLists.txt):
   distance_matrix_test.py NAME --tool vtp_distance_matrix --geodesics vtp_geodesics --data DIR
                           --cli-data DIR --work DIR [--mpirun mpirun]
 Names: rows_single_source symmetric dense_sparse float32 threads mpi2 mpi3 resume resume_mpi
-       bad_input protect_output full_disk progress help
+       bad_input protect_output full_disk progress help polar
 Expected values come from invariants and from another program (vtp_geodesics, one source at a time),
 never from stored outputs.
 """
@@ -258,7 +258,7 @@ def test_float32():
 def test_threads():
     """The number of threads does not change the file (dense and sparse)."""
     m = mesh("elephant-with-holes.off")
-    for extra in [[], ["--max-distance", "0.4", "--float32"]]:
+    for extra in [[], ["--max-distance", "0.4", "--float32"], ["--max-distance", "0.3", "--polar"]]:
         outs = []
         for t in [1, 2, 3]:
             out = work("threads%d.h5" % t)
@@ -275,7 +275,7 @@ def mpi_test(ranks):
         print("SKIP: built without MPI")
         return
     m = mesh("elephant.off")
-    for extra in [[], ["--max-distance", "0.35"]]:
+    for extra in [[], ["--max-distance", "0.35"], ["--max-distance", "0.3", "--polar"]]:
         single, multi = work("single%d.h5" % ranks), work("mpi%d.h5" % ranks)
         fresh("single%d.h5" % ranks, "mpi%d.h5" % ranks)
         run([m, "--sources", "0:40", "--output", single, "--threads", 2] + extra)
@@ -386,7 +386,8 @@ def test_resume():
     """Stopped by SIGKILL / SIGTERM / SIGINT at various moments (also at the very start), then
     resumed: the same file as an uninterrupted run (dense float64, sparse float32)."""
     m = mesh("elephant.off")
-    for extra, label in [([], "dense"), (["--max-distance", "0.5", "--float32"], "sparse")]:
+    for extra, label in [([], "dense"), (["--max-distance", "0.5", "--float32"], "sparse"),
+                         (["--max-distance", "0.3", "--polar"], "polar")]:
         def attempt(k):
             # about 5 s of rows on one thread (more after a failed attempt): two stops after ~1.4 s each,
             # the rest for the last run
@@ -409,7 +410,7 @@ def test_resume_mpi():
         print("SKIP: built without MPI")
         return
     m = mesh("elephant.off")
-    for extra, label in [([], "dense"), (["--max-distance", "0.5"], "sparse")]:
+    for extra, label in [([], "dense"), (["--max-distance", "0.5"], "sparse"), (["--max-distance", "0.3", "--polar"], "polar")]:
         def attempt(k):
             # about 2 s of rows for two ranks of one thread (more after a failed attempt)
             rows = min(2775, max(60, int((4 + 2 * k) * rows_per_second(m, extra))))
@@ -614,9 +615,112 @@ def test_progress():
           "terminal progress: %r" % text)
 
 
+def read_polar(path):
+    """(sources, rho CSR, theta data) of a --polar file; checks that /angles shares the indices of /distances."""
+    with h5py.File(path, "r") as f:
+        g, a = f["distances"], f["angles"]
+        check(a["indices"].id == g["indices"].id and a["indptr"].id == g["indptr"].id,
+              "/angles/indices and /angles/indptr are the datasets of /distances")
+        check(tuple(a.attrs["shape"]) == tuple(g.attrs["shape"]), "/angles@shape")
+        check(int(f.attrs["polar"]) == 1, "root attribute polar")
+        check(a["data"].dtype == g["data"].dtype and a["data"].shape == g["data"].shape, "/angles/data")
+        shape = tuple(int(x) for x in g.attrs["shape"])
+        rho = scipy.sparse.csr_matrix((g["data"][:], g["indices"][:], g["indptr"][:]), shape=shape)
+        return f["sources"][:], rho, a["data"][:]
+
+
+def flat_grid_off(path, n=16, seed=4):
+    """A jittered triangulated square in the plane z = 0 (convex: geodesics are straight)."""
+    rng = np.random.default_rng(seed)
+    xs, ys = np.meshgrid(np.linspace(0, 1, n), np.linspace(0, 1, n), indexing="ij")
+    V = np.stack([xs.ravel(), ys.ravel(), np.zeros(n * n)], axis=1)
+    inner = (xs.ravel() > 0) & (xs.ravel() < 1) & (ys.ravel() > 0) & (ys.ravel() < 1)
+    V[inner, :2] += rng.uniform(-0.3, 0.3, (inner.sum(), 2)) / n
+    F = []
+    for i in range(n - 1):
+        for j in range(n - 1):
+            a, b, c, d = i * n + j, (i + 1) * n + j, (i + 1) * n + j + 1, i * n + j + 1
+            F += [[a, b, c], [a, c, d]]
+    with open(path, "w") as f:
+        f.write("OFF\n%d %d 0\n" % (len(V), len(F)))
+        for p in V:
+            f.write("%.17g %.17g %.17g\n" % tuple(p))
+        for t in F:
+            f.write("3 %d %d %d\n" % tuple(t))
+    return V
+
+
+def test_polar():
+    """--max-distance R --polar: rho and the vertices are those of the distance rows of the same run without
+    --polar (which equal single runs of vtp_geodesics, test rows_single_source), bitwise, on a mesh with
+    boundaries and on a repaired one; theta in [0, 2 pi), 0 at the source; on the plane, theta is the Euclidean
+    angle up to the reference (angle differences to 1e-12); float32 rounds both; bad combinations."""
+    for name, folder, sources, radius in [("elephant-with-holes.off", A.data, "0,17,1000,2797,1500,5", "0.3"),
+                                          ("nonmanifold_vertex.off", A.cli_data, "all", "inf")]:
+        polar, dist = work("polar.h5"), work("dist.h5")
+        fresh("polar.h5", "dist.h5")
+        run([os.path.join(folder, name), "--sources", sources, "--output", polar, "--threads", 2,
+             "--max-distance", radius, "--polar"])
+        run([os.path.join(folder, name), "--sources", sources, "--output", dist, "--threads", 2,
+             "--max-distance", radius])
+        s, rho, theta = read_polar(polar)
+        s2, d = read_csr(dist)
+        check(np.array_equal(s, s2), name + ": sources")
+        check(np.array_equal(rho.indptr, d.indptr) and np.array_equal(rho.indices, d.indices)
+              and bitwise_equal(rho.data, d.data), name + ": rho and the vertices are those of the distance rows")
+        check(((theta >= 0) & (theta < 2 * np.pi)).all(), name + ": theta in [0, 2 pi)")
+        for i, v in enumerate(s):
+            row = slice(rho.indptr[i], rho.indptr[i + 1])
+            k = np.flatnonzero(rho.indices[row] == v)
+            check(k.size == 1 and rho.data[row][k[0]] == 0 and theta[row][k[0]] == 0,
+                  "%s: row %d has its source at rho 0, theta 0" % (name, i))
+    V = flat_grid_off(work("plane.off"))
+    out = work("plane.h5")
+    fresh("plane.h5")
+    run([work("plane.off"), "--sources", "0:256", "--output", out, "--max-distance", "0.35", "--polar"])
+    s, rho, theta = read_polar(out)
+    worst = [0.0, 0.0]  # sources inside, on the border
+    for i, c in enumerate(s):
+        row = slice(rho.indptr[i], rho.indptr[i + 1])
+        idx = rho.indices[row]
+        e = np.hypot(V[idx, 0] - V[c, 0], V[idx, 1] - V[c, 1])
+        check(np.abs(rho.data[row] - e).max() < 1e-12, "plane: rho of row %d is Euclidean" % i)
+        corner = (V[c, 0] in (0, 1)) and (V[c, 1] in (0, 1))
+        far = e > 1e-9
+        if corner or far.sum() < 2:
+            continue  # at a corner of the square the angles are scaled by pi / (pi / 2)
+        phi = np.arctan2(V[idx, 1] - V[c, 1], V[idx, 0] - V[c, 0])[far]
+        t = theta[row][far]
+        gap = np.remainder((t - t[0]) - (phi - phi[0]) + np.pi, 2 * np.pi) - np.pi
+        border = V[c, 0] in (0, 1) or V[c, 1] in (0, 1)
+        worst[border] = max(worst[border], np.abs(gap).max())
+    # a geodesic that grazes a vertex taken for a pseudo-source (a border vertex; or, on this grid, source 148 to
+    # vertex 136, nearly through an interior vertex) goes on from that vertex, whose turning angle the log map
+    # keeps as a float (1e-7 rad, doc/VTP_geodesics/log_map.txt): 4.8e-7 there, 1e-16 elsewhere
+    check(worst[0] < 1e-6 and worst[1] < 1e-6,
+          "plane: theta is the Euclidean angle up to the reference (worst %g inside, %g on the border)" % tuple(worst))
+    out32 = work("plane32.h5")
+    fresh("plane32.h5")
+    run([work("plane.off"), "--sources", "0:256", "--output", out32, "--max-distance", "0.35", "--polar", "--float32"])
+    s32, rho32, theta32 = read_polar(out32)
+    check(rho32.dtype == np.float32 and bitwise_equal(rho32.data, rho.data.astype(np.float32))
+          and bitwise_equal(theta32, theta.astype(np.float32)), "float32: rho and theta rounded")
+    m = mesh("sphere.off")
+    expect_error([m, "--sources", "0:3", "--output", work("bad.h5"), "--polar"], "--polar without --max-distance",
+                 work("bad.h5"))
+    expect_error([m, "--sources", "0:3", "--output", work("bad.h5"), "--polar", "--max-distance", "1", "--method",
+                  "avtp"], "--polar with avtp", work("bad.h5"))
+    # a polar partial run is not resumed as a distance run
+    fresh("plane.h5")
+    run([work("plane.off"), "--sources", "0:256", "--output", out, "--max-distance", "0.35", "--polar"])
+    err = expect_error([work("plane.off"), "--sources", "0:256", "--output", out, "--max-distance", "0.35",
+                        "--resume"], "a polar file resumed without --polar")
+    check("polar" in err, "the error names --polar: " + err)
+
+
 def test_help():
     out, err = run(["--help"])
-    check("--sources" in out and "--max-distance" in out and err == "", "help text")
+    check("--sources" in out and "--max-distance" in out and "--polar" in out and err == "", "help text")
 
 
 def main():

@@ -17,18 +17,20 @@
 #include <CGAL/VTP_geodesics/Farthest_point_samples.h>
 #include <CGAL/VTP_geodesics/Geodesic_traits_3.h>
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
+#include <CGAL/VTP_geodesics/Polar_patches.h>
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
-#include <CGAL/VTP_geodesics/internal/solver/Known_field.h>
 #include <CGAL/VTP_geodesics/internal/solver/Log_map_output.h>
 #include <CGAL/VTP_geodesics/internal/solver/Many_sources.h>
 #include <CGAL/VTP_geodesics/internal/solver/Mesh_import.h>
 #include <CGAL/VTP_geodesics/internal/solver/Mesh_index.h>
 #include <CGAL/VTP_geodesics/internal/solver/Output_maps.h>
 #include <CGAL/VTP_geodesics/internal/solver/Path_queries.h>
+#include <CGAL/VTP_geodesics/internal/solver/Polar_patch_rows.h>
 #include <CGAL/VTP_geodesics/internal/solver/Settings_from_parameters.h>
+#include <CGAL/VTP_geodesics/internal/solver/Solver_run.h>
 #include <CGAL/VTP_geodesics/internal/solver/Straightest_queries.h>
 #include <CGAL/VTP_geodesics/internal/sampling/Farthest_point_sampler.h>
 #include <CGAL/VTP_geodesics/internal/source_forms.h>
@@ -268,6 +270,16 @@ public:
   }
   /// @}
 
+  /// \name Polar patches
+  /// The log map from each centre of `centres` on its own, cut at `radius`: all patches in CSR form, or each patch
+  /// handed to `sink` as `compute_each()` does; see `Polar_patches`, which documents both. @{
+  template <class ConcurrencyTag = CGAL::Sequential_tag, class Centres, class NP = CGAL::parameters::Default_named_parameters>
+  Polar_patches polar_patches(const Centres& centres, double radius, const NP& np = parameters::default_values())
+  { return internal::polar_patches_of<ConcurrencyTag>(m_mesh, m_vpm, centres, radius, np, m_patches, m_statistics); }
+  template <class ConcurrencyTag = CGAL::Sequential_tag, class Centres, class Sink, class NP = CGAL::parameters::Default_named_parameters>
+  void compute_each_polar_patch(const Centres& centres, double radius, Sink sink, const NP& np = parameters::default_values())
+  { internal::compute_patch_rows<ConcurrencyTag>(m_mesh, m_vpm, centres, radius, sink, np, m_patches, m_statistics); } /// @}
+
   /// \name Farthest-point sampling
   /// @{
   /// takes up to `k` samples, each the vertex farthest from those before, as `farthest_point_sampling()` (the
@@ -416,20 +428,7 @@ private:
 
   template <class ConcurrencyTag, class NamedParameters>
   void run(std::vector<internal::Seed> seeds, const NamedParameters& np)
-  {
-    if(seeds.empty())
-      throw Invalid_input_error("no source");
-    int threads = 0;
-    internal::Propagation_settings settings = internal::settings_from_parameters(np, m_mesh, threads);
-    internal::Known_field known = internal::known_field_of(np, m_mesh, m_mesh.length_scale, settings, seeds);
-    internal::start_log_map(np, settings, m_mesh, m_vpm, seeds, m_engine.direction());
-    std::vector<internal::Target> targets = m_mesh.targets_of(CGAL::parameters::get_parameter(np, internal_np::targets));
-    m_engine.template run<ConcurrencyTag>(m_mesh.arrays, seeds, std::move(targets), settings, threads, m_statistics,
-                                          std::move(known));
-    m_mesh.to_positions(m_engine.distances(), m_distances);
-    m_paths.remember(settings, internal::is_parallel<ConcurrencyTag>(), threads);
-    m_statistics.sources = seeds.size();
-  }
+  { internal::run_solver<ConcurrencyTag>(m_mesh, m_vpm, std::move(seeds), np, m_engine, m_distances, m_paths, m_statistics); }
 
   Vertex_point_map m_vpm;
   Geom_traits m_traits;
@@ -441,6 +440,7 @@ private:
   Propagation_statistics m_statistics;
   internal::Path_queries m_paths;  // remembers the parameters of the last computation
   std::vector<std::unique_ptr<internal::Propagation_engine> > m_workspaces;  // of compute_each(), one per thread
+  std::vector<std::unique_ptr<internal::Local_propagation> > m_patches;  // workspaces of the polar patches
 };
 
 } // namespace VTP_geodesics

@@ -104,6 +104,28 @@ public:
     theta.assign(nv, 0.);
     turn.assign(nv, 0.);
     via.assign(nv, NO_INDEX);
+    start_sources(m);
+  }
+
+  // The same, when the previous run on `m` was active too: only the vertices of `previous` (all those it
+  // reached) are cleared (Local_propagation.h).
+  void restart(const Mesh_arrays& m, bool active, bool strict, const std::vector<Index>& previous)
+  {
+    if(!active || !m_active || m_mesh != &m || theta.size() != static_cast<std::size_t>(m.nv))
+      return start(m, active, strict);
+    m_strict = strict;
+    for(Index v : previous)
+    {
+      theta[v] = 0.;
+      turn[v] = 0.f;
+      via[v] = NO_INDEX;
+    }
+    start_sources(m);
+  }
+
+private:
+  void start_sources(const Mesh_arrays& m)
+  {
     m_frames.clear();
     for(const Log_map_source& s : vertex_sources)
     {
@@ -115,6 +137,7 @@ public:
     }
   }
 
+public:
   bool is_active() const { return m_active; }
   bool is_source(Index v) const { return via[v] < NO_INDEX; }
   bool is_strict() const { return m_strict; }

@@ -87,6 +87,8 @@ public:
   Direction_record direction;          // the log map
   std::vector<Index> fifo;             // queued lists (sequential scheduling: FIFO order)
   Known_vertices known;                // runs from known distances
+  // if set, every vertex whose distance becomes finite through light() is appended (Local_propagation.h)
+  std::vector<Index>* reached = nullptr;
 
   // counters
   std::size_t created = 0, propagated = 0, vertices_processed = 0, pseudo_sources = 0;
@@ -133,6 +135,27 @@ public:
     fifo.clear();
     reset.start(s.reset_step, s.reset_guard, static_cast<std::size_t>(m.nv));
     stop.start(m, s.limit, false, std::vector<Target>());
+    m_events.clear();
+    created = propagated = vertices_processed = pseudo_sources = 0;
+  }
+
+  // Prepares a run on the mesh of the previous run (not from known distances, without labels, paths, targets
+  // nor resets) whose caller has put back what that run changed (Local_propagation.h): O(1) but the log map's
+  // sources; the direction record clears the vertices of `previous` only.
+  void start_local(const Propagation_settings& s, const std::vector<Index>& previous)
+  {
+    CGAL_precondition(mesh != nullptr && !s.want_labels && !s.record_paths && !s.known_distances);
+    CGAL_precondition(!(s.reset_step < std::numeric_limits<double>::infinity()));
+    settings = s;
+    label.clear();
+    seed_label.clear();
+    store.restart(1);
+    fifo.clear();
+    reset.start(s.reset_step, s.reset_guard, static_cast<std::size_t>(mesh->nv));
+    stop.start(*mesh, s.limit, false, std::vector<Target>(), /* keep_list_bounds */ true);
+    record.start(false, 0, 0);
+    direction.restart(*mesh, s.log_map, s.log_map_strict, previous);
+    known.start(static_cast<std::size_t>(mesh->nv), false);
     m_events.clear();
     created = propagated = vertices_processed = pseudo_sources = 0;
   }

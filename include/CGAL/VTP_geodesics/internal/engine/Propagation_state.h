@@ -64,6 +64,8 @@ public:
     const double old = dist[v];
     if(offer.distance < old)
     {
+      if(reached != nullptr && !(old < std::numeric_limits<double>::infinity()))
+        reached->push_back(v);  // local runs (Local_propagation.h)
       dist[v] = offer.distance;
       if(!label.empty())
         label[v] = label_of_origin(offer.origin);

@@ -64,7 +64,10 @@ struct Stop_events
 class Stop_rule
 {
 public:
-  void start(const Mesh_arrays& m, double limit, bool stop_at_targets, std::vector<Target>&& targets)
+  // With keep_list_bounds, the bounds of the lists are those the caller has put back to +infinity
+  // (on_list_emptied() on every list of the previous run, Local_propagation.h).
+  void start(const Mesh_arrays& m, double limit, bool stop_at_targets, std::vector<Target>&& targets,
+             bool keep_list_bounds = false)
   {
     m_limit = limit;
     m_stop_at_targets = stop_at_targets && !targets.empty();
@@ -74,9 +77,9 @@ public:
     m_target_heap.clear();
     m_lower_bound = 0.;
     m_stopped = false;
-    if(m_tracking)
+    if(m_tracking && !(keep_list_bounds && m_list_bound.size() == m.source.size()))
       m_list_bound.assign(m.source.size(), std::numeric_limits<double>::infinity());
-    else
+    else if(!m_tracking)
       m_list_bound.clear();
     const std::size_t nt = m_targets.size();
     m_value.assign(nt, std::numeric_limits<double>::infinity());

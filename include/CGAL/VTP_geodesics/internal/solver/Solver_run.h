@@ -1,0 +1,61 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_SOLVER_SOLVER_RUN_H
+#define CGAL_VTP_GEODESICS_INTERNAL_SOLVER_SOLVER_RUN_H
+
+#include <CGAL/license/VTP_geodesics.h>
+
+#include <CGAL/VTP_geodesics/Invalid_input_error.h>
+#include <CGAL/VTP_geodesics/Propagation_statistics.h>
+#include <CGAL/VTP_geodesics/parameters.h>
+#include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
+#include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
+#include <CGAL/VTP_geodesics/internal/solver/Known_field.h>
+#include <CGAL/VTP_geodesics/internal/solver/Log_map_output.h>
+#include <CGAL/VTP_geodesics/internal/solver/Path_queries.h>
+#include <CGAL/VTP_geodesics/internal/solver/Settings_from_parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace VTP_geodesics {
+namespace internal {
+
+// One computation of Geodesic_distance_solver::compute() from `seeds` on the solver's mesh (Mesh_index `mesh`):
+// the settings of `np`, the known field, the log map's frames and the targets; the engine's run; the distances
+// in the order of vertices(tm) into `distances`; the parameters that path queries need.
+template <class ConcurrencyTag, class MeshIndex, class VertexPointMap, class NamedParameters>
+void run_solver(const MeshIndex& mesh, VertexPointMap vpm, std::vector<Seed> seeds, const NamedParameters& np,
+                Propagation_engine& engine, std::vector<double>& distances, Path_queries& paths,
+                Propagation_statistics& statistics)
+{
+  if(seeds.empty())
+    throw Invalid_input_error("no source");
+  int threads = 0;
+  Propagation_settings settings = settings_from_parameters(np, mesh, threads);
+  Known_field known = known_field_of(np, mesh, mesh.length_scale, settings, seeds);
+  start_log_map(np, settings, mesh, vpm, seeds, engine.direction());
+  std::vector<Target> targets = mesh.targets_of(CGAL::parameters::get_parameter(np, internal_np::targets));
+  engine.template run<ConcurrencyTag>(mesh.arrays, seeds, std::move(targets), settings, threads, statistics,
+                                      std::move(known));
+  mesh.to_positions(engine.distances(), distances);
+  paths.remember(settings, is_parallel<ConcurrencyTag>(), threads);
+  statistics.sources = seeds.size();
+}
+
+} // namespace internal
+} // namespace VTP_geodesics
+} // namespace CGAL
+
+#endif // CGAL_VTP_GEODESICS_INTERNAL_SOLVER_SOLVER_RUN_H

@@ -1,0 +1,132 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the Python module of the VTP_geodesics package (not installed with the library).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+// Polar patches: Solver.polar_patches() of the package, the log map around many centres cut at a radius, on the
+// solver's threads (the library's Geodesic_distance_solver::compute_each_polar_patch()), as CSR arrays.
+
+#include "core_solver.h"
+
+#include <CGAL/VTP_geodesics/Invalid_input_error.h>
+#include <CGAL/VTP_geodesics/parameters.h>
+
+#include <cmath>
+#include <string>
+
+namespace vtp_python {
+
+// The patches of the vertices `centres` of V within `radius`: (indptr int64 (k + 1,), indices int64 (nnz,),
+// rho float64 (nnz,), theta float64 (nnz,)), row i the patch of centres[i], its vertices (rows of V) ascending.
+// A centre must stand for one vertex of the mesh (not a vertex the repair split or dropped); a vertex of V that
+// the repair split appears once in a patch, with the entry of its copy of least rho.
+py::tuple Core_solver::polar_patches(const Index_array& centres, double radius, bool strict, int threads)
+{
+  if(!(radius >= 0.))
+    value_error("radius must be >= 0 (inf for whole log maps), got " + std::to_string(radius));
+  const std::size_t k = static_cast<std::size_t>(centres.size());
+  std::vector<Vertex_index> mesh_centres(k);
+  for(std::size_t i = 0; i < k; ++i)
+  {
+    const std::size_t v = vertex_of(centres.data()[i], "centres");
+    std::vector<Vertex_index> copies;
+    append_copies(v, copies);
+    if(copies.size() != 1 || m_mesh.is_isolated(copies[0]))
+      value_error("centres: vertex " + std::to_string(v)
+                  + (copies.size() > 1 ? " was split by the repair (a non-manifold vertex): it has no tangent plane"
+                                       : " is in no face of the mesh"));
+    mesh_centres[i] = copies[0];
+  }
+  std::vector<std::int64_t> indptr(k + 1, 0), indices;
+  std::vector<double> rho, theta;
+  {
+    py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(m_mutex);
+    std::vector<std::size_t> start(k, 0), count(k, 0);
+    std::vector<std::pair<std::size_t, std::size_t> > row;  // (caller vertex, entry) of one patch
+    std::vector<std::int64_t> best;                          // per caller vertex, its entry in the row, or -1
+    if(!m_repairs.empty())
+      best.assign(m_n, -1);
+    auto sink = [&](std::size_t i, Vertex_index, const std::vector<std::uint32_t>& v, const std::vector<double>& r,
+                    const std::vector<double>& t) {
+      start[i] = indices.size();
+      if(m_repairs.empty())
+      {
+        indices.insert(indices.end(), v.begin(), v.end());
+        rho.insert(rho.end(), r.begin(), r.end());
+        theta.insert(theta.end(), t.begin(), t.end());
+      }
+      else
+      {
+        // the mesh vertices of the patch on the rows of V: one entry per row, the copy of least rho
+        row.clear();
+        for(std::size_t e = 0; e < v.size(); ++e)
+        {
+          const std::size_t c = caller_of(m_solver->vertex_list()[v[e]]);
+          if(best[c] < 0)
+          {
+            best[c] = static_cast<std::int64_t>(row.size());
+            row.push_back(std::make_pair(c, e));
+          }
+          else if(r[e] < r[row[static_cast<std::size_t>(best[c])].second])
+            row[static_cast<std::size_t>(best[c])].second = e;
+        }
+        std::sort(row.begin(), row.end());
+        for(const auto& p : row)
+        {
+          best[p.first] = -1;
+          indices.push_back(static_cast<std::int64_t>(p.first));
+          rho.push_back(r[p.second]);
+          theta.push_back(t[p.second]);
+        }
+      }
+      count[i] = indices.size() - start[i];
+    };
+    const auto np = VTP::parameters::number_of_threads(threads_or_default(threads)).log_map_strict(strict);
+#ifdef _OPENMP
+    m_solver->compute_each_polar_patch<CGAL::Parallel_tag>(mesh_centres, radius, sink, np);
+#else
+    m_solver->compute_each_polar_patch<CGAL::Sequential_tag>(mesh_centres, radius, sink, np);
+#endif
+    m_statistics = m_solver->statistics();
+    for(std::size_t i = 0; i < k; ++i)
+      indptr[i + 1] = indptr[i] + static_cast<std::int64_t>(count[i]);
+    // the rows in the order of the centres (they came in any order)
+    bool in_order = true;
+    for(std::size_t i = 0; i < k; ++i)
+      in_order = in_order && start[i] == static_cast<std::size_t>(indptr[i]);
+    if(!in_order)
+    {
+      std::vector<std::int64_t> ordered_indices(indices.size());
+      std::vector<double> ordered_rho(rho.size()), ordered_theta(theta.size());
+      for(std::size_t i = 0; i < k; ++i)
+      {
+        const std::size_t to = static_cast<std::size_t>(indptr[i]);
+        std::copy_n(indices.begin() + static_cast<std::ptrdiff_t>(start[i]), count[i], ordered_indices.begin() + static_cast<std::ptrdiff_t>(to));
+        std::copy_n(rho.begin() + static_cast<std::ptrdiff_t>(start[i]), count[i], ordered_rho.begin() + static_cast<std::ptrdiff_t>(to));
+        std::copy_n(theta.begin() + static_cast<std::ptrdiff_t>(start[i]), count[i], ordered_theta.begin() + static_cast<std::ptrdiff_t>(to));
+      }
+      indices.swap(ordered_indices);
+      rho.swap(ordered_rho);
+      theta.swap(ordered_theta);
+    }
+  }
+  auto to_array = [](auto& v) {
+    typedef typename std::decay<decltype(v)>::type::value_type T;
+    py::array_t<T> a(static_cast<py::ssize_t>(v.size()));
+    std::copy(v.begin(), v.end(), a.mutable_data());
+    return a;
+  };
+  return py::make_tuple(to_array(indptr), to_array(indices), to_array(rho), to_array(theta));
+}
+
+void define_patches(py::class_<Core_solver>& c)
+{
+  c.def("polar_patches", &Core_solver::polar_patches);
+}
+
+} // namespace vtp_python

@@ -1,0 +1,69 @@
+"""Polar patches: the log map around many centres, cut at a radius (private; ``vtp_geodesics.Solver.polar_patches``)."""
+
+import collections as _collections
+
+from ._arguments import check_float, check_threads, vertex_list
+
+#: The result of ``Solver.polar_patches()``.
+PolarPatches = _collections.namedtuple("PolarPatches", ["indptr", "indices", "rho", "theta"], module="vtp_geodesics")
+PolarPatches.__doc__ = """The result of ``Solver.polar_patches()``: the arrays of compressed sparse rows (CSR), one row
+per centre.
+
+indptr : ndarray int64 (k + 1,)
+    Patch i is the entries ``indptr[i]:indptr[i + 1]`` of the three arrays below.
+indices : ndarray int64 (nnz,)
+    The vertices (rows of V) of each patch, ascending within a patch.
+rho : ndarray float64 (nnz,)
+    Their geodesic distance to the centre (exact), at most the radius; 0 at the centre itself.
+theta : ndarray float64 (nnz,)
+    Their angle at the centre, in [0, 2 pi), in the tangent frame of ``log_map()`` (0 at the centre itself).
+
+``scipy.sparse.csr_matrix((p.rho, p.indices, p.indptr), shape=(k, n))`` (and the same with ``p.theta``) gives
+sparse matrices; but a theta of 0 (the centre, and vertices along the reference direction) is a real value there,
+which scipy would drop in ``eliminate_zeros()`` and which ``toarray()`` does not tell from an absent vertex: keep
+``indices`` for membership.
+"""
+
+
+class Patches:
+    """The polar patches of ``Solver``."""
+
+    def polar_patches(self, centres, radius, *, threads=0, strict=False):
+        """Geodesic polar coordinates around many centres: for each centre, every vertex whose geodesic distance to
+        it is at most ``radius``, with its ``rho`` (the exact distance) and ``theta`` (the angle at which its
+        geodesic leaves the centre), the patches of a geodesic CNN. Each patch is bit for bit the log map of one
+        run from its centre with ``max_distance=radius`` (``log_map()``'s coordinates are
+        ``rho * (cos theta, sin theta)``); each run stops at the radius and costs what its patch reaches, not the
+        mesh. The centres are shared among the threads; the result does not depend on their number.
+
+        Parameters
+        ----------
+        centres : int or array-like (k,) of vertex indices
+            The centres, one patch each, in this order (they may repeat).
+        radius : float >= 0
+            The radius of every patch (``inf``: whole log maps).
+        threads : int, default 0 (the solver's)
+        strict : bool, default False
+            The strict polyhedral theta behind saddle and border vertices (every vertex in the shadow of a vertex
+            gets that vertex's theta) instead of the default continuation (see ``log_map()``).
+
+        Returns
+        -------
+        PolarPatches
+            ``(indptr, indices, rho, theta)``: NumPy arrays of CSR rows, not a scipy matrix, so that membership
+            stays explicit (a theta or a rho of 0 is a value) and the arrays go as they are to scipy or to a
+            framework's sparse tensors (see ``PolarPatches``).
+
+        Raises
+        ------
+        ValueError
+            A centre out of range, in no face, or split by the repair (a non-manifold vertex has no tangent plane);
+            a negative or NaN radius.
+        """
+        c = vertex_list(centres, "centres")
+        r = check_float(radius, "radius")
+        if not r >= 0:
+            raise ValueError("radius must be >= 0 (inf for whole log maps), got %r" % (radius,))
+        if not isinstance(strict, bool):
+            raise TypeError("strict must be a bool, got %r" % (strict,))
+        return PolarPatches(*self._core.polar_patches(c, r, strict, check_threads(threads)))
