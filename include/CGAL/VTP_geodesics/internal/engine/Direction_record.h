@@ -201,16 +201,17 @@ public:
   }
 
   // After the run: theta of every vertex behind a vertex (default mode), from the coordinates of that vertex,
-  // nearer to the source first: P(s) + (D(v) - D(s)) (cos gamma, sin gamma).
-  void finish(const std::vector<double>& dist)
+  // nearer to the source first: P(s) + (D(v) - D(s)) (cos gamma, sin gamma). `reached`: if given, the only
+  // vertices the run reached (a local run, Local_propagation.h: the cost of its patch, not of the mesh).
+  void finish(const std::vector<double>& dist, const std::vector<Index>* reached = nullptr)
   {
     if(!m_active || m_strict)
       return;
     std::vector<Index> chain;
-    const std::size_t nv = theta.size();
-    for(std::size_t v0 = 0; v0 < nv; ++v0)
+    const std::size_t nv = theta.size(), n = reached ? reached->size() : nv;
+    for(std::size_t i = 0; i < n; ++i)
     {
-      Index x = static_cast<Index>(v0);
+      Index x = reached ? (*reached)[i] : static_cast<Index>(i);
       chain.clear();
       while(std::signbit(turn[x]) && chain.size() <= nv)  // (a cycle of equal distances is cut)
       {

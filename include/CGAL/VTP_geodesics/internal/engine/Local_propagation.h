@@ -71,6 +71,7 @@ public:
     m_state.schedule.start_heap();
     seed_sources(m_state, m_seeds);
     m_loop.run(m_state);
+    m_state.direction.finish(m_state.dist, &m_reached);  // the log map behind pseudo-sources
     m_state.reached = nullptr;
     m_complete = true;
   }
