@@ -246,6 +246,7 @@ geodesic_cell_borders(const Solver& solver, const NamedParameters& np = paramete
 /// polygons of its corners). The areas add up to the area of the faces whose corners are all reached (to
 /// rounding). `uncertainty[i]`: the chord tolerance times the length of the border of cell i, a bound of the
 /// area between the chords and the borders (where the borders are exact; see the manual, curves).
+/// \param solver a solver whose last computation used `record_paths(true)`, from several sources.
 /// \param np optional: `chord_tolerance`, `vertex_point_map` (as `geodesic_isolines()`)
 /// \throws Invalid_input_error as `geodesic_cell_borders()`.
 template <class Solver, class NamedParameters = CGAL::parameters::Default_named_parameters>
