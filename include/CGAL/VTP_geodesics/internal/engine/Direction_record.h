@@ -174,6 +174,7 @@ public:
       const double beta_in = phi + std::atan2(r.gy * r.dx - r.gx * r.dy, -(r.gx * r.dx + r.gy * r.dy));
       turning = static_cast<float>(angle_in_0_2pi(a - (beta_in + (border ? TANGENT_FRAME_PI : 0.5 * sum))));
     }
+    turning = std::fabs(turning);  // (+0 for -0 or a NaN's sign: the sign bit is the flag below)
     turn[v] = lazy ? -turning : turning;
   }
 
@@ -216,12 +217,16 @@ public:
       while(std::signbit(turn[x]) && chain.size() <= nv)  // (a cycle of equal distances is cut)
       {
         chain.push_back(x);
+        if(via[x] < 0)
+          break;
         x = via[x];
       }
       for(std::size_t k = chain.size(); k-- > 0;)
       {
         const Index u = chain[k], s = via[u];
         turn[u] = std::fabs(turn[u]);
+        if(s < 0)
+          continue;
         const double rho = dist[s], run = dist[u] - rho, t = theta[s], gamma = theta[u];
         if(rho < std::numeric_limits<double>::infinity() && run < std::numeric_limits<double>::infinity())
           theta[u] = std::atan2(rho * std::sin(t) + run * std::sin(gamma), rho * std::cos(t) + run * std::cos(gamma));
