@@ -19,28 +19,6 @@
 
 namespace vtp_python {
 
-namespace {
-
-typedef std::array<double, 3> Vec3;
-
-Vec3 minus(const Point_3& a, const Point_3& b) { return { { a.x() - b.x(), a.y() - b.y(), a.z() - b.z() } }; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 unit(const Vec3& a)
-{
-  const double n = std::sqrt(dot(a, a));
-  return n > 0. ? Vec3{ { a[0] / n, a[1] / n, a[2] / n } } : a;
-}
-// the unit axes of the frame of the corners (a, b, c): x along a -> b, y towards c, in their plane
-void axes(const Point_3& a, const Point_3& b, const Point_3& c, Vec3& x, Vec3& y)
-{
-  x = unit(minus(b, a));
-  const Vec3 ac = minus(c, a);
-  const double t = dot(ac, x);
-  y = unit(Vec3{ { ac[0] - t * x[0], ac[1] - t * x[1], ac[2] - t * x[2] } });
-}
-
-} // namespace
-
 // The walks from starts[i] (start_vertices[i] >= 0: that vertex of V; else the point (start_faces[i],
 // start_bary[i])), in directions[i] (n, 2): the tangent frame of the start, (n, 3): projected), for lengths[i].
 // A 2D direction at a point of a face is in the frame of F[face] (x along F[face][0] -> F[face][1], y towards
@@ -64,7 +42,7 @@ py::tuple Core_solver::trace(const Index_array& start_vertices, const Index_arra
   // takes as the vertex), every direction in the library's frame of the start
   std::vector<Face_location> starts(n);
   std::vector<std::array<double, 2> > d2(dim == 2 ? n : 0);
-  std::vector<Vec3> d3(dim == 3 ? n : 0);
+  std::vector<std::array<double, 3> > d3(dim == 3 ? n : 0);
   for(std::size_t i = 0; i < n; ++i)
   {
     const std::string name = "start " + std::to_string(i);
@@ -102,23 +80,13 @@ py::tuple Core_solver::trace(const Index_array& start_vertices, const Index_arra
       d2[i] = { { dir[2 * i], dir[2 * i + 1] } };
     else
     {
-      // the frame of F[face] (the caller's corner order) to the frame of halfedge(f)
-      const Face_index f = starts[i].first;
-      const Halfedge_index h = m_mesh.halfedge(f);
-      const Point_3 lib[3] = { m_mesh.point(m_mesh.source(h)), m_mesh.point(m_mesh.target(h)),
-                               m_mesh.point(m_mesh.target(m_mesh.next(h))) };
-      const std::array<int, 3> pos = corner_order(f);
-      Point_3 user[3];
-      for(int k = 0; k < 3; ++k)
-        user[pos[std::size_t(k)]] = lib[k];
-      Vec3 ux, uy, lx, ly;
-      axes(user[0], user[1], user[2], ux, uy);
-      axes(lib[0], lib[1], lib[2], lx, ly);
+      // the frame of F[face] (the caller's corner order) to the frame of halfedge(f): the transpose of
+      // caller_face_frame() (log_map.cpp), a rotation
+      const std::array<double, 4> m = caller_face_frame(starts[i].first);
       const double a = dir[2 * i], b = dir[2 * i + 1];
-      const Vec3 v = { { a * ux[0] + b * uy[0], a * ux[1] + b * uy[1], a * ux[2] + b * uy[2] } };
       const double norm = std::sqrt(a * a + b * b);
       // (a zero or non-finite direction stays so: the library names it)
-      d2[i] = std::isfinite(norm) && norm > 0. ? std::array<double, 2>{ { dot(v, lx), dot(v, ly) } }
+      d2[i] = std::isfinite(norm) && norm > 0. ? std::array<double, 2>{ { m[0] * a + m[2] * b, m[1] * a + m[3] * b } }
                                                : std::array<double, 2>{ { a, b } };
     }
   }
