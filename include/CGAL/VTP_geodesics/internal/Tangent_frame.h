@@ -15,6 +15,7 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
+#include <CGAL/VTP_geodesics/internal/Fast_atan2.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
 
 #include <CGAL/assertions.h>
@@ -64,7 +65,7 @@ inline Index cw_outgoing(const Mesh_arrays& a, Index h)
 inline double corner_angle_of(const Mesh_arrays& a, Index h)
 {
   const Halfedge_geometry g = a.geometry[h];
-  return std::atan2(g.cy, g.cx);
+  return fast_atan2(g.cy, g.cx);
 }
 
 // The direction of half-edge g (of the face of h) in the frame of h (A = source(h) at the origin, h along
@@ -76,8 +77,8 @@ inline double halfedge_direction_in_frame(const Mesh_arrays& a, Index h, Index g
     return 0.;
   const Halfedge_geometry q = a.geometry[h];
   if(g == Mesh_arrays::next(h))
-    return std::atan2(q.cy, q.cx - q.length);  // B -> C
-  return std::atan2(-q.cy, -q.cx);             // C -> A
+    return fast_atan2(q.cy, q.cx - q.length);  // B -> C
+  return fast_atan2(-q.cy, -q.cx);             // C -> A
 }
 
 // The same direction as a vector (not of unit length): cheaper where only angles between vectors are needed.
@@ -96,7 +97,11 @@ inline std::array<double, 2> halfedge_vector_in_frame(const Mesh_arrays& a, Inde
 inline double angle_in_0_2pi(double t)
 {
   const double two_pi = 2. * TANGENT_FRAME_PI;
-  t = std::fmod(t, two_pi);
+  // (the common cases without fmod, the same values: t - 2 pi is exact there)
+  if(t >= two_pi && t < 2. * two_pi)
+    t -= two_pi;
+  else if(!(t >= -two_pi && t < two_pi))
+    t = std::fmod(t, two_pi);
   if(t < 0.)
     t += two_pi;
   return t < two_pi ? t : 0.;
@@ -240,7 +245,7 @@ inline double planar_angle_3d(const Vector_3d& d, const Vector_3d& x, const Vect
   const double u = dot_3d(d, x), v = dot_3d(d, y);
   if(!(u * u + v * v > 1e-24 * dot_3d(d, d)))
     throw Invalid_input_error(std::string(what) + " is orthogonal to the tangent plane");
-  return std::atan2(v, u);
+  return fast_atan2(v, u);
 }
 
 // theta of the 3D direction d in the frame of face f, whose corners source(3f), target(3f) and the third
@@ -297,7 +302,7 @@ double vertex_theta_of_3d(const Mesh_arrays& a, const Vertex_frame& frame, const
   for(std::size_t i = 1; i <= n; ++i)
   {
     const double u = dot_3d(edge[i], x), v = dot_3d(edge[i], y);
-    e[i] = angle_in_0_2pi(std::atan2(v, u));
+    e[i] = angle_in_0_2pi(fast_atan2(v, u));
   }
   if(!frame.border)
     e[n] = two_pi;
