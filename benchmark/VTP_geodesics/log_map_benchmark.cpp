@@ -5,6 +5,10 @@
 //
 //   log_map_benchmark MESH [SOURCE_VERTEX [REPEATS]]
 //
+// With LOG_MAP_BENCHMARK_ONLY=distance|default|strict in the environment it runs only that one, REPEATS
+// times, and prints nothing: for counting instructions (valgrind --tool=callgrind), which a loaded machine
+// does not distort.
+//
 // Built without the log map (-DLOG_MAP_BENCHMARK_DISTANCE_ONLY), it times the distance run alone: compiled
 // against another version of the headers, it compares the distance runs of the two versions.
 
