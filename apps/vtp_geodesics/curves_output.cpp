@@ -29,8 +29,8 @@ namespace VTP = CGAL::VTP_geodesics;
 
 namespace {
 
-// About `isolines` round levels up to the largest finite distance of the solver's last run (with `largest`: that
-// one included).
+// About `isolines` round levels up to the largest finite distance of the solver's last run (that one included if
+// `largest_included`).
 std::vector<double> round_levels(const Curve_solver& solver, int isolines, bool largest_included)
 {
   double largest = 0.;

@@ -79,9 +79,10 @@ void Distance_picture::fill_labels(std::size_t nf, const Face_of& face_of)
 {
   constexpr int mixed = INT_MIN + 1, partly_unreached = INT_MIN + 2;
   std::vector<int> face_label(nf);
+  std::vector<Triangle> triangles(nf);
   for(std::size_t f = 0; f < nf; ++f)
   {
-    const Triangle t = face_of(f);
+    const Triangle t = triangles[f] = face_of(f);
     const int a = m_labels[t[0]], b = m_labels[t[1]], c = m_labels[t[2]];
     face_label[f] = a == b && b == c ? a : ((std::min)({ a, b, c }) < 0 ? partly_unreached : mixed);
   }
@@ -97,7 +98,8 @@ void Distance_picture::fill_labels(std::size_t nf, const Face_of& face_of)
   auto shares_a_corner = [&](std::uint32_t f, std::uint32_t g) {
     if(f == g)
       return true;
-    const Triangle a = face_of(f), b = face_of(g);
+    const Triangle& a = triangles[f];
+    const Triangle& b = triangles[g];
     for(std::uint32_t u : a)
       for(std::uint32_t v : b)
         if(u == v)
@@ -118,7 +120,7 @@ void Distance_picture::fill_labels(std::size_t nf, const Face_of& face_of)
       const std::uint32_t f = m_face[n];
       if(f == no_face || face_label[f] != mixed || m_sample_label[n] != no_label || !shares_a_corner(m_face[s], f))
         continue;
-      const Triangle t = face_of(f);
+      const Triangle& t = triangles[f];
       if(m_labels[t[0]] != label && m_labels[t[1]] != label && m_labels[t[2]] != label)
         continue;
       m_sample_label[n] = label;
