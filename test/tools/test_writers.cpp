@@ -381,13 +381,20 @@ bool is_grey(const unsigned char* p)
   return p[0] != 255 && std::abs(int(p[0]) - int(p[1])) < 4 && std::abs(int(p[1]) - int(p[2])) < 4 && p[0] > 40;
 }
 
+// A field that grows along x, from 1 at vertex 0.
+std::vector<double> linear_values(const Mesh& m)
+{
+  std::vector<double> values(m.number_of_vertices());
+  for(Vertex_index v : m.vertices())
+    values[std::size_t(v)] = m.point(v).x() - m.point(Vertex_index(0)).x() + 1.;
+  return values;
+}
+
 TEST(Picture, DrawsTheFieldIsolinesAndMarkers)
 {
   Mesh m;
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(mesh_dir + "/elephant.off", m));
-  std::vector<double> values(m.number_of_vertices());
-  for(Vertex_index v : m.vertices())
-    values[std::size_t(v)] = m.point(v).x() - m.point(Vertex_index(0)).x() + 1.;
+  const std::vector<double> values = linear_values(m);
   const Rendered plain = render(m, values, 0, false);
   const Rendered lines = render(m, values, 10, false);
   const Rendered marked = render(m, values, 10, true);
@@ -423,9 +430,7 @@ TEST(Picture, GivenCurvesReplaceTheInterpolatedIsolines)
 {
   Mesh m;
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(mesh_dir + "/elephant.off", m));
-  std::vector<double> values(m.number_of_vertices());
-  for(Vertex_index v : m.vertices())
-    values[std::size_t(v)] = m.point(v).x() - m.point(Vertex_index(0)).x() + 1.;
+  const std::vector<double> values = linear_values(m);
   const Rendered plain = render(m, values, 0, false);
   // no curves given: no isolines drawn on the mesh, whatever the number asked for (the colour bar, right of the
   // mesh, has its ticks)
