@@ -12,7 +12,8 @@
 
 // The command line of vtp_geodesics: one table of options (`option_table()`, made with the command-line helper
 // of the support layer, vtp_support/command_line.h), from which the parser and the help are made. To add an
-// option: a field in `Arguments`, an entry in the table (arguments.cpp), and its checks in `check_arguments()`.
+// option: a field in `Arguments`, an entry in the table (arguments_table.cpp), and the checks of its combinations
+// with other options in `check_arguments()` (arguments_checks.cpp). The parser and the help: arguments.cpp.
 
 #include <vtp_support/command_line.h>
 
@@ -103,7 +104,11 @@ typedef vtp_support::Option<Arguments> Option;
 
 const vtp_support::Option_table<Arguments>& option_table();
 
-// Parses the command line; throws Tool_error. `--help` only sets `help`.
+// Checks the combinations of options (the method's name, what an option needs or excludes, output files that
+// must differ); throws Tool_error.
+void check_arguments(const Arguments& a);
+
+// Parses the command line, then check_arguments(); throws Tool_error. `--help` only sets `help`.
 Arguments parse_arguments(int argc, char** argv);
 
 // The help text; `default_mesh` is shown as the default of MESH.

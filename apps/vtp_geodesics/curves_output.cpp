@@ -27,10 +27,12 @@ namespace vtp_geodesics_app {
 
 namespace VTP = CGAL::VTP_geodesics;
 
-std::vector<double> curve_levels(const Curve_solver& solver, const std::vector<double>& given, int isolines)
+namespace {
+
+// About `isolines` round levels up to the largest finite distance of the solver's last run (that one included if
+// `largest_included`).
+std::vector<double> round_levels(const Curve_solver& solver, int isolines, bool largest_included)
 {
-  if(!given.empty())
-    return given;
   double largest = 0.;
   for(double d : solver.distances())
     if(d < std::numeric_limits<double>::infinity())
@@ -39,7 +41,7 @@ std::vector<double> curve_levels(const Curve_solver& solver, const std::vector<d
   if(isolines <= 0 || !(largest > 0.))
     return levels;
   const double step = picture_detail::isoline_step(largest, isolines);
-  for(int k = 1; step * k <= largest && k <= 100000; ++k)
+  for(int k = 1; (largest_included ? step * k <= largest : step * k < largest) && k <= 100000; ++k)
   {
     // k times the round step, rounded to 12 significant digits (0.6, not 0.6000000000000001)
     char text[32];
@@ -49,8 +51,6 @@ std::vector<double> curve_levels(const Curve_solver& solver, const std::vector<d
   return levels;
 }
 
-namespace {
-
 std::string number_text(double x)
 {
   char buffer[vtp_support::max_double_chars];
@@ -59,9 +59,27 @@ std::string number_text(double x)
 
 } // namespace
 
-std::vector<Curve_set> extract_curve_sets(const Curve_solver& solver, const std::vector<double>& levels, bool borders,
+std::vector<double> curve_levels(const Curve_solver& solver, const std::vector<double>& given, int isolines)
+{
+  return given.empty() ? round_levels(solver, isolines, true) : given;
+}
+
+std::vector<double> picture_levels(const Curve_solver& solver, int isolines)
+{
+  return round_levels(solver, isolines, false);
+}
+
+std::vector<Curve_set> extract_curve_sets(const Curve_solver& solver, const Curve_request& request,
                                           const std::vector<std::size_t>& label_of_source)
 {
+  // the levels of the output, then those of the picture that it has not
+  std::vector<double> levels = request.output_levels;
+  for(double l : request.picture_levels)
+    if(std::find(levels.begin(), levels.end(), l) == levels.end())
+      levels.push_back(l);
+  auto in = [](const std::vector<double>& list, double l) {
+    return std::find(list.begin(), list.end(), l) != list.end();
+  };
   std::vector<Curve_set> sets;
   std::map<double, std::size_t> level_set;
   for(const auto& c : VTP::geodesic_isolines(solver, levels))
@@ -72,6 +90,8 @@ std::vector<Curve_set> extract_curve_sets(const Curve_solver& solver, const std:
       it = level_set.emplace(c.level, sets.size()).first;
       sets.push_back(Curve_set());
       sets.back().name = "level_" + number_text(c.level);
+      sets.back().in_output = in(request.output_levels, c.level);
+      sets.back().in_picture = in(request.picture_levels, c.level);
     }
     Curve_set& s = sets[it->second];
     s.curves.emplace_back();
@@ -79,7 +99,7 @@ std::vector<Curve_set> extract_curve_sets(const Curve_solver& solver, const std:
       s.curves.back().push_back({ { p.x(), p.y(), p.z() } });
     s.closed.push_back(c.closed ? 1 : 0);
   }
-  if(!borders)
+  if(!request.output_borders && !request.picture_borders)
     return sets;
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> border_set;
   for(const auto& c : VTP::geodesic_cell_borders(solver))
@@ -96,6 +116,8 @@ std::vector<Curve_set> extract_curve_sets(const Curve_solver& solver, const std:
       it = border_set.emplace(std::make_pair(a, b), sets.size()).first;
       sets.push_back(Curve_set());
       sets.back().name = "border_" + std::to_string(a) + "_" + std::to_string(b);
+      sets.back().in_output = request.output_borders;
+      sets.back().in_picture = request.picture_borders;
     }
     Curve_set& s = sets[it->second];
     s.curves.emplace_back();
@@ -113,6 +135,8 @@ void write_curves_obj(std::ostream& os, const std::vector<Curve_set>& sets)
   std::size_t next = 1;  // OBJ vertices are numbered from 1
   for(const Curve_set& s : sets)
   {
+    if(!s.in_output)
+      continue;
     text += "g " + s.name + "\n";
     for(std::size_t i = 0; i < s.curves.size(); ++i)
     {

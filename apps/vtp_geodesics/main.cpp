@@ -15,7 +15,8 @@
 // mesh, and writes them in the vertex order of the file; optionally the nearest source of each vertex, a
 // distance limit, distances at targets, geodesic paths. Run `vtp_geodesics --help` for details. The program is
 // split by role:
-//   arguments.cpp     the command line (one table of options)
+//   arguments.cpp     the command line: the parser and the help; its table of options in arguments_table.cpp,
+//                     the checks of combinations of options in arguments_checks.cpp
 //   vtp_support/read_mesh.h (support/)   reading and repair, and the correspondence of file and mesh vertices
 //   request.cpp       the request made from the arguments: file vertices and points to the mesh
 //   locate.cpp        points of the command line located on the mesh (vtp_support/surface_locator.h)

@@ -122,6 +122,19 @@ void write_picture(std::ostream& os, const vtp_support::Mesh& mesh, const std::v
     picture.set_labels(*request.labels);
   if(request.angles != nullptr)
     picture.set_angles(*request.angles);
+  if(request.curves != nullptr)
+  {
+    std::vector<std::vector<std::array<double, 3> > > lines;
+    for(const Curve_set& s : *request.curves)
+      if(s.in_picture)
+        for(std::size_t i = 0; i < s.curves.size(); ++i)
+        {
+          lines.push_back(s.curves[i]);
+          if(s.closed[i] && !s.curves[i].empty())
+            lines.back().push_back(s.curves[i].front());
+        }
+    picture.set_curves(std::move(lines));
+  }
   const vtp_support::Mesh::size_type nv = mesh.number_of_vertices();
   picture.set_mesh(
     static_cast<std::size_t>(nv),
@@ -204,6 +217,8 @@ void write_outputs(Output_files& files, const Arguments& args, const vtp_support
         p.labels = &run.labels;
       if(args.colour_angle)
         p.angles = &run.log_map;
+      if(request.run.picture_isolines || request.run.picture_borders)
+        p.curves = &run.curves;
       write_picture(os, input.mesh, input.direct ? results.distances : results.mesh_distances, results.max_distance,
                     p);
     });

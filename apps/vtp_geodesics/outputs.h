@@ -60,6 +60,8 @@ struct Picture_request
   std::vector<std::vector<std::array<double, 3> > > polylines; // the paths
   const std::vector<int>* labels = nullptr;                   // per mesh vertex: colour the labels instead
   const std::vector<std::array<double, 2> >* angles = nullptr; // per mesh vertex: colour the log map's theta
+  // the curves to draw, those `in_picture` (the library's, instead of interpolating the isolines or the borders)
+  const std::vector<Curve_set>* curves = nullptr;
 };
 
 // Draws the distance field on the mesh of the computation (`mesh_distances`: per mesh vertex) as a PNG picture.

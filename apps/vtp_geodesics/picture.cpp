@@ -196,12 +196,20 @@ void Distance_picture::set_mesh(std::size_t nv, const Point_of& point_of, std::s
   fill_colour_table();
   for(std::size_t f = 0; f < nf; ++f)
     rasterize(sx, sy, sz, face_of(f), static_cast<std::uint32_t>(f));
+  if(m_has_curves)
+  {
+    draw_curves();
+    if(!m_labels.empty())
+      fill_labels(nf, face_of);
+  }
   for(std::size_t s = 0; s < m_depth.size(); ++s)
     if(m_face[s] != no_face)
       shade(s, sx, sy, normals, values, m_face[s], face_of(m_face[s]));
   std::vector<std::uint32_t>().swap(m_face);
   std::vector<float>().swap(m_bary);
   std::vector<float>().swap(m_face_gradient);
+  std::vector<float>().swap(m_line);
+  std::vector<int>().swap(m_sample_label);
 }
 
 // Position of a point in picture pixels (x, y) and its depth.

@@ -21,6 +21,7 @@
 // encoded with libpng. The class is written in three files:
 //   picture.cpp          the view (direction, projection, layout) and the visibility of points
 //   picture_raster.cpp   the rasterizer: depth test, shading, isolines, label colours, downsampling
+//   picture_curves.cpp   the curves given by set_curves() (the library's isolines and cell borders) in the samples
 //   picture_overlay.cpp  the overlay (cairo) and the PNG encoding (libpng)
 //   picture_angle.cpp    the colours of angles (the log map's theta) and their wheel
 //
@@ -30,7 +31,8 @@
 //                                                                   // face_of(f) -> std::array<uint32_t, 3>
 //   picture.add_marker(p);  picture.add_polyline(points);
 //   (or, before set_mesh(), picture.set_labels(labels): each label, e.g. a nearest-source cell, in its own
-//   colour with the borders between labels drawn, instead of the colour map, the isolines and the colour bar)
+//   colour with the borders between labels drawn, instead of the colour map, the isolines and the colour bar;
+//   and picture.set_curves(curves): these curves drawn as the isolines, or as the borders of the labels)
 //   picture.write_png(stream);
 
 #include <array>
@@ -86,6 +88,17 @@ public:
   // (picture_angle.cpp). Call before set_mesh().
   void set_angles(std::vector<std::array<double, 2> > xy) { m_angles = std::move(xy); }
 
+  // Draws `curves` (polylines on the surface, e.g. the isolines of the library at the picture's levels, or the
+  // borders of its cells) instead of the isolines found by interpolating the values linearly inside the faces
+  // (with set_labels(): instead of the borders between the labels of the corners), with the same width and
+  // darkening, where they are seen (picture_curves.cpp). A closed curve repeats its first point at the end.
+  // Call before set_mesh().
+  void set_curves(std::vector<std::vector<Vec3> > curves)
+  {
+    m_curves = std::move(curves);
+    m_has_curves = true;
+  }
+
   // Draws the mesh: `point_of(i)` (i < nv) gives the point of vertex i, `face_of(f)` (f < nf) the three vertex
   // indices of face f, `values[i]` the value of vertex i (not finite: no value, drawn grey). Colours go from 0
   // to `max_value`.
@@ -121,6 +134,7 @@ public:
 
 private:
   static constexpr std::uint32_t no_face = 0xffffffffu;
+  static constexpr int no_label = -2147483647 - 1;  // (INT_MIN) m_sample_label: the rule of label_colour()
   static constexpr int lut_size = 1024;
 
   // picture.cpp: the view, and where points are on the picture.
@@ -138,6 +152,10 @@ private:
                     double& line) const;
   void fill_colour_table();
   void downsample();
+
+  // picture_curves.cpp: m_line from m_curves (after the depth test); with labels, m_sample_label
+  void draw_curves();
+  void fill_labels(std::size_t nf, const Face_of& face_of);
 
   // picture_angle.cpp
   void angle_colour(const Triangle& t, const std::array<float, 3>& w, double& r, double& g, double& b) const;
@@ -158,12 +176,16 @@ private:
   std::vector<std::uint32_t> m_face;   // during set_mesh(): the face seen at each sample
   std::vector<float> m_bary;           // during set_mesh(): its first two barycentric coordinates there
   std::vector<float> m_face_gradient;  // during set_mesh(): screen gradient of the value per face (-1: not yet)
+  std::vector<float> m_line;           // during set_mesh(), with set_curves(): how much each sample is on a curve
+  std::vector<int> m_sample_label;     // during set_mesh(), with set_curves() and labels: the label of each sample
   std::array<std::array<float, 3>, lut_size> m_lut;  // the colour map, finely sampled
   std::vector<unsigned char> m_colour, m_pixels;
   std::vector<Vec3> m_markers;
   std::vector<std::vector<Vec3> > m_polylines;
   std::vector<int> m_labels;           // per vertex, if the picture colours labels (set_labels())
   std::vector<std::array<double, 2> > m_angles; // per vertex, if the picture colours angles (set_angles())
+  std::vector<std::vector<Vec3> > m_curves;      // set_curves()
+  bool m_has_curves = false;
 };
 
 } // namespace vtp_geodesics_app

@@ -119,7 +119,17 @@ void Distance_picture::shade(std::size_t s, const std::vector<float>& sx, const 
   double r = grey.r, g = grey.g, b = grey.b;
   double line = 0.;
   if(!m_labels.empty())
-    label_colour(t, { { w0, w1, w2 } }, r, g, b, line);
+  {
+    if(m_has_curves && m_sample_label[s] != no_label)
+    {
+      if(m_sample_label[s] >= 0)
+        colour_of_label(m_sample_label[s], r, g, b);
+    }
+    else
+      label_colour(t, { { w0, w1, w2 } }, r, g, b, line);
+    if(m_has_curves)
+      line = m_line[s];  // the borders given, not those between the corners' labels
+  }
   else if(std::isfinite(v0) && std::isfinite(v1) && std::isfinite(v2))
   {
     const double v = w0 * v0 + w1 * v1 + w2 * v2;
@@ -130,7 +140,9 @@ void Distance_picture::shade(std::size_t s, const std::vector<float>& sx, const 
     b = c[2];
     if(!m_angles.empty())
       angle_colour(t, { { w0, w1, w2 } }, r, g, b);
-    if(m_step > 0.)
+    if(m_has_curves)
+      line = m_line[s];
+    else if(m_step > 0.)
     {
       const double k = std::round(v / m_step);
       if(k >= 1. && k * m_step < m_max_value)

@@ -117,6 +117,10 @@ Request make_request(const Arguments& args, const vtp_support::Method_info& meth
     run.source_location_labels.push_back(args.sources.size() + j);
   }
   run.want_curves = !args.curves_output.empty();
+  // the picture draws the curves of the library but after runs through the split vertices (it interpolates then)
+  const bool picture_curves = !args.picture.empty() && !args.through_pinches;
+  run.picture_isolines = picture_curves && !args.colour_labels && args.isolines > 0;
+  run.picture_borders = picture_curves && args.colour_labels;
   run.curve_levels = args.levels;
   run.curve_isolines = args.isolines;
   run.want_labels = args.several_sources() || !args.labels.empty() || args.farthest_points > 0 || args.colour_labels;

@@ -68,6 +68,19 @@ std::vector<std::array<double, 3> > to_arrays(const std::vector<vtp_support::Poi
   return r;
 }
 
+// The curves that --curves-output and the picture ask for, after the solver's last run.
+Curve_request curve_request(const Solver& solver, const Run_request& request, bool several_sources)
+{
+  Curve_request c;
+  if(request.want_curves)
+    c.output_levels = curve_levels(solver, request.curve_levels, request.curve_isolines);
+  if(request.picture_isolines)
+    c.picture_levels = picture_levels(solver, request.curve_isolines);
+  c.output_borders = request.want_curves && several_sources;
+  c.picture_borders = request.picture_borders && several_sources;
+  return c;
+}
+
 // Farthest-point sampling with `method` (any of the table), then the areas of the Voronoi cells.
 void run_sampling(const vtp_support::Method_info& method, Solver& solver, const vtp_support::Mesh& mesh,
                   const Run_request& request, double lambda, Run_result& r)
@@ -91,16 +104,16 @@ void run_sampling(const vtp_support::Method_info& method, Solver& solver, const 
   for(std::size_t i = 0; i < r.mesh_vertices; ++i)
     r.labels[i] = fps.labels[i] == VTP::no_source ? -1 : static_cast<int>(fps.labels[i]);
   r.statistics = fps.statistics;
-  if(request.want_curves && !fps.samples.empty())
+  if(request.wants_curves() && !fps.samples.empty())
   {
-    // the samples as sources, recorded, for the curves of their field
+    // the samples as sources, recorded, for the curves of their field (one more run)
     vtp_support::with_method(method, lambda, request.threads, [&](auto tag, const auto& method_np) {
       typedef decltype(tag) Tag;
       const CGAL::Constant_property_map<vtp_support::Vertex_index, double> no_map;
       solver.compute<Tag>(no_map, fps.samples, method_np.lambda_g(request.lambda_g).record_paths(true));
     });
-    r.curves = extract_curve_sets(solver, curve_levels(solver, request.curve_levels, request.curve_isolines),
-                                  fps.samples.size() > 1, std::vector<std::size_t>());
+    r.curves = extract_curve_sets(solver, curve_request(solver, request, fps.samples.size() > 1),
+                                  std::vector<std::size_t>());
   }
 }
 
@@ -214,7 +227,7 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
                         .maximum_distance(join ? infinity : request.max_distance)
                         .targets(targets)
                         .stop_at_targets(request.stop_at_targets && !join)
-                        .record_paths(!request.paths.empty() || request.want_curves);
+                        .record_paths(!request.paths.empty() || request.wants_curves());
       if(request.log_map)
         compute_log_map<Tag>(solver, mesh, request, np, labels, r);
       else if(request.want_labels)
@@ -258,10 +271,11 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
     }
   }
 
-  // The curves, from the same record (not after runs through the split vertices: refused by the arguments)
-  if(request.want_curves && !label_of_source.empty())
-    r.curves = extract_curve_sets(solver, curve_levels(solver, request.curve_levels, request.curve_isolines),
-                                  label_of_source.size() > 1, label_of_source);
+  // The curves, from the same record (not after runs through the split vertices: the arguments refuse
+  // --curves-output with them, and the picture then interpolates its isolines)
+  if(request.wants_curves() && !label_of_source.empty() && request.joined_copies.empty())
+    r.curves = extract_curve_sets(solver, curve_request(solver, request, label_of_source.size() > 1),
+                                  label_of_source);
 
   // The paths, from the trace-back recorded by the run; a vertex path from its copy nearest to a source.
   const std::string beyond = request.max_distance < infinity ? " (or it lies beyond --max-distance)" : "";

@@ -41,6 +41,11 @@ struct Run_request
   bool want_curves = false;
   std::vector<double> curve_levels;
   int curve_isolines = 10;
+  // --picture: it draws the library's curves (from the same extraction as --curves-output): the isolines at its
+  // levels (about `curve_isolines` round values), or with the label colouring the borders of the cells
+  bool picture_isolines = false;
+  bool picture_borders = false;
+  bool wants_curves() const { return want_curves || picture_isolines || picture_borders; }
   // The sources: mesh vertices, then points of the surface, each with the index of the source of the command
   // line it stands for (its label; the copies of a vertex share one). None: nothing is computed (all +inf).
   std::vector<vtp_support::Vertex_index> source_vertices;
@@ -116,7 +121,7 @@ struct Run_result
   // geodesic passes through (-1: none)
   std::vector<std::array<double, 2> > log_map;
   std::vector<long long> log_map_via;
-  std::vector<Curve_set> curves;          // --curves-output
+  std::vector<Curve_set> curves;          // --curves-output and --picture (Curve_set::in_output, in_picture)
 };
 
 // Runs `request` on `mesh`; throws Tool_error (e.g. a path to a vertex that no source reaches) or the

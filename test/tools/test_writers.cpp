@@ -330,12 +330,17 @@ struct Rendered
   }
 };
 
+typedef std::vector<std::vector<std::array<double, 3> > > Curves;
+
 Rendered render(const Mesh& m, const std::vector<double>& values, int isolines, bool marker,
-               const std::vector<std::array<double, 3> >& polyline = std::vector<std::array<double, 3> >())
+               const std::vector<std::array<double, 3> >& polyline = std::vector<std::array<double, 3> >(),
+               const Curves* curves = nullptr)
 {
   app::Picture_options o;
   o.isolines = isolines;
   app::Distance_picture picture(o);
+  if(curves != nullptr)
+    picture.set_curves(*curves);
   double max_value = 0.;
   for(double v : values)
     if(std::isfinite(v))
@@ -376,13 +381,20 @@ bool is_grey(const unsigned char* p)
   return p[0] != 255 && std::abs(int(p[0]) - int(p[1])) < 4 && std::abs(int(p[1]) - int(p[2])) < 4 && p[0] > 40;
 }
 
+// A field that grows along x, from 1 at vertex 0.
+std::vector<double> linear_values(const Mesh& m)
+{
+  std::vector<double> values(m.number_of_vertices());
+  for(Vertex_index v : m.vertices())
+    values[std::size_t(v)] = m.point(v).x() - m.point(Vertex_index(0)).x() + 1.;
+  return values;
+}
+
 TEST(Picture, DrawsTheFieldIsolinesAndMarkers)
 {
   Mesh m;
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(mesh_dir + "/elephant.off", m));
-  std::vector<double> values(m.number_of_vertices());
-  for(Vertex_index v : m.vertices())
-    values[std::size_t(v)] = m.point(v).x() - m.point(Vertex_index(0)).x() + 1.;
+  const std::vector<double> values = linear_values(m);
   const Rendered plain = render(m, values, 0, false);
   const Rendered lines = render(m, values, 10, false);
   const Rendered marked = render(m, values, 10, true);
@@ -412,6 +424,37 @@ TEST(Picture, DrawsPolylines)
   const Rendered without = render(m, values, 0, false);
   const Rendered with = render(m, values, 0, false, path);
   EXPECT_GT(with.count(is_marker_red), without.count(is_marker_red) + 100);
+}
+
+TEST(Picture, GivenCurvesReplaceTheInterpolatedIsolines)
+{
+  Mesh m;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(mesh_dir + "/elephant.off", m));
+  const std::vector<double> values = linear_values(m);
+  const Rendered plain = render(m, values, 0, false);
+  // no curves given: no isolines drawn on the mesh, whatever the number asked for (the colour bar, right of the
+  // mesh, has its ticks)
+  const Curves none;
+  const Rendered without = render(m, values, 10, false, {}, &none);
+  ASSERT_EQ(without.width, plain.width);
+  std::size_t differ = 0;
+  for(std::size_t y = 0; y < std::size_t(plain.height); ++y)
+    for(std::size_t x = 0; x + 200 < std::size_t(plain.width); ++x)
+      for(std::size_t k = 0; k < 3; ++k)
+        differ += without.pixels[3 * (y * plain.width + x) + k] != plain.pixels[3 * (y * plain.width + x) + k];
+  EXPECT_EQ(differ, 0u);
+  // a curve along the edges of the first faces (on the surface): dark pixels, the same picture every time
+  Curves along(1);
+  for(Mesh::Face_index f : m.faces())
+  {
+    if(along[0].size() > 300)
+      break;
+    const Point_3& p = m.point(m.source(m.halfedge(f)));
+    along[0].push_back({ { p.x(), p.y(), p.z() } });
+  }
+  const Rendered with = render(m, values, 10, false, {}, &along);
+  EXPECT_GT(with.count(is_dark), plain.count(is_dark) + 100);
+  EXPECT_EQ(render(m, values, 10, false, {}, &along).pixels, with.pixels);
 }
 
 TEST(Picture, UnreachableIsGreyAndViewFitsTheMesh)
