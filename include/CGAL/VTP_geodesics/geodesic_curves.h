@@ -197,7 +197,10 @@ extract_curves(const Solver& solver, const std::vector<double>* levels, const NP
 /// sampled so that the chords are within `chord_tolerance` of the arcs. See the user manual (curves) for
 /// where this is exact and what is done elsewhere.
 ///
-/// \param solver a `Geodesic_distance_solver` whose last computation used `record_paths(true)`
+/// \param solver a `Geodesic_distance_solver` whose last computation kept a record: `curve_levels(levels)` (the
+///   windows that crossed each face and may reach these levels: exact at them), `record_curves(true)` (every
+///   window that crossed a face: exact at every level, and the borders), or `record_paths(true)` (per vertex only:
+///   the candidates that reached the corners, not exact everywhere; see the manual, curves)
 /// \param levels the levels, in the unit of the mesh
 /// \param np optional: `chord_tolerance` (the largest distance of a chord to its arc, default 1e-3 times
 ///   the mean edge length), `vertex_point_map` (default: that of the mesh), `exact_refinement` (a number of

@@ -102,6 +102,23 @@ public:
       return;
     const double L = g.length;
     const double longest = (std::max)(L, (std::max)(g.l_prev, g.l_next));
+    if(!m_levels.empty())
+    {
+      // first the whole list: its least distance on the edge, and that plus the longest edge, hold no level?
+      double least = std::numeric_limits<double>::infinity();
+      for(const Window_ends& e : ends)
+        least = (std::min)(least, (std::min)(e.f0, e.f1));
+      // (a window's least distance is at least sigma - sy, its image to the line of the edge)
+      double lowest = least;
+      for(const Window& w : ws)
+        lowest = (std::min)(lowest, w.sigma - w.sy);
+      double highest = 0.;
+      for(const Window_ends& e : ends)
+        highest = (std::max)(highest, (std::min)(e.f0, e.f1));
+      const auto it = std::lower_bound(m_levels.begin(), m_levels.end(), lowest);
+      if(it == m_levels.end() || !(*it <= highest + longest))
+        return;
+    }
     double& bound = m_bound[static_cast<std::size_t>(Mesh_arrays::face(h))];
     // a corner k bounds the distance in the face by its distance plus its farthest point (an edge at k)
     bound = (std::min)({ bound, dA + (std::max)(L, g.l_prev), dB + (std::max)(L, g.l_next),
