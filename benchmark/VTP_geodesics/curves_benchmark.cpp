@@ -1,16 +1,21 @@
 // vtp_curves_benchmark: the cost and the exactness of the isolines and cell borders of geodesic_curves.h on a
 // mesh (doc/VTP_geodesics/curves.txt).
 //
-//   vtp_curves_benchmark MESH [--levels N] [--samples K] [--sources S] [--refine R]
+//   vtp_curves_benchmark MESH [--levels N] [--samples K] [--sources S] [--refine R] [--record paths|levels|all]
 //
-// One distance run from vertex 0 with record_paths(true) (timed beside the same run without the record), the
-// isolines at N levels (default 20: the largest distance times i / (N + 1)) timed, then K points (default
-// 1,000) taken evenly from all the isoline points, each checked by one exact run that has them all as
+// A distance run from vertex 0 without record gives the largest distance and the N levels (default 20: the
+// largest distance times i / (N + 1)); then the same run with the record of the curves (--record: `levels`, the
+// default: curve_levels(levels), the windows that may reach a level; `all`:
+// record_curves(true), every window that crosses a face; `paths`: record_paths(true) only, the field from the
+// per-vertex record), timed beside the run without record, with the memory of the record, and the
+// isolines at the N levels, timed: the cost is (recorded run - plain run + extraction) / plain run. Then K points
+// (default 1,000) taken evenly from all the isoline points, each checked by one exact run that has them all as
 // targets: |exact distance - level| / largest distance; beside it, for the same points, what the linear
 // interpolation of the vertex distances gives: |interpolated - exact| / largest distance. With S > 1, the
 // borders of the cells of S sources (vertices spread over the index range) are checked the same way (the
-// two cells' sources, one run each): |d_i - d_j| / largest distance. With R > 0, the isolines are refined by R
-// exact runs (named parameter exact_refinement).
+// two cells' sources, one run each): |d_i - d_j| / largest distance; the borders' run records every window
+// (record_curves(true)) unless --record paths. With R > 0, the isolines are refined by R exact runs (named
+// parameter exact_refinement).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -21,6 +26,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <ctime>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -37,6 +43,9 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
+
+// the processor time of the process (the runs and the extraction are sequential: robust to other jobs)
+double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
 void print_errors(const char* what, std::vector<double> e, double threshold)
 {
@@ -59,7 +68,8 @@ int main(int argc, char** argv)
     std::cerr << "usage: vtp_curves_benchmark MESH [--levels N] [--samples K] [--sources S]\n";
     return 2;
   }
-  int number_of_levels = 20, sources_count = 1, refine = 0;
+  int number_of_levels = 20, sources_count = 1, refine = 0, repeat = 1;
+  std::string record = "levels";
   std::size_t samples = 1000;
   for(int i = 2; i + 1 < argc; i += 2)
   {
@@ -68,10 +78,15 @@ int main(int argc, char** argv)
       number_of_levels = std::atoi(argv[i + 1]);
     else if(a == "--samples")
       samples = static_cast<std::size_t>(std::atol(argv[i + 1]));
+    else if(a == "--repeat")
+      repeat = (std::max)(1, std::atoi(argv[i + 1]));
     else if(a == "--refine")
       refine = std::atoi(argv[i + 1]);
     else if(a == "--sources")
       sources_count = std::atoi(argv[i + 1]);
+    else if(a == "--record" && (std::string(argv[i + 1]) == "paths" || std::string(argv[i + 1]) == "levels"
+                                || std::string(argv[i + 1]) == "all"))
+      record = argv[i + 1];
     else
     {
       std::cerr << "unknown option " << a << "\n";
@@ -88,11 +103,9 @@ int main(int argc, char** argv)
   const Vertex source = *mesh.vertices().begin();
   CGAL::Constant_property_map<Vertex, double> discard;
   auto t0 = std::chrono::steady_clock::now();
-  solver.compute(discard, source);
-  const double plain = seconds_since(t0);
-  t0 = std::chrono::steady_clock::now();
-  solver.compute(discard, source, VG::parameters::record_paths(true));
-  const double recorded = seconds_since(t0);
+  VG::Propagation_statistics st;
+  solver.compute(discard, source, VG::parameters::statistics(st));
+  double plain = seconds_since(t0);
   double largest = 0.;
   for(double d : solver.distances())
     if(std::isfinite(d))
@@ -100,15 +113,44 @@ int main(int argc, char** argv)
   std::vector<double> levels;
   for(int i = 1; i <= number_of_levels; ++i)
     levels.push_back(largest * i / (number_of_levels + 1));
+  // processor times, the least of `repeat` runs of each (plain and recorded in turn)
+  double plain_cpu = 1e300, recorded_cpu = 1e300, recorded = 1e300;
+  for(int r = 0; r < repeat; ++r)
+  {
+    double c0 = cpu_seconds();
+    t0 = std::chrono::steady_clock::now();
+    solver.compute(discard, source);
+    plain = (std::min)(plain, seconds_since(t0));
+    plain_cpu = (std::min)(plain_cpu, cpu_seconds() - c0);
+    c0 = cpu_seconds();
+    t0 = std::chrono::steady_clock::now();
+    if(record == "paths")
+      solver.compute(discard, source, VG::parameters::record_paths(true));
+    else if(record == "all")
+      solver.compute(discard, source, VG::parameters::record_curves(true));
+    else
+      solver.compute(discard, source, VG::parameters::curve_levels(levels));
+    recorded = (std::min)(recorded, seconds_since(t0));
+    recorded_cpu = (std::min)(recorded_cpu, cpu_seconds() - c0);
+  }
+  const auto& crossings = solver.engine().face_crossings();
   VG::Geodesic_curves_report report;
   t0 = std::chrono::steady_clock::now();
+  const double c0 = cpu_seconds();
   const auto curves = VG::geodesic_isolines(solver, levels, VG::parameters::exact_refinement(refine), &report);
-  const double extraction = seconds_since(t0);
+  const double extraction = seconds_since(t0), extraction_cpu = cpu_seconds() - c0;
   std::cout << argv[1] << ": " << mesh.number_of_vertices() << " vertices, " << mesh.number_of_faces() << " faces\n"
-            << "distance run " << plain << " s, with record_paths " << recorded << " s; " << number_of_levels
+            << "distance run " << plain << " s, with the record (" << record << ") " << recorded << " s: "
+            << crossings.size() << " window crossings kept of " << st.windows_propagated << ", "
+            << crossings.bytes() / 1e6 << " MB; " << number_of_levels
             << " levels: " << curves.size() << " curves, " << report.points << " points in " << extraction
-            << " s = " << 100. * extraction / recorded << "% of the recorded run (" << 100. * extraction / plain
-            << "% of the plain run)\n"
+            << " s; cost (recorded run - plain run + extraction) / plain run = "
+            << 100. * (recorded - plain + extraction) / plain << "% (extraction alone " << 100. * extraction / plain
+            << "%)\n"
+            << "processor time (least of " << repeat << "): plain run " << plain_cpu << " s, recorded run " << recorded_cpu
+            << " s, extraction " << extraction_cpu << " s; cost " << 100. * (recorded_cpu - plain_cpu + extraction_cpu) / plain_cpu
+            << "% (record " << 100. * (recorded_cpu - plain_cpu) / plain_cpu << "%, extraction "
+            << 100. * extraction_cpu / plain_cpu << "%)\n"
             << "exact refinement runs: " << refine << " (residual before the last moves: " << report.residual / largest
             << " of the largest distance)\n"
             << "left on the chord: " << report.undecided << ", edge points interpolated: " << report.edge_fallbacks << "\n";
@@ -148,7 +190,15 @@ int main(int argc, char** argv)
     const std::size_t nv = mesh.number_of_vertices();
     for(int i = 0; i < sources_count; ++i)
       sources.push_back(Vertex(static_cast<Mesh::size_type>(nv * static_cast<std::size_t>(i) / static_cast<std::size_t>(sources_count))));
+    t0 = std::chrono::steady_clock::now();
     solver.compute(discard, sources, VG::parameters::record_paths(true));
+    const double border_plain = seconds_since(t0);
+    t0 = std::chrono::steady_clock::now();
+    solver.compute(discard, sources, VG::parameters::record_paths(record == "paths").record_curves(record != "paths"));
+    const double border_recorded = seconds_since(t0);
+    std::cout << sources_count << " sources: run with record_paths " << border_plain << " s, with record_curves("
+              << (record != "paths") << ") " << border_recorded << " s: " << crossings.size() << " window crossings, "
+              << crossings.bytes() / 1e6 << " MB\n";
     VG::Geodesic_curves_report border_report;
     t0 = std::chrono::steady_clock::now();
     const auto borders = VG::geodesic_cell_borders(solver, VG::parameters::default_values(), &border_report);

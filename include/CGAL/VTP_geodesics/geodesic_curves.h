@@ -25,6 +25,7 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -79,8 +80,10 @@ extract_curves(const Solver& solver, const std::vector<double>* levels, const NP
   typedef Geodesic_curve<typename Solver::face_descriptor, typename Solver::Point_3> Curve;
   const auto& index = solver.mesh_index();
   const Propagation_engine& engine = solver.engine();
-  if(!engine.path_record().is_active())
-    throw Invalid_input_error("curves need the record of the last computation: compute with record_paths(true)");
+  const Face_crossing_record& crossings = engine.face_crossings();
+  if(!engine.path_record().is_active() && !crossings.is_active())
+    throw Invalid_input_error("curves need the record of the last computation: compute with record_curves(true), "
+                              "curve_levels(levels) or record_paths(true)");
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, index.tm));
   const double scale = index.length_scale;
@@ -92,7 +95,18 @@ extract_curves(const Solver& solver, const std::vector<double>* levels, const NP
   for(double& d : distances)
     d /= scale;
   const Mesh_arrays& m = index.arrays;
-  const Curve_field field(m, engine.path_record(), engine.seeds(), distances, engine.labels());
+  if(crossings.is_filtered())
+  {
+    // (a record kept for some levels is exact at those levels only)
+    if(levels == nullptr)
+      throw Invalid_input_error("the cell borders need the record of every window: compute with record_curves(true), "
+                                "not curve_levels()");
+    for(double l : *levels)
+      if(!std::binary_search(crossings.levels().begin(), crossings.levels().end(), l / scale))
+        throw Invalid_input_error("level " + std::to_string(l) + " is not one of the curve_levels() of the computation");
+  }
+  const Curve_field field(m, engine.path_record(), engine.seeds(), distances, engine.labels(),
+                          crossings.is_active() ? &crossings : nullptr);
   Curve_extraction extraction(field, tolerance / scale);
   std::vector<Extracted_curve> curves;
   std::vector<std::pair<Index, Index> > pairs;
@@ -183,7 +197,10 @@ extract_curves(const Solver& solver, const std::vector<double>* levels, const NP
 /// sampled so that the chords are within `chord_tolerance` of the arcs. See the user manual (curves) for
 /// where this is exact and what is done elsewhere.
 ///
-/// \param solver a `Geodesic_distance_solver` whose last computation used `record_paths(true)`
+/// \param solver a `Geodesic_distance_solver` whose last computation kept a record: `curve_levels(levels)` (the
+///   windows that crossed each face and may reach these levels: exact at them), `record_curves(true)` (every
+///   window that crossed a face: exact at every level, and the borders), or `record_paths(true)` (per vertex only:
+///   the candidates that reached the corners, not exact everywhere; see the manual, curves)
 /// \param levels the levels, in the unit of the mesh
 /// \param np optional: `chord_tolerance` (the largest distance of a chord to its arc, default 1e-3 times
 ///   the mean edge length), `vertex_point_map` (default: that of the mesh), `exact_refinement` (a number of

@@ -16,10 +16,12 @@
 
 #include <CGAL/VTP_geodesics/internal/Face_frame.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/curves/Curve_candidate.h>
 #include <CGAL/VTP_geodesics/internal/engine/Path_record.h>
 #include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -30,57 +32,33 @@ namespace CGAL {
 namespace VTP_geodesics {
 namespace internal {
 
-// The distance field inside the faces, from the trace-back record of a computation (Path_record.h).
-//
-// A candidate of a face is a point (x, y) of the plane of the face (its frame, that of half-edge 3f) with a
-// distance `base`: the candidate's distance at a point p of the face is base + |p - (x, y)|. The candidates
+// The distance field inside the faces, from the record of a computation. The candidates (Curve_candidate.h)
 // of face f are
 //  - its corners v, with base D(v) (the path to v, then straight to p: a real path, an upper bound);
-//  - the image of the origin of each corner's recorded offer (Offer: the window through which the geodesic
-//    reached the corner), unfolded into f when the offer came through f itself or through a face sharing an
-//    edge of f at that corner, with base the origin's distance (the offer's distance less |v - image|); a
-//    bent offer gives its bend point instead;
+//  - with the record of the windows that crossed each face (Face_crossings.h: record_curves, curve_levels): those
+//    windows, each a real path to every point of f (straight through its interval, else bent at an end). The
+//    least candidate is then the exact distance (Face_crossings.h says why; the tests check it);
+//  - else, from the trace-back record (Path_record.h), the image of the origin of each corner's recorded offer
+//    (the window through which the geodesic reached the corner), unfolded into f when the offer came through f
+//    itself or through a face sharing an edge of f at that corner, with base the origin's distance; a bent offer
+//    gives its bend point instead. Exact where the geodesic to p comes through one of these images; above it
+//    where it comes through a window that reached no corner of f, below it where an image is used for a point
+//    its window does not see (doc/VTP_geodesics/curves.txt measures how often);
 //  - the sources lying in f (or on its edges), base 0.
-// The field in f is the least candidate distance. It is the exact distance wherever the geodesic to p comes
-// through one of these images (the common case: a face whose corners are reached through the same window,
-// or through windows that also cover p); it can be above it where the geodesic to p comes through a window
-// that reached no corner of f (then a corner's candidate, a real path, bounds it), and below it where an
-// image is used for a point the window does not see (its segment to p leaves the window): the
-// measurements (doc/VTP_geodesics/curves.txt) say how often and by how much.
-struct Curve_candidate
-{
-  double x, y, base;
-  Index label;
-  // an image seen through a window: the window (gx0, gy0) - (gx1, gy1), which the segment from the image to
-  // the point must cross for the candidate to be a path
-  bool gated = false;
-  double gx0 = 0., gy0 = 0., gx1 = 0., gy1 = 0.;
-
-  // whether the candidate is a path to (px, py)
-  bool sees(double px, double py) const
-  {
-    if(!gated)
-      return true;
-    const double dx = px - x, dy = py - y, ex = gx1 - gx0, ey = gy1 - gy0;
-    const double den = dx * ey - dy * ex;
-    if(den == 0.)
-      return false;
-    const double rx = gx0 - x, ry = gy0 - y;
-    const double s = (rx * ey - ry * ex) / den, u = (rx * dy - ry * dx) / den;
-    const double eps = 1e-9;
-    return s >= -eps && s <= 1. + eps && u >= -eps && u <= 1. + eps;
-  }
-};
-
+// The field in f is the least candidate distance.
 class Curve_field
 {
 public:
   // `distances`: per vertex, in the engine's unit (+infinity: unreached); `labels`: the engine's labels if
   // it has them (else empty: the labels are found along the record).
+  // `crossings`: the record of the windows that crossed each face, if the run kept it (else nullptr).
   Curve_field(const Mesh_arrays& m, const Path_record& record, const std::vector<Seed>& seeds,
-              const std::vector<double>& distances, const std::vector<Index>& labels)
-    : m_mesh(m), m_record(record), m_seeds(seeds), m_distance(distances)
+              const std::vector<double>& distances, const std::vector<Index>& labels,
+              const Face_crossing_record* crossings = nullptr)
+    : m_mesh(m), m_record(record), m_seeds(seeds), m_distance(distances), m_crossings(crossings)
   {
+    for(auto& c : m_cache)
+      c.first = NO_INDEX;
     for(std::size_t i = 0; i < seeds.size(); ++i)
     {
       const Seed& s = seeds[i];
@@ -106,6 +84,25 @@ public:
   // the candidates of face f (see above), in the frame of f
   void candidates(Index f, std::vector<Curve_candidate>& out) const
   {
+    if(m_crossings != nullptr)
+    {
+      // (the extraction asks for a face and its neighbours many times: the last few are kept)
+      for(const auto& c : m_cache)
+        if(c.first == f)
+        {
+          out = c.second;
+          return;
+        }
+      build_candidates(f, out);
+      m_cache[m_next_cache] = std::make_pair(f, out);
+      m_next_cache = (m_next_cache + 1) % m_cache.size();
+      return;
+    }
+    build_candidates(f, out);
+  }
+
+  void build_candidates(Index f, std::vector<Curve_candidate>& out) const
+  {
     out.clear();
     const Face_frame frame(m_mesh, f);
     for(int k = 0; k < 3; ++k)
@@ -115,6 +112,8 @@ public:
       if(!(d < std::numeric_limits<double>::infinity()))
         continue;
       out.push_back(Curve_candidate{frame.x[k], frame.y[k], d, label(v)});
+      if(m_crossings != nullptr)
+        continue;  // (the windows that crossed f, below, hold every image the corners' offers would give)
       const Offer& o = m_record.vertex[static_cast<std::size_t>(v)];
       if(o.origin == NO_INDEX)
         continue;
@@ -185,6 +184,8 @@ public:
         out.push_back(q);
       }
     }
+    if(m_crossings != nullptr)
+      add_crossing_candidates(*m_crossings, f, frame, [this](Index origin) { return label_of_origin(origin); }, out);
     auto range = std::equal_range(m_face_seeds.begin(), m_face_seeds.end(), std::make_pair(f, Index(-1)),
                                   [](const std::pair<Index, Index>& a, const std::pair<Index, Index>& b) {
                                     return a.first < b.first;
@@ -196,6 +197,8 @@ public:
       seed_in_face(s, f, x, y);
       out.push_back(Curve_candidate{x, y, 0., s.label});
     }
+    if(m_crossings != nullptr)
+      prune_candidates(frame, out, m_bound);
   }
 
   // whether seed i lies in face f or on its edges
@@ -225,7 +228,7 @@ public:
           }
           else if(pass == 1)
             continue;  // (counted in the first pass)
-          const double d = c[i].base + std::sqrt((x - c[i].x) * (x - c[i].x) + (y - c[i].y) * (y - c[i].y));
+          const double d = c[i].distance_at(x, y);
           if(d < best)
           {
             best = d;
@@ -243,6 +246,11 @@ public:
   const Mesh_arrays& mesh() const { return m_mesh; }
 
 private:
+  Index label_of_origin(Index origin) const
+  {
+    return origin < m_mesh.nv ? label(origin) : m_seeds[static_cast<std::size_t>(origin - m_mesh.nv)].label;
+  }
+
   // The points p[0 .. n-1] of the frame of face g in the frame of f, where g and f are faces around corner k
   // of f: unfolded across the edges at that corner, the way that crosses fewer edges (at most 16).
   bool unfold(Index g, double p[3][2], int n, Index f, int k) const
@@ -400,8 +408,12 @@ private:
   const Path_record& m_record;
   const std::vector<Seed>& m_seeds;
   const std::vector<double>& m_distance;
+  const Face_crossing_record* m_crossings;
   std::vector<Index> m_label;
   std::vector<std::pair<Index, Index> > m_face_seeds;  // (face, seed), sorted
+  mutable std::vector<std::pair<Index, double> > m_bound;  // (prune())
+  mutable std::array<std::pair<Index, std::vector<Curve_candidate> >, 8> m_cache;  // the faces last built
+  mutable std::size_t m_next_cache = 0;
 };
 
 } // namespace internal

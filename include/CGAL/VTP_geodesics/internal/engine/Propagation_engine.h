@@ -94,6 +94,7 @@ public:
     if(settings.known_distances)
       known.move_into(m_state.dist, m_state.label, settings.want_labels);
     threads = propagate(parallel, threads);
+    m_state.crossings.finish(m.nf);
     m_state.direction.finish(m_state.dist);  // the log map behind pseudo-sources
     apply_cutoff();
     if(settings.unit != 1.)
@@ -180,6 +181,9 @@ public:
   const std::vector<Seed>& seeds() const { return m_seeds; }
   const std::vector<Target>& targets() const { return m_virtual_sources ? m_vsp.targets() : m_state.stop.targets(); }
   const Path_record& path_record() const { return m_virtual_sources ? m_vsp.record : m_state.record; }
+  // the windows that crossed each face in the last run (active with settings.record_crossings; not with
+  // virtual sources nor resets)
+  const Face_crossing_record& face_crossings() const { return m_virtual_sources ? m_no_crossings : m_state.crossings; }
   // the log map: its sources (set before a run) and its angles after the run
   Direction_record& direction() { return m_state.direction; }
   const Direction_record& direction() const { return m_state.direction; }
@@ -250,6 +254,7 @@ private:
   Parallel_loop m_parallel;
   Virtual_source_front m_vsp;
   bool m_virtual_sources = false;  // the last run was virtual source propagation
+  Face_crossing_record m_no_crossings;
 };
 
 } // namespace internal

@@ -64,6 +64,7 @@ private:
       st.stop.merge(s.events);
       st.store.update_peaks();
     }
+    st.crossings.gather(s.crossed);
     st.propagated += s.propagated;
     st.created += s.created;
     s.propagated = s.created = 0;

@@ -1,0 +1,135 @@
+// Copyright (c) 2026  VTP_geodesics contributors.
+// All rights reserved.
+//
+// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : VTP_geodesics contributors
+
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_CURVES_CURVE_CANDIDATE_H
+#define CGAL_VTP_GEODESICS_INTERNAL_CURVES_CURVE_CANDIDATE_H
+
+#include <CGAL/license/VTP_geodesics.h>
+
+#include <CGAL/VTP_geodesics/internal/Face_frame.h>
+#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/engine/Face_crossings.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace VTP_geodesics {
+namespace internal {
+
+// A candidate of the field inside a face (Curve_field.h): a point (x, y) of the plane of the face (its frame,
+// that of half-edge 3f) with a distance `base`: the candidate's distance at a point p of the face is base +
+// |p - (x, y)| (or, for a window, bent at an end of its interval where p is not seen through it).
+struct Curve_candidate
+{
+  double x, y, base;
+  Index label;
+  // an image seen through a window: the window (gx0, gy0) - (gx1, gy1), which the segment from the image to
+  // the point must cross for the candidate to be a path
+  bool gated = false;
+  double gx0 = 0., gy0 = 0., gx1 = 0., gy1 = 0.;
+  // a window that crossed the face (Face_crossings.h): straight where the segment from the image to the point
+  // crosses its interval (gx0, gy0) - (gx1, gy1), else bent at the nearer end (e0, e1: the image to the ends)
+  bool window = false;
+  double e0 = 0., e1 = 0., low = 0.;  // (low: base plus the image's distance to the interval)
+
+  // the candidate's distance at (px, py)
+  double distance_at(double px, double py) const
+  {
+    const double dx = px - x, dy = py - y;
+    if(window)
+    {
+      const double ex = gx1 - gx0, ey = gy1 - gy0, rx = gx0 - x, ry = gy0 - y;
+      const double den = dx * ey - dy * ex;
+      const double t = den != 0. ? (rx * dy - ry * dx) / den : -1.;
+      if(!(t >= 0. && t <= 1.))  // (the nearer end gives the lesser of the two)
+      {
+        const double ax = px - gx0, ay = py - gy0, bx = px - gx1, by = py - gy1;
+        return base + (std::min)(e0 + std::sqrt(ax * ax + ay * ay), e1 + std::sqrt(bx * bx + by * by));
+      }
+    }
+    return base + std::sqrt(dx * dx + dy * dy);
+  }
+
+  // whether the candidate is a path to (px, py)
+  bool sees(double px, double py) const
+  {
+    if(!gated)
+      return true;
+    const double dx = px - x, dy = py - y, ex = gx1 - gx0, ey = gy1 - gy0;
+    const double den = dx * ey - dy * ex;
+    if(den == 0.)
+      return false;
+    const double rx = gx0 - x, ry = gy0 - y;
+    const double s = (rx * ey - ry * ex) / den, u = (rx * dy - ry * dx) / den;
+    const double eps = 1e-9;
+    return s >= -eps && s <= 1. + eps && u >= -eps && u <= 1. + eps;
+  }
+};
+
+// The windows that crossed face f (Face_crossings.h), as candidates in the frame of f; `label_of(origin)`: the
+// label of an origin.
+template <class LabelOf>
+void add_crossing_candidates(const Face_crossing_record& crossings, Index f, const Face_frame& frame,
+                             const LabelOf& label_of, std::vector<Curve_candidate>& out)
+{
+  for(const Face_crossing* c = crossings.begin(f); c != crossings.end(f); ++c)
+  {
+    const int k = static_cast<int>(c->halfedge % 3);
+    Curve_candidate q{0., 0., c->sigma, label_of(c->origin)};
+    q.window = true;
+    frame.from_edge_frame(k, c->sx, c->sy, q.x, q.y);
+    frame.from_edge_frame(k, c->b0, 0., q.gx0, q.gy0);
+    frame.from_edge_frame(k, c->b1, 0., q.gx1, q.gy1);
+    const double a = c->b0 - c->sx, b = c->b1 - c->sx, s2 = c->sy * c->sy;
+    q.e0 = std::sqrt(a * a + s2);
+    q.e1 = std::sqrt(b * b + s2);
+    q.low = c->sigma + (c->sx >= c->b0 && c->sx <= c->b1 ? -c->sy : (std::min)(q.e0, q.e1));
+    out.push_back(q);
+  }
+}
+
+// Drops the windows that are nowhere the least of their label in the face: a candidate's distance is convex
+// over the face (largest at a corner), so the least over the candidates of a label of their largest corner
+// value bounds that label's field everywhere in the face; a window whose lower bound is above it never counts.
+// `bound`: scratch.
+inline void prune_candidates(const Face_frame& frame, std::vector<Curve_candidate>& out,
+                             std::vector<std::pair<Index, double> >& bound)
+{
+  bound.clear();
+  for(const Curve_candidate& c : out)
+  {
+    double high = 0.;
+    for(int k = 0; k < 3; ++k)
+      high = (std::max)(high, c.distance_at(frame.x[k], frame.y[k]));
+    auto it = std::find_if(bound.begin(), bound.end(), [&](const std::pair<Index, double>& b) { return b.first == c.label; });
+    if(it == bound.end())
+      bound.emplace_back(c.label, high);
+    else
+      it->second = (std::min)(it->second, high);
+  }
+  out.erase(std::remove_if(out.begin(), out.end(), [&](const Curve_candidate& c) {
+              if(!c.window)
+                return false;
+              for(const auto& b : bound)
+                if(b.first == c.label)
+                  return c.low > b.second * (1. + 1e-12);
+              return false;
+            }), out.end());
+}
+
+} // namespace internal
+} // namespace VTP_geodesics
+} // namespace CGAL
+
+#endif // CGAL_VTP_GEODESICS_INTERNAL_CURVES_CURVE_CANDIDATE_H
