@@ -96,6 +96,20 @@ def test_repaired_mesh():
     for c in split:
         with pytest.raises(ValueError, match="split by the repair"):
             solver.polar_patches([c], 1.0)
+    # centres at points of faces of the repaired mesh: the rows of the single runs from each point
+    faces = np.array([0, 7, F.shape[0] - 1])
+    bary = np.array([[0.2, 0.3, 0.5], [1 / 3, 1 / 3, 1 / 3], [0.6, 0.2, 0.2]])
+    p = solver.polar_patches(points=(faces, bary), radius=math.inf)
+    for i in range(faces.size):
+        point = (faces[i:i + 1], bary[i:i + 1])
+        d = solver.distances(points=point)
+        lm = solver.log_map(points=point)
+        row = slice(p.indptr[i], p.indptr[i + 1])
+        idx = p.indices[row]
+        assert np.array_equal(idx, np.flatnonzero(np.isfinite(d)))
+        assert np.array_equal(p.rho[row], d[idx])
+        gap = np.remainder(p.theta[row] - np.arctan2(lm[idx, 1], lm[idx, 0]) + np.pi, 2 * np.pi) - np.pi
+        assert np.abs(gap[p.rho[row] > 1e-9]).max() < 1e-12
 
 
 @pytest.mark.parametrize("centres, radius, error, message", [
