@@ -63,9 +63,20 @@ std::vector<double> parse_list(const std::string& text)
 
 int main(int argc, char** argv)
 {
-  if(argc < 2)
+  const char* usage =
+    "usage: patch_benchmark MESH [--fractions F,F,...] [--threads T] [--repeats R]\n"
+    "Polar patches around every vertex of MESH, of radius F times the largest distance, on 1 and T threads,\n"
+    "against the per-vertex time of one full run (log map and distance) from vertex 0 on one thread; the\n"
+    "medians of R interleaved runs, one line per measure. Defaults: --fractions 0.05 --threads 2 --repeats 3.\n";
+  for(int i = 1; i < argc; ++i)
+    if(std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h")
+    {
+      std::cout << usage;
+      return 0;
+    }
+  if(argc < 2 || argc % 2 != 0)
   {
-    std::cerr << "usage: patch_benchmark MESH [--fractions F,F,...] [--threads T] [--repeats R]\n";
+    std::cerr << usage;
     return 2;
   }
   std::vector<double> fractions(1, 0.05);

@@ -23,7 +23,8 @@
 //   sampling.cpp   farthest_point_sampling(), with the Voronoi cell areas
 //   straightest.cpp  trace(): straightest geodesics (the exp map), many walks on the solver's threads
 //   log_map.cpp    log_map(): geodesic polar coordinates (VTP, PVTP), in the caller's frames
-//   patches.cpp    polar_patches(): the log map around many centres cut at a radius, CSR arrays
+//   patches.cpp    polar_patches(): the log map around many centres cut at a radius, CSR arrays, Ctrl-C
+//   interrupt.h    Ctrl-C (KeyboardInterrupt) and progress for matrices.cpp and patches.cpp
 //   io.cpp         read_mesh(), symmetric_min_csr(); the conversions of vertex indices, face locations and
 //                  barycentric coordinates between Python's arrays and the library
 //
@@ -163,7 +164,8 @@ public:
   py::tuple locate(const Double_array& P);
 
   // patches.cpp
-  py::tuple polar_patches(const Index_array& centres, double radius, bool strict, int threads);
+  py::tuple polar_patches(const Index_array& centres, const Index_array& point_faces, const Double_array& point_bary,
+                          double radius, bool strict, int threads);
 
   // straightest.cpp
   py::tuple trace(const Index_array& start_vertices, const Index_array& start_faces, const Double_array& start_bary,

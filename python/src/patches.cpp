@@ -7,10 +7,12 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-// Polar patches: Solver.polar_patches() of the package, the log map around many centres cut at a radius, on the
-// solver's threads (the library's Geodesic_distance_solver::compute_each_polar_patch()), as CSR arrays.
+// Polar patches: Solver.polar_patches() of the package, the log map around many centres (vertices and points of
+// faces) cut at a radius, on the solver's threads (the library's Geodesic_distance_solver::compute_each_polar_patch()),
+// as CSR arrays; Ctrl-C as for the distance matrices (interrupt.h).
 
 #include "core_solver.h"
+#include "interrupt.h"
 
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/parameters.h>
@@ -20,17 +22,21 @@
 
 namespace vtp_python {
 
-// The patches of the vertices `centres` of V within `radius`: (indptr int64 (k + 1,), indices int64 (nnz,),
-// rho float64 (nnz,), theta float64 (nnz,)), row i the patch of centres[i], its vertices (rows of V) ascending.
-// A centre must stand for one vertex of the mesh (not a vertex the repair split or dropped); a vertex of V that
-// the repair split appears once in a patch, with the entry of its copy of least rho.
-py::tuple Core_solver::polar_patches(const Index_array& centres, double radius, bool strict, int threads)
+// The patches of the vertices `centres` of V, then of the face locations (point_faces, point_bary), within
+// `radius`: (indptr int64 (k + 1,), indices int64 (nnz,), rho float64 (nnz,), theta float64 (nnz,)), row i the
+// patch of the i-th centre (the vertices first, then the points), its vertices (rows of V) ascending.
+// A centre vertex must stand for one vertex of the mesh (not a vertex the repair split or dropped); a vertex of
+// V that the repair split appears once in a patch, with the entry of its copy of least rho. The theta of a point's
+// patch is in the caller's frame of its face (caller_face_frame(), as log_map() without a reference). Ctrl-C
+// stops the handing out of patches (interrupt.h) and raises KeyboardInterrupt once those under way are done.
+py::tuple Core_solver::polar_patches(const Index_array& centres, const Index_array& point_faces,
+                                     const Double_array& point_bary, double radius, bool strict, int threads)
 {
   if(!(radius >= 0.))
     value_error("radius must be >= 0 (inf for whole log maps), got " + std::to_string(radius));
-  const std::size_t k = static_cast<std::size_t>(centres.size());
-  std::vector<Vertex_index> mesh_centres(k);
-  for(std::size_t i = 0; i < k; ++i)
+  const std::size_t kv = static_cast<std::size_t>(centres.size());
+  std::vector<Vertex_index> mesh_centres(kv);
+  for(std::size_t i = 0; i < kv; ++i)
   {
     const std::size_t v = vertex_of(centres.data()[i], "centres");
     std::vector<Vertex_index> copies;
@@ -41,8 +47,15 @@ py::tuple Core_solver::polar_patches(const Index_array& centres, double radius, 
                                        : " is in no face of the mesh"));
     mesh_centres[i] = copies[0];
   }
+  const std::vector<Face_location> point_centres = locations_of(point_faces, point_bary, "points");
+  std::vector<std::array<double, 4> > frames;
+  for(const Face_location& l : point_centres)
+    frames.push_back(caller_face_frame(l.first));
+  const std::size_t k = kv + point_centres.size();
   std::vector<std::int64_t> indptr(k + 1, 0), indices;
   std::vector<double> rho, theta;
+  Interrupt_check check(k, false);
+  bool interrupted = false;
   {
     py::gil_scoped_release release;
     std::lock_guard<std::mutex> lock(m_mutex);
@@ -51,14 +64,26 @@ py::tuple Core_solver::polar_patches(const Index_array& centres, double radius, 
     std::vector<std::int64_t> best;                          // per caller vertex, its entry in the row, or -1
     if(!m_repairs.empty())
       best.assign(m_n, -1);
-    auto sink = [&](std::size_t i, Vertex_index, const std::vector<std::uint32_t>& v, const std::vector<double>& r,
+    // the angle of an entry of row i: for a point, turned into the caller's frame of its face
+    auto angle = [&](std::size_t i, double t) {
+      if(i < kv)
+        return t;
+      const std::array<double, 4>& m = frames[i - kv];
+      const double c = std::cos(t), s = std::sin(t);
+      double a = std::atan2(m[2] * c + m[3] * s, m[0] * c + m[1] * s);
+      if(a < 0.)
+        a += 2. * CGAL_PI;
+      return a < 2. * CGAL_PI ? a : 0.;
+    };
+    auto sink = [&](std::size_t i, const std::vector<std::uint32_t>& v, const std::vector<double>& r,
                     const std::vector<double>& t) {
       start[i] = indices.size();
       if(m_repairs.empty())
       {
         indices.insert(indices.end(), v.begin(), v.end());
         rho.insert(rho.end(), r.begin(), r.end());
-        theta.insert(theta.end(), t.begin(), t.end());
+        for(double x : t)
+          theta.push_back(angle(i, x));
       }
       else
       {
@@ -81,40 +106,61 @@ py::tuple Core_solver::polar_patches(const Index_array& centres, double radius, 
           best[p.first] = -1;
           indices.push_back(static_cast<std::int64_t>(p.first));
           rho.push_back(r[p.second]);
-          theta.push_back(t[p.second]);
+          theta.push_back(angle(i, t[p.second]));
         }
       }
       count[i] = indices.size() - start[i];
+      check.row_done();
     };
     const auto np = VTP::parameters::number_of_threads(threads_or_default(threads)).log_map_strict(strict);
+    auto run = [&](const auto& items, std::size_t offset) {
+      if(items.empty())
+        return;
+      auto offset_sink = [&](std::size_t i, const auto&, const std::vector<std::uint32_t>& v,
+                             const std::vector<double>& r, const std::vector<double>& t) { sink(offset + i, v, r, t); };
 #ifdef _OPENMP
-    m_solver->compute_each_polar_patch<CGAL::Parallel_tag>(mesh_centres, radius, sink, np);
+      m_solver->compute_each_polar_patch<CGAL::Parallel_tag>(items, radius, offset_sink, np);
 #else
-    m_solver->compute_each_polar_patch<CGAL::Sequential_tag>(mesh_centres, radius, sink, np);
+      m_solver->compute_each_polar_patch<CGAL::Sequential_tag>(items, radius, offset_sink, np);
 #endif
-    m_statistics = m_solver->statistics();
-    for(std::size_t i = 0; i < k; ++i)
-      indptr[i + 1] = indptr[i] + static_cast<std::int64_t>(count[i]);
-    // the rows in the order of the centres (they came in any order)
-    bool in_order = true;
-    for(std::size_t i = 0; i < k; ++i)
-      in_order = in_order && start[i] == static_cast<std::size_t>(indptr[i]);
-    if(!in_order)
+    };
+    try
     {
-      std::vector<std::int64_t> ordered_indices(indices.size());
-      std::vector<double> ordered_rho(rho.size()), ordered_theta(theta.size());
+      run(mesh_centres, 0);
+      run(point_centres, kv);
+    }
+    catch(const Python_error_pending&)
+    {
+      interrupted = true;
+    }
+    m_statistics = m_solver->statistics();
+    if(!interrupted)
+    {
       for(std::size_t i = 0; i < k; ++i)
+        indptr[i + 1] = indptr[i] + static_cast<std::int64_t>(count[i]);
+      // the rows in the order of the centres (they came in any order)
+      bool in_order = true;
+      for(std::size_t i = 0; i < k; ++i)
+        in_order = in_order && start[i] == static_cast<std::size_t>(indptr[i]);
+      if(!in_order)
       {
-        const std::size_t to = static_cast<std::size_t>(indptr[i]);
-        std::copy_n(indices.begin() + static_cast<std::ptrdiff_t>(start[i]), count[i], ordered_indices.begin() + static_cast<std::ptrdiff_t>(to));
-        std::copy_n(rho.begin() + static_cast<std::ptrdiff_t>(start[i]), count[i], ordered_rho.begin() + static_cast<std::ptrdiff_t>(to));
-        std::copy_n(theta.begin() + static_cast<std::ptrdiff_t>(start[i]), count[i], ordered_theta.begin() + static_cast<std::ptrdiff_t>(to));
+        std::vector<std::int64_t> ordered_indices(indices.size());
+        std::vector<double> ordered_rho(rho.size()), ordered_theta(theta.size());
+        for(std::size_t i = 0; i < k; ++i)
+        {
+          const std::size_t to = static_cast<std::size_t>(indptr[i]);
+          std::copy_n(indices.begin() + static_cast<std::ptrdiff_t>(start[i]), count[i], ordered_indices.begin() + static_cast<std::ptrdiff_t>(to));
+          std::copy_n(rho.begin() + static_cast<std::ptrdiff_t>(start[i]), count[i], ordered_rho.begin() + static_cast<std::ptrdiff_t>(to));
+          std::copy_n(theta.begin() + static_cast<std::ptrdiff_t>(start[i]), count[i], ordered_theta.begin() + static_cast<std::ptrdiff_t>(to));
+        }
+        indices.swap(ordered_indices);
+        rho.swap(ordered_rho);
+        theta.swap(ordered_theta);
       }
-      indices.swap(ordered_indices);
-      rho.swap(ordered_rho);
-      theta.swap(ordered_theta);
     }
   }
+  if(interrupted)
+    check.error.restore_and_throw();
   auto to_array = [](auto& v) {
     typedef typename std::decay<decltype(v)>::type::value_type T;
     py::array_t<T> a(static_cast<py::ssize_t>(v.size()));

@@ -1,9 +1,13 @@
 # Polar patches of the Python module: Solver.polar_patches() against distances() with the same max_distance (rho
 # bitwise, the same vertices), the plane (rho and theta Euclidean), threads = one thread, strict, a repaired mesh,
-# bad input.
+# bad input; centres at points of faces (rows = the single log_map() and distances() runs from the point); Ctrl-C.
 
+import _thread
 import math
 import os
+import resource
+import threading
+import time
 
 import numpy as np
 import pytest
@@ -92,6 +96,20 @@ def test_repaired_mesh():
     for c in split:
         with pytest.raises(ValueError, match="split by the repair"):
             solver.polar_patches([c], 1.0)
+    # centres at points of faces of the repaired mesh: the rows of the single runs from each point
+    faces = np.array([0, 7, F.shape[0] - 1])
+    bary = np.array([[0.2, 0.3, 0.5], [1 / 3, 1 / 3, 1 / 3], [0.6, 0.2, 0.2]])
+    p = solver.polar_patches(points=(faces, bary), radius=math.inf)
+    for i in range(faces.size):
+        point = (faces[i:i + 1], bary[i:i + 1])
+        d = solver.distances(points=point)
+        lm = solver.log_map(points=point)
+        row = slice(p.indptr[i], p.indptr[i + 1])
+        idx = p.indices[row]
+        assert np.array_equal(idx, np.flatnonzero(np.isfinite(d)))
+        assert np.array_equal(p.rho[row], d[idx])
+        gap = np.remainder(p.theta[row] - np.arctan2(lm[idx, 1], lm[idx, 0]) + np.pi, 2 * np.pi) - np.pi
+        assert np.abs(gap[p.rho[row] > 1e-9]).max() < 1e-12
 
 
 @pytest.mark.parametrize("centres, radius, error, message", [
@@ -115,3 +133,129 @@ def test_empty_and_infinite(elephant):
     p = solver.polar_patches(3, math.inf)
     d = solver.distances(3)
     assert np.array_equal(p.rho, d[p.indices]) and p.indices.size == np.isfinite(d).sum()
+
+
+def _face_points(solver, V, F, count, seed):
+    rng = np.random.default_rng(seed)
+    faces = rng.integers(0, F.shape[0], count)
+    bary = rng.random((count, 3)) + 0.05
+    bary /= bary.sum(axis=1, keepdims=True)
+    bary[0] = [1 / 3, 1 / 3, 1 / 3]
+    bary[1] = [0.5, 0.5, 0.]  # on an edge
+    return faces, bary
+
+
+def test_point_rows_equal_single_log_maps(elephant):
+    # each row of a point centre: the vertices and rho of distances(points=..., max_distance=radius) (bitwise),
+    # theta that of log_map(points=..., max_distance=radius) from the same point (its frame: F[face][0] ->
+    # F[face][1]), to rounding
+    V, F, solver = elephant
+    radius = 0.07 * solver.distances(0).max()
+    faces, bary = _face_points(solver, V, F, 12, seed=5)
+    p = solver.polar_patches(points=(faces, bary), radius=radius)
+    assert p.indptr.shape == (faces.size + 1,) and p.indptr[-1] == p.indices.size
+    for i in range(faces.size):
+        point = (faces[i:i + 1], bary[i:i + 1])
+        d = solver.distances(points=point, max_distance=radius)
+        lm = solver.log_map(points=point, max_distance=radius)
+        row = slice(p.indptr[i], p.indptr[i + 1])
+        idx = p.indices[row]
+        assert idx.size > 3
+        assert np.array_equal(idx, np.flatnonzero(np.isfinite(d)))
+        assert np.array_equal(idx, np.flatnonzero(np.isfinite(lm[:, 0])))
+        assert np.array_equal(p.rho[row], d[idx])
+        assert np.abs(np.hypot(lm[idx, 0], lm[idx, 1]) - p.rho[row]).max() < 1e-12 * radius + 1e-15
+        assert (p.theta[row] >= 0).all() and (p.theta[row] < 2 * np.pi).all()
+        t = np.arctan2(lm[idx, 1], lm[idx, 0])
+        gap = np.remainder(p.theta[row] - t + np.pi, 2 * np.pi) - np.pi
+        assert np.abs(gap[p.rho[row] > 1e-9 * radius]).max() < 1e-12
+
+
+def test_vertices_then_points(elephant):
+    # one call with both: the vertex rows, then the point rows, each as in a call of its own; xyz points are
+    # located as locate() does; the threads do not change a bit
+    V, F, solver = elephant
+    radius = 0.05 * solver.distances(0).max()
+    faces, bary = _face_points(solver, V, F, 6, seed=9)
+    centres = [5, 900, 5]
+    both = solver.polar_patches(centres, radius, points=(faces, bary))
+    a = solver.polar_patches(centres, radius)
+    b = solver.polar_patches(points=(faces, bary), radius=radius)
+    assert np.array_equal(both.indptr, np.concatenate([a.indptr, b.indptr[1:] + a.indptr[-1]]))
+    for k in ("indices", "rho", "theta"):
+        assert np.array_equal(getattr(both, k), np.concatenate([getattr(a, k), getattr(b, k)]))
+    xyz = np.einsum("kj,kjd->kd", bary, V[F[faces]])
+    lf, lb = solver.locate(xyz)
+    c = solver.polar_patches(points=xyz, radius=radius)
+    d = solver.polar_patches(points=(lf, lb), radius=radius)
+    for x, y in zip(c, d):
+        assert np.array_equal(x, y)
+    for strict in (False, True):
+        one = solver.polar_patches(centres, radius, points=(faces, bary), threads=1, strict=strict)
+        two = solver.polar_patches(centres, radius, points=(faces, bary), threads=2, strict=strict)
+        for x, y in zip(one, two):
+            assert np.array_equal(x, y)
+
+
+def test_points_on_the_plane():
+    # a point inside a face of a flat grid: rho the Euclidean distance, theta the Euclidean angle from
+    # F[face][0] -> F[face][1]
+    V, F = plane_grid(15, 15, jitter=0.3, seed=3)
+    solver = vtp_geodesics.Solver(V, F)
+    face = 200
+    bary = np.array([[0.2, 0.3, 0.5]])
+    x = bary @ V[F[face]]
+    p = solver.polar_patches(points=([face], bary), radius=0.3)
+    e = V[p.indices, :2] - x[0, :2]
+    assert np.allclose(p.rho, np.hypot(e[:, 0], e[:, 1]), rtol=0, atol=1e-12)
+    axis = V[F[face, 1], :2] - V[F[face, 0], :2]
+    if np.cross(V[F[face, 1]] - V[F[face, 0]], V[F[face, 2]] - V[F[face, 0]])[2] < 0:
+        e[:, 1] = -e[:, 1]  # the faces' orientation points down: angles counter-clockwise seen from below
+        axis[1] = -axis[1]
+    phi = np.arctan2(e[:, 1], e[:, 0]) - np.arctan2(axis[1], axis[0])
+    gap = np.remainder(p.theta - phi + np.pi, 2 * np.pi) - np.pi
+    assert np.abs(gap).max() < 1e-12
+
+
+@pytest.mark.parametrize("kwargs, error, message", [
+    (dict(points=([100000], [[1., 0., 0.]]), radius=0.1), ValueError, "out of range"),
+    (dict(points=([0], [[0.5, 0.6, 0.]]), radius=0.1), ValueError, "barycentric"),
+    (dict(points=([0], [[0.5, 0.5]]), radius=0.1), ValueError, "shape"),
+    (dict(points=([0], [[1., 0., 0.]])), TypeError, "radius"),
+])
+def test_bad_points(elephant, kwargs, error, message):
+    V, F, solver = elephant
+    with pytest.raises(error, match=message):
+        solver.polar_patches(**kwargs)
+
+
+def test_keyboard_interrupt_stops_the_patches():
+    # whole log maps around every vertex of a 4900-vertex grid, four times: several seconds at least
+    V, F = plane_grid(70, 70, jitter=0.3)
+    solver = vtp_geodesics.Solver(V, F, threads=2)
+    centres = np.tile(np.arange(len(V)), 4)
+    threads_before = threading.active_count()
+    sent = []
+
+    def interrupt():
+        sent.append(time.monotonic())
+        _thread.interrupt_main()
+
+    timer = threading.Timer(0.5, interrupt)
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        solver.polar_patches(centres, math.inf, points=([0], [[1 / 3, 1 / 3, 1 / 3]]))
+    stopped = time.monotonic() - sent[0]
+    timer.join()
+    print("patches stopped %.3f s after the interrupt" % stopped)
+    assert stopped < 2.0, "the patches stopped %.2f s after the interrupt" % stopped
+    assert threading.active_count() == threads_before
+    # nothing keeps computing after the call returned
+    time.sleep(0.2)
+    cpu0 = resource.getrusage(resource.RUSAGE_SELF)
+    time.sleep(0.5)
+    cpu1 = resource.getrusage(resource.RUSAGE_SELF)
+    assert (cpu1.ru_utime - cpu0.ru_utime) + (cpu1.ru_stime - cpu0.ru_stime) < 0.25
+    # and the solver still works
+    p = solver.polar_patches([3], math.inf)
+    assert np.array_equal(p.rho, solver.distances(3)[p.indices])
