@@ -274,8 +274,40 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
   // The curves, from the same record (not after runs through the split vertices: the arguments refuse
   // --curves-output with them, and the picture then interpolates its isolines)
   if(request.wants_curves() && !label_of_source.empty() && request.joined_copies.empty())
-    r.curves = extract_curve_sets(solver, curve_request(solver, request, label_of_source.size() > 1),
-                                  label_of_source);
+  {
+    const Curve_request all = curve_request(solver, request, label_of_source.size() > 1);
+    std::vector<double> levels(all.output_levels);
+    levels.insert(levels.end(), all.picture_levels.begin(), all.picture_levels.end());
+    if(levels.empty() || method.virtual_sources || method.approximate)
+      r.curves = extract_curve_sets(solver, all, label_of_source);
+    else
+    {
+      // The borders from this run's record (per vertex); the isolines exact, from a second run with the same
+      // sources, stop and limit that keeps the windows crossing the faces at their levels (curve_levels(),
+      // geodesic_curves.h), and the trace-back for the paths below.
+      Curve_request borders = all, isolines = all;
+      borders.output_levels.clear();
+      borders.picture_levels.clear();
+      isolines.output_borders = isolines.picture_borders = false;
+      std::vector<Curve_set> border_sets;
+      if(borders.output_borders || borders.picture_borders)
+        border_sets = extract_curve_sets(solver, borders, label_of_source);
+      std::sort(levels.begin(), levels.end());
+      levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+      vtp_support::with_method(method, lambda, request.threads, [&](auto tag, const auto& method_np) {
+        typedef decltype(tag) Tag;
+        const CGAL::Constant_property_map<vtp_support::Vertex_index, double> no_map;
+        solver.compute<Tag>(no_map, method_np.lambda_g(request.lambda_g)
+                                      .maximum_distance(request.max_distance)
+                                      .targets(targets)
+                                      .stop_at_targets(request.stop_at_targets)
+                                      .record_paths(!request.paths.empty())
+                                      .curve_levels(levels));
+      });
+      r.curves = extract_curve_sets(solver, isolines, label_of_source);
+      r.curves.insert(r.curves.end(), border_sets.begin(), border_sets.end());
+    }
+  }
 
   // The paths, from the trace-back recorded by the run; a vertex path from its copy nearest to a source.
   const std::string beyond = request.max_distance < infinity ? " (or it lies beyond --max-distance)" : "";
