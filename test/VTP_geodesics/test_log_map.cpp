@@ -6,7 +6,6 @@
 #include "vtp_test_meshes.h"
 
 #include <CGAL/VTP_geodesics.h>
-#include <CGAL/VTP_geodesics/internal/Fast_atan2.h>
 #include <CGAL/VTP_geodesics/internal/Tangent_frame.h>
 #include <CGAL/VTP_geodesics/internal/solver/Mesh_import.h>
 
@@ -50,40 +49,6 @@ struct Frame_test_mesh
 };
 
 double angle_difference(double a, double b) { return std::abs(std::remainder(a - b, 2. * PI)); }
-
-// fast_atan2 (the log map's inner loops) against the libm function: within 4 units in the last place of
-// the result over random vectors of every octant, magnitudes from 1e-300 to 1e300, near the diagonals and
-// the axes; zeros, infinities and NaNs as std::atan2.
-TEST(FastAtan2, WithinFourUlpsOfTheLibmAtan2)
-{
-  std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> unit(-1., 1.), exponent(-300., 300.);
-  double worst = 0.;
-  for(int i = 0; i < 2000000; ++i)
-  {
-    double x = unit(rng), y = unit(rng);
-    if(i % 3 == 0)
-      x *= std::pow(10., exponent(rng));
-    if(i % 5 == 0)
-      y *= std::pow(10., exponent(rng));
-    if(i % 7 == 0)
-      y = x * (1. + 1e-13 * unit(rng));  // the diagonals
-    if(i % 11 == 0)
-      y = x * 1e-9 * unit(rng);          // near the x-axis
-    const double expected = std::atan2(y, x), got = VI::fast_atan2(y, x);
-    const double ulp = std::nextafter(std::fabs(expected), 10.) - std::fabs(expected);
-    if(expected != 0.)
-      worst = (std::max)(worst, std::fabs(got - expected) / ulp);
-    ASSERT_LE(std::fabs(got - expected), 4. * ulp) << "atan2(" << y << ", " << x << ")";
-  }
-  EXPECT_GT(worst, 0.);  // (the fast one is not the libm one)
-  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
-  for(double y : {0., -0., 1., -1., inf, -inf})
-    for(double x : {0., -0., 1., -1., inf, -inf})
-      EXPECT_EQ(VI::fast_atan2(y, x), std::atan2(y, x)) << "atan2(" << y << ", " << x << ")";
-  EXPECT_TRUE(std::isnan(VI::fast_atan2(nan, 1.)));
-  EXPECT_TRUE(std::isnan(VI::fast_atan2(1., nan)));
-}
 
 // angle_in_0_2pi: its fast paths give fmod's values
 TEST(TangentFrame, AngleIn0To2PiAsFmod)

@@ -15,7 +15,6 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
-#include <CGAL/VTP_geodesics/internal/Fast_atan2.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
 
 #include <CGAL/assertions.h>
@@ -65,7 +64,7 @@ inline Index cw_outgoing(const Mesh_arrays& a, Index h)
 inline double corner_angle_of(const Mesh_arrays& a, Index h)
 {
   const Halfedge_geometry g = a.geometry[h];
-  return fast_atan2(g.cy, g.cx);
+  return std::atan2(g.cy, g.cx);
 }
 
 // The direction of half-edge g (of the face of h) in the frame of h (A = source(h) at the origin, h along
@@ -77,8 +76,8 @@ inline double halfedge_direction_in_frame(const Mesh_arrays& a, Index h, Index g
     return 0.;
   const Halfedge_geometry q = a.geometry[h];
   if(g == Mesh_arrays::next(h))
-    return fast_atan2(q.cy, q.cx - q.length);  // B -> C
-  return fast_atan2(-q.cy, -q.cx);             // C -> A
+    return std::atan2(q.cy, q.cx - q.length);  // B -> C
+  return std::atan2(-q.cy, -q.cx);             // C -> A
 }
 
 // The same direction as a vector (not of unit length): cheaper where only angles between vectors are needed.
@@ -245,7 +244,7 @@ inline double planar_angle_3d(const Vector_3d& d, const Vector_3d& x, const Vect
   const double u = dot_3d(d, x), v = dot_3d(d, y);
   if(!(u * u + v * v > 1e-24 * dot_3d(d, d)))
     throw Invalid_input_error(std::string(what) + " is orthogonal to the tangent plane");
-  return fast_atan2(v, u);
+  return std::atan2(v, u);
 }
 
 // theta of the 3D direction d in the frame of face f, whose corners source(3f), target(3f) and the third
@@ -302,7 +301,7 @@ double vertex_theta_of_3d(const Mesh_arrays& a, const Vertex_frame& frame, const
   for(std::size_t i = 1; i <= n; ++i)
   {
     const double u = dot_3d(edge[i], x), v = dot_3d(edge[i], y);
-    e[i] = angle_in_0_2pi(fast_atan2(v, u));
+    e[i] = angle_in_0_2pi(std::atan2(v, u));
   }
   if(!frame.border)
     e[n] = two_pi;

@@ -14,7 +14,6 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
-#include <CGAL/VTP_geodesics/internal/Fast_atan2.h>
 #include <CGAL/VTP_geodesics/internal/List_filter.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/Window.h>
@@ -151,7 +150,7 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
   const double uax = lac > 0. ? cx / lac : 0., uay = lac > 0. ? cy / lac : 0.;
   const double ubx = lcb > 0. ? (L - cx) / lcb : 0., uby = lcb > 0. ? -cy / lcb : 0.;
   const double min_ac = min_ratio * lac, min_cb = min_ratio * lcb;
-  const double turn_ac = want_angles ? fast_atan2(uay, uax) : 0., turn_cb = want_angles ? fast_atan2(uby, ubx) : 0.;
+  const double turn_ac = want_angles ? std::atan2(uay, uax) : 0., turn_cb = want_angles ? std::atan2(uby, ubx) : 0.;
 
   for(std::size_t i = 0; i < n; ++i)
   {
@@ -183,7 +182,7 @@ inline void emit_whole_edge(double t, double sigma, Index origin, double ox, dou
   Window c;
   rotate_into(t - ox, -oy, ux, uy, c.sx, c.sy);
   c.sigma = sigma;
-  c.angle = angle + fast_atan2(uy, ux);
+  c.angle = angle + std::atan2(uy, ux);
   c.origin = origin;
   c.b0 = 0.;
   c.b1 = lc;

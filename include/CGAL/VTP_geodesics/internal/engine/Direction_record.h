@@ -45,8 +45,7 @@ namespace internal {
 //   P(s) + |s v| (cos gamma, sin gamma) of the tangent plane, P(s) = rho(s) (cos theta(s), sin theta(s)),
 //   and theta(v) its angle (rho stays the distance). With `strict`, theta(v) = theta(s) (polyhedral).
 //
-// Cost: an offer (a distance lowered) costs one atan2 (fast_atan2(), Fast_atan2.h, as all the atan2 of the
-// log map's loops); behind a pseudo-source, theta(v) is found once per
+// Cost: an offer (a distance lowered) costs one atan2; behind a pseudo-source, theta(v) is found once per
 // vertex after the run (finish()): until then theta[v] holds gamma and the sign bit of turn[v] says so, and
 // |s v| is D(v) - D(s) (the offer's distance is D(s) plus it). The turning angle of a pseudo-source needs the
 // angle of the incoming ray in its fan: products of unit vectors around the fan, two atan2, no atan2 per
@@ -172,7 +171,7 @@ public:
       bool border = false;
       double sum = 0., phi = 0.;
       fan_angles(r.g, border, sum, phi);
-      const double beta_in = phi + fast_atan2(r.gy * r.dx - r.gx * r.dy, -(r.gx * r.dx + r.gy * r.dy));
+      const double beta_in = phi + std::atan2(r.gy * r.dx - r.gx * r.dy, -(r.gx * r.dx + r.gy * r.dy));
       turning = static_cast<float>(angle_in_0_2pi(a - (beta_in + (border ? TANGENT_FRAME_PI : 0.5 * sum))));
     }
     turning = std::fabs(turning);  // (+0 for -0 or a NaN's sign: the sign bit is the flag below)
@@ -187,7 +186,7 @@ public:
     const Mesh_arrays& m = *m_mesh;
     if(r.origin != NO_INDEX)
       origin = r.origin;
-    const double gamma = r.angle + fast_atan2(r.dy, r.dx);
+    const double gamma = r.angle + std::atan2(r.dy, r.dx);
     t = a = gamma;
     last = NO_INDEX;
     if(origin >= m.nv)
@@ -230,7 +229,7 @@ public:
           continue;
         const double rho = dist[s], run = dist[u] - rho, t = theta[s], gamma = theta[u];
         if(rho < std::numeric_limits<double>::infinity() && run < std::numeric_limits<double>::infinity())
-          theta[u] = fast_atan2(rho * std::sin(t) + run * std::sin(gamma), rho * std::cos(t) + run * std::cos(gamma));
+          theta[u] = std::atan2(rho * std::sin(t) + run * std::sin(gamma), rho * std::cos(t) + run * std::cos(gamma));
       }
     }
   }
@@ -388,7 +387,7 @@ private:
 
   static double product_angle(double zx, double zy, int turns)
   {
-    double a = fast_atan2(zy, zx);
+    double a = std::atan2(zy, zx);
     if(a < 0.)
       a += 2. * TANGENT_FRAME_PI;
     return 2. * TANGENT_FRAME_PI * turns + a;

@@ -194,7 +194,7 @@ public:
       if(angles)
       {
         const Halfedge_geometry gh = m.geometry[h];
-        angle = Direction_record::angle_of(m_angles, h) + fast_atan2(-gh.cy, gh.length - gh.cx);
+        angle = Direction_record::angle_of(m_angles, h) + std::atan2(-gh.cy, gh.length - gh.cx);
       }
       if(m.is_degenerate_face[Mesh_arrays::face(h)])
       {
@@ -252,13 +252,13 @@ public:
       if(t < g.cx)
       {
         o = h_ac;            // A -> C, same abscissa
-        angle += fast_atan2(g.cy, g.cx);
+        angle += std::atan2(g.cy, g.cx);
       }
       else if(t > g.cx)
       {
         o = h_cb;            // C -> B, from C
         t -= g.cx;
-        angle += fast_atan2(-g.cy, g.length - g.cx);
+        angle += std::atan2(-g.cy, g.length - g.cx);
       }
       else
         return;              // the point is C itself
