@@ -75,3 +75,34 @@ def tool():
     if not path or not os.path.exists(path):
         pytest.skip("VTP_GEODESICS_TOOL is not set to the built vtp_geodesics tool")
     return path
+
+
+def assert_interrupt_stops(call, what):
+    """Runs call() (a computation of several seconds), sends Ctrl-C (KeyboardInterrupt) after 0.5 s, and checks
+    that it stops within 2 s, leaves no thread behind and nothing computing after it returned."""
+    import _thread
+    import resource
+    import threading
+    import time
+    threads_before = threading.active_count()
+    sent = []
+
+    def interrupt():
+        sent.append(time.monotonic())
+        _thread.interrupt_main()
+
+    timer = threading.Timer(0.5, interrupt)
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        call()
+    stopped = time.monotonic() - sent[0]
+    timer.join()
+    print("%s stopped %.3f s after the interrupt" % (what, stopped))
+    assert stopped < 2.0, "the %s stopped %.2f s after the interrupt" % (what, stopped)
+    assert threading.active_count() == threads_before
+    # nothing keeps computing after the call returned: the process uses (almost) no processor time
+    time.sleep(0.2)
+    cpu0 = resource.getrusage(resource.RUSAGE_SELF)
+    time.sleep(0.5)
+    cpu1 = resource.getrusage(resource.RUSAGE_SELF)
+    assert (cpu1.ru_utime - cpu0.ru_utime) + (cpu1.ru_stime - cpu0.ru_stime) < 0.25

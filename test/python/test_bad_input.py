@@ -1,18 +1,14 @@
 # Bad input raises ValueError or TypeError naming the problem, and never crashes the interpreter; Ctrl-C during
 # a matrix stops it.
 
-import _thread
 import os
-import resource
-import threading
-import time
 
 import numpy as np
 import pytest
 
 import vtp_geodesics
 from vtp_geodesics import gdist, pygeodesic
-from conftest import plane_grid
+from conftest import assert_interrupt_stops, plane_grid
 
 V0, F0 = plane_grid(6, 6)
 
@@ -138,27 +134,6 @@ def test_keyboard_interrupt_stops_a_matrix():
     V, F = plane_grid(70, 70, jitter=0.3)
     solver = vtp_geodesics.Solver(V, F, threads=2)
     sources = np.tile(np.arange(len(V)), 4)
-    threads_before = threading.active_count()
-    sent = []
-
-    def interrupt():
-        sent.append(time.monotonic())
-        _thread.interrupt_main()
-
-    timer = threading.Timer(0.5, interrupt)
-    timer.start()
-    with pytest.raises(KeyboardInterrupt):
-        solver.matrix(sources, dtype=np.float32)
-    stopped = time.monotonic() - sent[0]
-    timer.join()
-    print("matrix stopped %.3f s after the interrupt" % stopped)
-    assert stopped < 2.0, "the matrix stopped %.2f s after the interrupt" % stopped
-    assert threading.active_count() == threads_before
-    # nothing keeps computing after the call returned: the process uses (almost) no processor time
-    time.sleep(0.2)
-    cpu0 = resource.getrusage(resource.RUSAGE_SELF)
-    time.sleep(0.5)
-    cpu1 = resource.getrusage(resource.RUSAGE_SELF)
-    assert (cpu1.ru_utime - cpu0.ru_utime) + (cpu1.ru_stime - cpu0.ru_stime) < 0.25
+    assert_interrupt_stops(lambda: solver.matrix(sources, dtype=np.float32), "matrix")
     # and the solver still works
     assert np.array_equal(solver.matrix([3])[0], solver.distances(3))

@@ -2,18 +2,14 @@
 # bitwise, the same vertices), the plane (rho and theta Euclidean), threads = one thread, strict, a repaired mesh,
 # bad input; centres at points of faces (rows = the single log_map() and distances() runs from the point); Ctrl-C.
 
-import _thread
 import math
 import os
-import resource
-import threading
-import time
 
 import numpy as np
 import pytest
 
 import vtp_geodesics
-from conftest import data_file, plane_grid
+from conftest import assert_interrupt_stops, data_file, plane_grid
 
 
 def test_rows_equal_single_runs(elephant):
@@ -234,28 +230,8 @@ def test_keyboard_interrupt_stops_the_patches():
     V, F = plane_grid(70, 70, jitter=0.3)
     solver = vtp_geodesics.Solver(V, F, threads=2)
     centres = np.tile(np.arange(len(V)), 4)
-    threads_before = threading.active_count()
-    sent = []
-
-    def interrupt():
-        sent.append(time.monotonic())
-        _thread.interrupt_main()
-
-    timer = threading.Timer(0.5, interrupt)
-    timer.start()
-    with pytest.raises(KeyboardInterrupt):
-        solver.polar_patches(centres, math.inf, points=([0], [[1 / 3, 1 / 3, 1 / 3]]))
-    stopped = time.monotonic() - sent[0]
-    timer.join()
-    print("patches stopped %.3f s after the interrupt" % stopped)
-    assert stopped < 2.0, "the patches stopped %.2f s after the interrupt" % stopped
-    assert threading.active_count() == threads_before
-    # nothing keeps computing after the call returned
-    time.sleep(0.2)
-    cpu0 = resource.getrusage(resource.RUSAGE_SELF)
-    time.sleep(0.5)
-    cpu1 = resource.getrusage(resource.RUSAGE_SELF)
-    assert (cpu1.ru_utime - cpu0.ru_utime) + (cpu1.ru_stime - cpu0.ru_stime) < 0.25
+    assert_interrupt_stops(
+        lambda: solver.polar_patches(centres, math.inf, points=([0], [[1 / 3, 1 / 3, 1 / 3]])), "patches")
     # and the solver still works
     p = solver.polar_patches([3], math.inf)
     assert np.array_equal(p.rho, solver.distances(3)[p.indices])
