@@ -61,6 +61,36 @@ struct Curve_candidate
     return base + std::sqrt(dx * dx + dy * dy);
   }
 
+  // the piece of the candidate's distance that holds at (px, py), as in distance_at(): there the distance is
+  // b + |p - (cx, cy)| (the image, or the end of the interval the path bends at)
+  void active_circle(double px, double py, double& cx, double& cy, double& b) const
+  {
+    cx = x;
+    cy = y;
+    b = base;
+    if(!window)
+      return;
+    const double dx = px - x, dy = py - y;
+    const double ex = gx1 - gx0, ey = gy1 - gy0, rx = gx0 - x, ry = gy0 - y;
+    const double den = dx * ey - dy * ex;
+    const double t = den != 0. ? (rx * dy - ry * dx) / den : -1.;
+    if(t >= 0. && t <= 1.)
+      return;
+    const double ax = px - gx0, ay = py - gy0, bx = px - gx1, by = py - gy1;
+    if(e0 + std::sqrt(ax * ax + ay * ay) <= e1 + std::sqrt(bx * bx + by * by))
+    {
+      cx = gx0;
+      cy = gy0;
+      b = base + e0;
+    }
+    else
+    {
+      cx = gx1;
+      cy = gy1;
+      b = base + e1;
+    }
+  }
+
   // whether the candidate is a path to (px, py)
   bool sees(double px, double py) const
   {

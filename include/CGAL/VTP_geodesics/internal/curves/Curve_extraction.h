@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <unordered_map>
@@ -64,6 +65,8 @@ public:
       sorted[i] = levels[order[i]];
     std::vector<Curve_piece> pieces;
     std::vector<Curve_candidate> c;
+    m_number_of_sets = (std::max)(levels.size(), std::size_t(1));
+    m_edge_crossings.clear();
     for(Index f = 0; f < m.nf; ++f)
     {
       double d[3];
@@ -81,9 +84,16 @@ public:
       if(first == sorted.end() || !(*first <= hi))
         continue;
       field.candidates(f, c);
+      const double longest = (std::max)({ m.geometry[3 * f].length, m.geometry[3 * f + 1].length,
+                                          m.geometry[3 * f + 2].length });
       for(auto it = first; it != sorted.end() && *it <= hi; ++it)
+      {
+        // (an interior point is close enough to its level at a few units of rounding of the distances there)
+        m_pieces.set_value_tolerance(4e-15 * (*it + longest));
         face_isoline(f, c, d, *it, static_cast<Index>(order[static_cast<std::size_t>(it - sorted.begin())]), pieces);
+      }
     }
+    m_edge_crossings.clear();
     return chain(pieces, m);
   }
 
@@ -94,8 +104,19 @@ public:
                     std::vector<Curve_piece>& pieces)
   {
     const Mesh_arrays& m = m_pieces.field().mesh();
-    auto phi = [level](const std::vector<Curve_candidate>& cc, double x, double y) {
-      return Curve_field::value(cc, x, y) - level;
+    auto phi = [level](const std::vector<Curve_candidate>& cc, double px, double py, double dx, double dy, double u,
+                       double& next) {
+      int which;
+      const double x = px + u * dx, y = py + u * dy;
+      const double v = Curve_field::value(cc, x, y, NO_INDEX, which);
+      next = std::numeric_limits<double>::quiet_NaN();
+      if(which >= 0)
+      {
+        double cx, cy, b;
+        cc[static_cast<std::size_t>(which)].active_circle(x, y, cx, cy, b);
+        next = circle_on_line(px, py, dx, dy, cx, cy, b, level, u);
+      }
+      return v - level;
     };
     struct Crossing
     {
@@ -112,8 +133,24 @@ public:
       const Index h = 3 * f + k;
       const Index lower = lower_of(m, h);
       const double da = h == lower ? d[k] : d[j], db = h == lower ? d[j] : d[k];
+      // (an edge's crossings are found once, for the first of its faces, and kept for the second)
+      const std::uint64_t key = static_cast<std::uint64_t>(lower) * m_number_of_sets + static_cast<std::uint64_t>(set);
       double t[2];
-      const int count = m_pieces.isoline_crossings(lower, level, da, db, t);
+      int count;
+      const auto known = m_edge_crossings.find(key);
+      if(known != m_edge_crossings.end())
+      {
+        count = known->second.count;
+        t[0] = known->second.t[0];
+        t[1] = known->second.t[1];
+        m_edge_crossings.erase(known);
+      }
+      else
+      {
+        count = m_pieces.isoline_crossings(lower, level, da, db, t);
+        if(m.opposite[h] != NO_INDEX)
+          m_edge_crossings.emplace(key, Edge_crossings{count, {t[0], t[1]}});
+      }
       for(int i = 0; i < count; ++i)
       {
         const int along_lower = h == lower ? i : count - 1 - i;  // (crossings are listed in the order of h)
@@ -173,6 +210,7 @@ public:
     };
     std::vector<Curve_piece> pieces;
     std::vector<Curve_candidate> c;
+    m_pieces.set_value_tolerance(0.);
     for(Index f = 0; f < m.nf; ++f)
     {
       Index l[3];
@@ -290,7 +328,10 @@ private:
                         double y0, const Curve_point& p0, Index k0, double x1, double y1, const Curve_point& p1,
                         Index k1, std::vector<Curve_piece>& pieces)
   {
-    auto psi = [la, lb](const std::vector<Curve_candidate>& cc, double x, double y) {
+    auto psi = [la, lb](const std::vector<Curve_candidate>& cc, double px, double py, double dx, double dy, double u,
+                        double& next) {
+      const double x = px + u * dx, y = py + u * dy;
+      next = std::numeric_limits<double>::quiet_NaN();
       return Curve_field::value(cc, x, y, la) - Curve_field::value(cc, x, y, lb);
     };
     Curve_piece piece;
@@ -420,6 +461,13 @@ private:
 
   Curve_pieces m_pieces;
   double m_tolerance;
+  struct Edge_crossings
+  {
+    int count;
+    double t[2];
+  };
+  std::unordered_map<std::uint64_t, Edge_crossings> m_edge_crossings;  // (isolines(): key lower half-edge, set)
+  std::uint64_t m_number_of_sets = 1;
   std::vector<Curve_candidate> m_cf, m_cg;
 
 public:

@@ -135,6 +135,66 @@ double bracketed_zero(F f, double a, double b, double fa, double fb, double tole
   return 0.5 * (a + b);
 }
 
+// The abscissa u nearest to `near` where b + |(px, py) + u (dx, dy) - (cx, cy)| = level, the level of a circle's
+// distance along a line (NaN: the line does not reach that level).
+inline double circle_on_line(double px, double py, double dx, double dy, double cx, double cy, double b, double level,
+                             double near)
+{
+  const double r = level - b;
+  const double qx = px - cx, qy = py - cy;
+  const double a2 = dx * dx + dy * dy, bq = qx * dx + qy * dy, cq = qx * qx + qy * qy - r * r;
+  const double disc = bq * bq - a2 * cq;
+  if(!(r >= 0.) || !(disc >= 0.) || !(a2 > 0.))
+    return std::numeric_limits<double>::quiet_NaN();
+  const double q = -(bq + (bq < 0. ? -1. : 1.) * std::sqrt(disc));  // (the two roots without cancellation)
+  const double u1 = q / a2, u2 = q != 0. ? cq / q : u1;
+  return std::abs(u1 - near) <= std::abs(u2 - near) ? u1 : u2;
+}
+
+// The zero of g on [a, b], where g(a) and g(b) have opposite signs and g is, around each abscissa, the distance
+// of one circle along a line minus a level (the field of a face along a line: the least of its candidates):
+// `g(u, next)` returns g(u) and sets `next` to where the circle that holds at u reaches the level
+// (circle_on_line(); NaN if unknown). Each step goes there if it stays inside the bracket (exact in one step
+// when the same circle holds at the zero), else takes the Illinois step (bracketed_zero() above); it stops when
+// |g| is at most `tolerance_g` or the bracket at most `tolerance`.
+template <class G>
+double circle_zero(G g, double a, double b, double fa, double fb, double tolerance, double tolerance_g)
+{
+  double u = (fa * b - fb * a) / (fa - fb);
+  int side = 0;
+  for(int i = 0; i < 100; ++i)
+  {
+    if(!(u > a && u < b))
+      u = 0.5 * (a + b);
+    double next;
+    const double fu = g(u, next);
+    if(!(fu == fu))
+      return 0.5 * (a + b);
+    if(std::abs(fu) <= tolerance_g)
+      return u;
+    if((fu < 0.) == (fb < 0.))
+    {
+      b = u;
+      fb = fu;
+      if(side == -1)
+        fa *= 0.5;
+      side = -1;
+    }
+    else
+    {
+      a = u;
+      fa = fu;
+      if(side == 1)
+        fb *= 0.5;
+      side = 1;
+    }
+    if(std::abs(b - a) <= tolerance)
+      return std::abs(fa) <= std::abs(fb) ? a : b;
+    u = next > a && next < b ? next : (fa * b - fb * a) / (fa - fb);
+  }
+  return 0.5 * (a + b);
+}
+
 // The pieces of the curves in the faces: the points where they cross edges (computed once per edge, from
 // the candidates of its two faces, in the same way from either face) and the points in between, each on
 // the curve along a line across the chord of the piece.
@@ -213,11 +273,50 @@ public:
       m_field.candidates(Mesh_arrays::face(o), m_cg);
     else
       m_cg.clear();
-    auto f = [&](double u) {
-      return edge_value(c, u, m_cf, m_cg, [](const std::vector<Curve_candidate>& cc, double x, double y) {
-               return Curve_field::value(cc, x, y);
-             }) - level;
+    // the edge in the frames of its faces: x + u dx (u from source(c)); of face(o): from its target
+    double line[2][4];
+    edge_point(c, 0., line[0][0], line[0][1]);
+    edge_point(c, 1., line[0][2], line[0][3]);
+    line[0][2] -= line[0][0];
+    line[0][3] -= line[0][1];
+    if(o != NO_INDEX)
+    {
+      edge_point(o, 1., line[1][0], line[1][1]);
+      edge_point(o, 0., line[1][2], line[1][3]);
+      line[1][2] -= line[1][0];
+      line[1][3] -= line[1][1];
+    }
+    auto g = [&](double u, double& next) {
+      double best = std::numeric_limits<double>::infinity();
+      int best_side = -1, best_which = -1;
+      for(int side = 0; side < (o != NO_INDEX ? 2 : 1); ++side)
+      {
+        int which;
+        const double v = Curve_field::value(side == 0 ? m_cf : m_cg, line[side][0] + u * line[side][2],
+                                            line[side][1] + u * line[side][3], NO_INDEX, which);
+        if(v < best)
+        {
+          best = v;
+          best_side = side;
+          best_which = which;
+        }
+      }
+      next = std::numeric_limits<double>::quiet_NaN();
+      if(best_which >= 0)
+      {
+        const double* l = line[best_side];
+        double cx, cy, b;
+        (best_side == 0 ? m_cf : m_cg)[static_cast<std::size_t>(best_which)].active_circle(l[0] + u * l[2],
+                                                                                          l[1] + u * l[3], cx, cy, b);
+        next = circle_on_line(l[0], l[1], l[2], l[3], cx, cy, b, level, u);
+      }
+      return best - level;
     };
+    auto f = [&](double u) {
+      double next;
+      return g(u, next);
+    };
+    const double tolerance_g = 4e-15 * (level + m_mesh.geometry[c].length);
     if(below_a != below_b)
     {
       const double f0 = f(0.), f1 = f(1.);
@@ -228,7 +327,7 @@ public:
         t[0] = (std::min)((std::max)(lin, 0.), 1.);
       }
       else
-        t[0] = bracketed_zero(f, 0., 1., f0, f1, 1e-15);
+        t[0] = circle_zero(g, 0., 1., f0, f1, 1e-15, tolerance_g);
       return 1;
     }
     // both above: a dip below the level?
@@ -248,13 +347,15 @@ public:
     const double f0 = f(0.), fu = f(u), f1 = f(1.);
     if(!(f0 >= 0. && fu < 0. && f1 >= 0.))
       return 0;
-    t[0] = bracketed_zero(f, 0., u, f0, fu, 1e-15);
-    t[1] = bracketed_zero(f, u, 1., fu, f1, 1e-15);
+    t[0] = circle_zero(g, 0., u, f0, fu, 1e-15, tolerance_g);
+    t[1] = circle_zero(g, u, 1., fu, f1, 1e-15, tolerance_g);
     return 2;
   }
 
   // The piece of face f from the point (x0, y0) to (x1, y1) (frame of f) along the zero set of phi over the
   // candidates `c` of f: `n` pieces, each interior point found on the line across the chord.
+  // `phi(c, px, py, dx, dy, u, next)`: phi at (px, py) + u (dx, dy), with in `next` a better guess of its zero
+  // on that line (circle_zero(); NaN if none).
   template <class Phi>
   void interior(Index f, const std::vector<Curve_candidate>& c, double x0, double y0, double x1, double y1, int n,
                 Phi phi, std::vector<Curve_point>& out)
@@ -284,11 +385,12 @@ public:
       double px = qx, py = qy;
       if(lo < hi && std::isfinite(lo) && std::isfinite(hi))
       {
-        auto g = [&](double u) { return phi(c, qx + u * nx, qy + u * ny); };
-        const double glo = g(lo), ghi = g(hi);
+        auto g = [&](double u, double& next) { return phi(c, qx, qy, nx, ny, u, next); };
+        double next;
+        const double glo = g(lo, next), ghi = g(hi, next);
         if(((glo < 0.) != (ghi < 0.)) && std::isfinite(glo) && std::isfinite(ghi))
         {
-          const double u = bracketed_zero(g, lo, hi, glo, ghi, 1e-15 * (hi - lo + len));
+          const double u = circle_zero(g, lo, hi, glo, ghi, 1e-15 * (hi - lo + len), m_tolerance_g);
           px = qx + u * nx;
           py = qy + u * ny;
         }
@@ -329,6 +431,9 @@ public:
 
   // the number of chords of a piece of length `chord` on arcs of radius at least `radius`, so that the
   // chords are within the tolerance of the arcs
+  // |phi| small enough for interior points (circle_zero(); 0: only the bracket's width counts)
+  void set_value_tolerance(double t) { m_tolerance_g = t; }
+
   int number_of_chords(double chord, double radius) const
   {
     if(!(radius > 0.) || !(m_tolerance > 0.) || !(chord > 0.))
@@ -344,6 +449,7 @@ private:
   const Curve_field& m_field;
   const Mesh_arrays& m_mesh;
   double m_tolerance;
+  double m_tolerance_g = 0.;
   std::vector<Curve_candidate> m_cf, m_cg;
 };
 

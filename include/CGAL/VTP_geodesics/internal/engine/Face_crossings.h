@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <tuple>
 #include <vector>
@@ -76,13 +77,14 @@ public:
   {
     m_active = active;
     if(active)
-      m_bound.assign(static_cast<std::size_t>(number_of_faces), std::numeric_limits<double>::infinity());
+      m_face.assign(static_cast<std::size_t>(number_of_faces), Face_state{std::numeric_limits<double>::infinity(), 0});
     else
-      m_bound.clear();
+      m_face.clear();
     m_levels = levels;
     std::sort(m_levels.begin(), m_levels.end());
     m_crossings.clear();
     m_face_begin.clear();
+    m_buffers = 0;
   }
 
   bool is_active() const { return m_active; }
@@ -119,7 +121,8 @@ public:
       if(it == m_levels.end() || !(*it <= highest + longest))
         return;
     }
-    double& bound = m_bound[static_cast<std::size_t>(Mesh_arrays::face(h))];
+    Face_state& face = m_face[static_cast<std::size_t>(Mesh_arrays::face(h))];
+    double& bound = face.bound;
     // a corner k bounds the distance in the face by its distance plus its farthest point (an edge at k)
     bound = (std::min)({ bound, dA + (std::max)(L, g.l_prev), dB + (std::max)(L, g.l_next),
                          dC + (std::max)(g.l_prev, g.l_next) });
@@ -128,52 +131,66 @@ public:
       const Window& w = ws[i];
       const double closest = (std::min)(ends[i].f0, ends[i].f1);
       const double lo = w.sx >= w.b0 && w.sx <= w.b1 ? w.sigma - w.sy : closest;
-      if(!m_levels.empty())
-      {
-        const auto it = std::lower_bound(m_levels.begin(), m_levels.end(), lo);
-        if(it == m_levels.end() || !(*it <= closest + longest))
-          continue;
-      }
       if(lo > bound * (1. + 1e-12))
         continue;  // above a corner or an earlier window everywhere in the face
+      std::vector<double>::const_iterator level;
+      if(!m_levels.empty())
+      {
+        level = std::lower_bound(m_levels.begin(), m_levels.end(), lo);
+        if(level == m_levels.end() || !(*level <= closest + longest))
+          continue;
+      }
       // the window's distance is convex over the face: its largest value is at a corner
       const double high = (std::max)({ ends[i].f0 + w.b0, ends[i].f1 + (L - w.b1), window_distance_at(w, g.cx, g.cy) });
+      if(!m_levels.empty() && !(*level <= (std::min)(high, bound) * (1. + 1e-12)))
+        continue;  // (its range over the face, below the bound, holds no level)
       bound = (std::min)(bound, high);
+      ++face.count;
       buffer.push_back(Face_crossing{h, w.origin, w.sx, w.sy, w.sigma, w.b0, w.b1});
     }
   }
 
-  // hands over the buffer of a thread (serial)
+  // hands over the buffer of a thread (serial; the sequential loop once, at the end of the run)
   void gather(std::vector<Face_crossing>& buffer)
   {
     if(m_active)
-      m_crossings.insert(m_crossings.end(), buffer.begin(), buffer.end());
+    {
+      ++m_buffers;
+      if(m_crossings.empty())
+        m_crossings.swap(buffer);
+      else
+        m_crossings.insert(m_crossings.end(), buffer.begin(), buffer.end());
+    }
     buffer.clear();
   }
 
-  // After the run: sorts the crossings by face (then half-edge and values) and indexes them by face.
+  // After the run: orders the crossings by face (in the order they were recorded: the same in every run
+  // of one thread; of several, by half-edge and values, so that the order of the threads does not matter)
+  // and indexes them by face.
   void finish(Index number_of_faces)
   {
     if(!m_active)
       return;
     m_face_begin.assign(static_cast<std::size_t>(number_of_faces) + 1, 0);
-    for(const Face_crossing& c : m_crossings)
-      ++m_face_begin[static_cast<std::size_t>(Mesh_arrays::face(c.halfedge)) + 1];
-    for(std::size_t f = 1; f < m_face_begin.size(); ++f)
-      m_face_begin[f] += m_face_begin[f - 1];
+    for(std::size_t f = 0; f < m_face.size(); ++f)
+      m_face_begin[f + 1] = m_face_begin[f] + m_face[f].count;
+    CGAL_assertion(m_face_begin.back() == m_crossings.size());
     std::vector<Face_crossing> sorted(m_crossings.size());
-    std::vector<std::size_t> fill(m_face_begin.begin(), m_face_begin.end() - 1);
+    for(std::size_t f = 0; f < m_face.size(); ++f)
+      m_face[f].count = static_cast<std::uint32_t>(m_face_begin[f]);  // (from here: where the next one goes)
     for(const Face_crossing& c : m_crossings)
-      sorted[fill[static_cast<std::size_t>(Mesh_arrays::face(c.halfedge))]++] = c;
+      sorted[m_face[static_cast<std::size_t>(Mesh_arrays::face(c.halfedge))].count++] = c;
     m_crossings.swap(sorted);
     std::vector<Face_crossing>().swap(sorted);
-    for(std::size_t f = 0; f + 1 < m_face_begin.size(); ++f)
-      std::sort(m_crossings.begin() + static_cast<std::ptrdiff_t>(m_face_begin[f]),
-                m_crossings.begin() + static_cast<std::ptrdiff_t>(m_face_begin[f + 1]),
-                [](const Face_crossing& a, const Face_crossing& b) {
-                  return std::tie(a.halfedge, a.sigma, a.sx, a.sy, a.b0, a.b1, a.origin)
-                       < std::tie(b.halfedge, b.sigma, b.sx, b.sy, b.b0, b.b1, b.origin);
-                });
+    std::vector<Face_state>().swap(m_face);
+    if(m_buffers > 1)
+      for(std::size_t f = 0; f + 1 < m_face_begin.size(); ++f)
+        std::sort(m_crossings.begin() + static_cast<std::ptrdiff_t>(m_face_begin[f]),
+                  m_crossings.begin() + static_cast<std::ptrdiff_t>(m_face_begin[f + 1]),
+                  [](const Face_crossing& a, const Face_crossing& b) {
+                    return std::tie(a.halfedge, a.sigma, a.sx, a.sy, a.b0, a.b1, a.origin)
+                         < std::tie(b.halfedge, b.sigma, b.sx, b.sy, b.b0, b.b1, b.origin);
+                  });
   }
 
   // the crossings of face f (after finish())
@@ -188,7 +205,13 @@ public:
 private:
   bool m_active = false;
   std::vector<double> m_levels;
-  std::vector<double> m_bound;  // per face: the least largest value over the face of its corners and recorded windows
+  struct Face_state
+  {
+    double bound;         // the least largest value over the face of its corners and recorded windows
+    std::uint32_t count;  // the windows recorded
+  };
+  std::vector<Face_state> m_face;  // during the run
+  int m_buffers = 0;               // the buffers gathered
   std::vector<Face_crossing> m_crossings;
   std::vector<std::size_t> m_face_begin;
 };

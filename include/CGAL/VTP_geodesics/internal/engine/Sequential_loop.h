@@ -38,6 +38,7 @@ public:
     while(!(st.stop.is_tracking() && st.stop.is_done(st.schedule)) && st.schedule.pop(e))
       if(st.take_vertex(e.second, e.first))
         drain(st);
+    st.crossings.gather(m_scratch.crossed);
   }
 
 private:
@@ -64,7 +65,6 @@ private:
       st.stop.merge(s.events);
       st.store.update_peaks();
     }
-    st.crossings.gather(s.crossed);
     st.propagated += s.propagated;
     st.created += s.created;
     s.propagated = s.created = 0;
