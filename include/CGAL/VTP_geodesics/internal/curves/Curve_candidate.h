@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -89,6 +90,73 @@ struct Curve_candidate
       cy = gy1;
       b = base + e1;
     }
+  }
+
+  // The abscissae u of the line (px, py) + u (dx, dy) (a line through the face) where the candidate's distance
+  // is below `level`: one interval (its distance is convex along a line), (lo, hi); false if none.
+  bool below_on_line(double px, double py, double dx, double dy, double level, double& lo, double& hi) const
+  {
+    if(!window)
+      return circle_interval(px, py, dx, dy, x, y, level - base, lo, hi);
+    // where the window sees the line: the ray from the image through p(u) crosses the window at
+    // num(u) / den(u) of it (den has one sign over the face, which is beyond the window)
+    const double ex = gx1 - gx0, ey = gy1 - gy0, rx = gx0 - x, ry = gy0 - y, qx = px - x, qy = py - y;
+    const double den0 = qx * ey - qy * ex, den1 = dx * ey - dy * ex;
+    const double num0 = rx * qy - ry * qx, num1 = rx * dy - ry * dx;
+    const double sign = den0 + 0.5 * den1 < 0. ? -1. : 1.;
+    // visible: sign num >= 0 and sign (den - num) >= 0, each linear in u
+    double v_lo = -std::numeric_limits<double>::infinity(), v_hi = std::numeric_limits<double>::infinity();
+    const double a[2][2] = { { sign * num0, sign * num1 }, { sign * (den0 - num0), sign * (den1 - num1) } };
+    for(const auto& l : a)  // l[0] + u l[1] >= 0
+    {
+      if(l[1] > 0.)
+        v_lo = (std::max)(v_lo, -l[0] / l[1]);
+      else if(l[1] < 0.)
+        v_hi = (std::min)(v_hi, -l[0] / l[1]);
+      else if(l[0] < 0.)
+        v_lo = std::numeric_limits<double>::infinity();
+    }
+    lo = std::numeric_limits<double>::infinity();
+    hi = -std::numeric_limits<double>::infinity();
+    auto hull = [&](double a0, double a1) {
+      if(a0 < a1)
+      {
+        lo = (std::min)(lo, a0);
+        hi = (std::max)(hi, a1);
+      }
+    };
+    double s0, s1;
+    if(circle_interval(px, py, dx, dy, x, y, level - base, s0, s1))
+      hull((std::max)(s0, v_lo), (std::min)(s1, v_hi));  // straight, where seen
+    const double ends[2][3] = { { gx0, gy0, e0 }, { gx1, gy1, e1 } };
+    for(const auto& e : ends)  // bent at an end, where not seen
+      if(circle_interval(px, py, dx, dy, e[0], e[1], level - base - e[2], s0, s1))
+      {
+        if(!(v_lo < v_hi))
+          hull(s0, s1);
+        else
+        {
+          hull(s0, (std::min)(s1, v_lo));
+          hull((std::max)(s0, v_hi), s1);
+        }
+      }
+    return lo < hi;
+  }
+
+  // the abscissae u of the line (px, py) + u (dx, dy) at distance less than r from (cx, cy): (lo, hi)
+  static bool circle_interval(double px, double py, double dx, double dy, double cx, double cy, double r, double& lo,
+                              double& hi)
+  {
+    const double qx = px - cx, qy = py - cy;
+    const double a2 = dx * dx + dy * dy, b = qx * dx + qy * dy, c = qx * qx + qy * qy - r * r;
+    const double disc = b * b - a2 * c;
+    if(!(r > 0.) || !(disc > 0.) || !(a2 > 0.))
+      return false;
+    const double q = -(b + (b < 0. ? -1. : 1.) * std::sqrt(disc));  // (the two roots without cancellation)
+    const double u1 = q / a2, u2 = c / q;
+    lo = (std::min)(u1, u2);
+    hi = (std::max)(u1, u2);
+    return true;
   }
 
   // whether the candidate is a path to (px, py)

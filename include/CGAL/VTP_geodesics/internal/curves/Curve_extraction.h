@@ -73,13 +73,19 @@ public:
       for(int k = 0; k < 3; ++k)
         d[k] = field.distance(m.source[3 * f + k]);
       double lo = (std::min)({ d[0], d[1], d[2] });
-      const double hi = (std::max)({ d[0], d[1], d[2] });
+      double hi = (std::max)({ d[0], d[1], d[2] });
       if(!(lo < std::numeric_limits<double>::infinity()))
         continue;
       // on an edge of length l, the distance is at least (d_a + d_b - l) / 2 (a dip between two vertices above
-      // a level)
+      // a level); from the windows that crossed the faces, where the field rises above a level between two
+      // vertices below it (at most (d_a + d_b + l) / 2) is found too
       for(int k = 0; k < 3; ++k)
-        lo = (std::min)(lo, 0.5 * (d[k] + d[(k + 1) % 3] - 1.01 * m.geometry[3 * f + k].length));
+      {
+        const double sum = d[k] + d[(k + 1) % 3], l = m.geometry[3 * f + k].length;
+        lo = (std::min)(lo, 0.5 * (sum - 1.01 * l));
+        if(field.from_crossings() && std::isfinite(hi))
+          hi = (std::max)(hi, (std::min)(0.5 * (sum + l), field.face_bound(f)));
+      }
       auto first = std::upper_bound(sorted.begin(), sorted.end(), lo);  // levels above the least value
       if(first == sorted.end() || !(*first <= hi))
         continue;
@@ -103,7 +109,8 @@ public:
   void face_isoline(Index f, const std::vector<Curve_candidate>& c, const double d[3], double level, Index set,
                     std::vector<Curve_piece>& pieces)
   {
-    const Mesh_arrays& m = m_pieces.field().mesh();
+    const Curve_field& field = m_pieces.field();
+    const Mesh_arrays& m = field.mesh();
     auto phi = [level](const std::vector<Curve_candidate>& cc, double px, double py, double dx, double dy, double u,
                        double& next) {
       int which;
@@ -125,7 +132,7 @@ public:
       Index key;
       bool leaves;  // going counterclockwise, the boundary leaves the part below the level
     };
-    Crossing cross[6];
+    Crossing cross[12];
     int n = 0;
     for(int k = 0; k < 3; ++k)
     {
@@ -135,61 +142,98 @@ public:
       const double da = h == lower ? d[k] : d[j], db = h == lower ? d[j] : d[k];
       // (an edge's crossings are found once, for the first of its faces, and kept for the second)
       const std::uint64_t key = static_cast<std::uint64_t>(lower) * m_number_of_sets + static_cast<std::uint64_t>(set);
-      double t[2];
-      int count;
+      // (on the edge the field is at least (da + db - l) / 2 and at most (da + db + l) / 2: no crossing of two
+      // vertices on one side of the level beyond these)
+      const double length = m.geometry[h].length;
+      // (nor where the field is below the level all over either face of the edge: Face_crossings::bound())
+      if((da < level && db < level
+          && (0.5 * (da + db + length) < level || field.face_bound(f) < level
+              || (m.opposite[h] != NO_INDEX && field.face_bound(Mesh_arrays::face(m.opposite[h])) < level)))
+         || (da >= level && db >= level && 0.5 * (da + db - 1.01 * length) >= level))
+        continue;
+      Edge_crossings e;
       const auto known = m_edge_crossings.find(key);
       if(known != m_edge_crossings.end())
       {
-        count = known->second.count;
-        t[0] = known->second.t[0];
-        t[1] = known->second.t[1];
+        e = known->second;
         m_edge_crossings.erase(known);
       }
       else
       {
-        count = m_pieces.isoline_crossings(lower, level, da, db, t);
+        e.count = field.from_crossings() ? m_pieces.exact_isoline_crossings(lower, level, da, db, e.t) : -1;
+        if(e.count < 0)
+          e.count = m_pieces.isoline_crossings(lower, level, da, db, e.t);
         if(m.opposite[h] != NO_INDEX)
-          m_edge_crossings.emplace(key, Edge_crossings{count, {t[0], t[1]}});
+          m_edge_crossings.emplace(key, e);
       }
+      const int count = e.count;
       for(int i = 0; i < count; ++i)
       {
         const int along_lower = h == lower ? i : count - 1 - i;  // (crossings are listed in the order of h)
-        const double ti = t[along_lower];
+        const double ti = e.t[along_lower];
         Crossing& x = cross[n++];
         x.point = Curve_pieces::edge_curve_point(h, lower, ti);
         m_pieces.edge_point(h, h == lower ? ti : 1. - ti, x.x, x.y);
-        x.key = 2 * lower + along_lower;
-        x.leaves = count == 1 ? d[k] < level : i == 1;
+        x.key = 4 * lower + along_lower;
+        // (along h from its source the field is below the level where d[k] is, and crosses it at each one)
+        x.leaves = (d[k] < level) != (i % 2 == 1);
       }
     }
-    for(int i = 0; i < n; ++i)
+    // Each crossing where the boundary leaves the part below is joined to the next one ccw where it enters it
+    // again (the parts above the level are apart inside the face); with 4 or more crossings the parts above may
+    // instead be joined inside the face (a ridge of the field, the cut locus, from a corner above to a rise on
+    // an edge): then each is joined to the previous one. The other way is tried when the first leaves
+    // interior points on their chords (the field has no crossing across it there), and the one that leaves
+    // fewer is kept.
+    std::vector<Curve_piece>& trial = m_trial;
+    std::size_t best_undecided = 0;
+    for(int way = 0; way < (n >= 4 ? 2 : 1); ++way)
     {
-      if(!cross[i].leaves)
-        continue;
-      int j = (i + 1) % n;
-      while(j != i && cross[j].leaves)
-        j = (j + 1) % n;
-      if(j == i)
-        break;
-      Curve_piece piece;
-      piece.set = set;
-      piece.key[0] = cross[i].key;
-      piece.key[1] = cross[j].key;
-      piece.points.push_back(cross[i].point);
-      double radius = std::numeric_limits<double>::infinity();
-      for(const Crossing* e : { &cross[i], &cross[j] })
+      const std::size_t undecided_before = m_pieces.undecided;
+      trial.clear();
+      for(int i = 0; i < n; ++i)
       {
-        int which;
-        Curve_field::value(c, e->x, e->y, NO_INDEX, which);
-        if(which >= 0)
-          radius = (std::min)(radius, level - c[static_cast<std::size_t>(which)].base);
+        if(!cross[i].leaves)
+          continue;
+        const int step = way == 0 ? 1 : n - 1;
+        int j = (i + step) % n;
+        while(j != i && cross[j].leaves)
+          j = (j + step) % n;
+        if(j == i)
+          break;
+        Curve_piece piece;
+        piece.set = set;
+        piece.key[0] = cross[i].key;
+        piece.key[1] = cross[j].key;
+        piece.points.push_back(cross[i].point);
+        double radius = std::numeric_limits<double>::infinity();
+        for(const Crossing* e : { &cross[i], &cross[j] })
+        {
+          int which;
+          Curve_field::value(c, e->x, e->y, NO_INDEX, which);
+          if(which >= 0)
+            radius = (std::min)(radius, level - c[static_cast<std::size_t>(which)].base);
+        }
+        const double chord = std::hypot(cross[j].x - cross[i].x, cross[j].y - cross[i].y);
+        m_pieces.interior(f, c, cross[i].x, cross[i].y, cross[j].x, cross[j].y,
+                          m_pieces.number_of_chords(chord, radius), phi, piece.points);
+        piece.points.push_back(cross[j].point);
+        trial.push_back(std::move(piece));
       }
-      const double chord = std::hypot(cross[j].x - cross[i].x, cross[j].y - cross[i].y);
-      m_pieces.interior(f, c, cross[i].x, cross[i].y, cross[j].x, cross[j].y, m_pieces.number_of_chords(chord, radius),
-                        phi, piece.points);
-      piece.points.push_back(cross[j].point);
-      pieces.push_back(std::move(piece));
+      const std::size_t undecided = m_pieces.undecided - undecided_before;
+      m_pieces.undecided = undecided_before;
+      if(way == 0 || undecided < best_undecided)
+      {
+        best_undecided = undecided;
+        m_kept.swap(trial);
+      }
+      if(best_undecided == 0)
+        break;
     }
+    m_pieces.undecided += best_undecided;
+    for(Curve_piece& piece : m_kept)
+      pieces.push_back(std::move(piece));
+    m_kept.clear();
   }
 
   // The borders between the cells of the labels; `pairs` receives the two labels of each set.
@@ -464,9 +508,10 @@ private:
   struct Edge_crossings
   {
     int count;
-    double t[2];
+    double t[4];
   };
-  std::unordered_map<std::uint64_t, Edge_crossings> m_edge_crossings;  // (isolines(): key lower half-edge, set)
+  std::unordered_map<std::uint64_t, Edge_crossings> m_edge_crossings;
+  std::vector<Curve_piece> m_trial, m_kept;  // (face_isoline(): the pieces of a face, the two ways to join)  // (isolines(): key lower half-edge, set)
   std::uint64_t m_number_of_sets = 1;
   std::vector<Curve_candidate> m_cf, m_cg;
 

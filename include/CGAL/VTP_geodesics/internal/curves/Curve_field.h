@@ -79,6 +79,13 @@ public:
   }
 
   double distance(Index v) const { return m_distance[static_cast<std::size_t>(v)]; }
+  // whether the field comes from the windows that crossed the faces (exact; its candidates have no gate)
+  bool from_crossings() const { return m_crossings != nullptr; }
+  // an upper bound of the field all over face f (Face_crossing_record::bound(); +infinity if unknown)
+  double face_bound(Index f) const
+  {
+    return m_crossings != nullptr ? m_crossings->bound(f) : std::numeric_limits<double>::infinity();
+  }
   Index label(Index v) const { return m_label[static_cast<std::size_t>(v)]; }
 
   // the candidates of face f (see above), in the frame of f

@@ -259,6 +259,78 @@ public:
     return best;
   }
 
+  // The crossings of the level on the lower half-edge c (abscissae from source(c), increasing; at most 4) from
+  // the field of the windows that crossed the faces (Curve_field::from_crossings()): each candidate of the two
+  // faces is below the level on one interval of the edge (Curve_candidate::below_on_line()), the field on their
+  // union; the crossings are the ends of the union inside the edge: where the field dips below the level
+  // between two vertices above it, and where it rises above it between two below it (a cut locus). Exact up
+  // to the roots of the circles. Returns -1 if the union does not agree with the vertex distances da and db
+  // (an odd number of crossings for ends on the same side) or has more than 4.
+  int exact_isoline_crossings(Index c, double level, double da, double db, double t[4])
+  {
+    const Index o = m_mesh.opposite[c];
+    m_field.candidates(Mesh_arrays::face(c), m_cf);
+    if(o != NO_INDEX)
+      m_field.candidates(Mesh_arrays::face(o), m_cg);
+    else
+      m_cg.clear();
+    double line[2][4];
+    edge_point(c, 0., line[0][0], line[0][1]);
+    edge_point(c, 1., line[0][2], line[0][3]);
+    if(o != NO_INDEX)
+    {
+      edge_point(o, 1., line[1][0], line[1][1]);
+      edge_point(o, 0., line[1][2], line[1][3]);
+    }
+    m_intervals.clear();
+    for(int side = 0; side < (o != NO_INDEX ? 2 : 1); ++side)
+    {
+      const double* l = line[side];
+      for(const Curve_candidate& q : side == 0 ? m_cf : m_cg)
+      {
+        double lo, hi;
+        if(q.below_on_line(l[0], l[1], l[2] - l[0], l[3] - l[1], level, lo, hi) && hi > 0. && lo < 1.)
+          m_intervals.emplace_back(lo, hi);
+      }
+    }
+    std::sort(m_intervals.begin(), m_intervals.end());
+    int n = 0;
+    bool below_a = false;
+    double reach = -std::numeric_limits<double>::infinity();  // the end of the union so far
+    for(const auto& iv : m_intervals)
+    {
+      if(iv.first > reach)
+      {
+        // a gap before iv: reach (if inside) ends a part below, iv.first starts one
+        if(reach > 0. && reach < 1.)
+        {
+          if(n == 4)
+            return -1;
+          t[n++] = reach;
+        }
+        if(iv.first > 0.)
+        {
+          if(n == 4)
+            return -1;
+          t[n++] = iv.first;
+        }
+        else
+          below_a = true;
+      }
+      reach = (std::max)(reach, iv.second);
+    }
+    if(reach > 0. && reach < 1.)
+    {
+      if(n == 4)
+        return -1;
+      t[n++] = reach;
+    }
+    const bool below_b = reach >= 1.;
+    if(below_a != (da < level) || below_b != (db < level))
+      return -1;
+    return n;
+  }
+
   // The crossings of the level on the lower half-edge c (abscissae from source(c), increasing; at most two),
   // where the vertex distances at its ends are da and db: one if the level is between them; two if both are
   // above and the field dips below the level in between (a circle that cuts the edge twice); none else.
@@ -451,6 +523,7 @@ private:
   double m_tolerance;
   double m_tolerance_g = 0.;
   std::vector<Curve_candidate> m_cf, m_cg;
+  std::vector<std::pair<double, double> > m_intervals;
 };
 
 } // namespace internal

@@ -118,8 +118,20 @@ public:
       for(const Window_ends& e : ends)
         highest = (std::max)(highest, (std::min)(e.f0, e.f1));
       const auto it = std::lower_bound(m_levels.begin(), m_levels.end(), lowest);
-      if(it == m_levels.end() || !(*it <= highest + longest))
+      if(it == m_levels.end())
         return;
+      if(!(*it <= highest + longest))
+      {
+        // the list is below the level *it all over the face (at most its least value plus the longest edge):
+        // where that level is near, the bound tells the extraction that the field does not rise to it in the
+        // face (between vertices below it)
+        if(*it <= least + 2. * longest)
+        {
+          double& bound = m_face[static_cast<std::size_t>(Mesh_arrays::face(h))].bound;
+          bound = (std::min)(bound, least + longest);
+        }
+        return;
+      }
     }
     Face_state& face = m_face[static_cast<std::size_t>(Mesh_arrays::face(h))];
     double& bound = face.bound;
@@ -137,14 +149,19 @@ public:
       if(!m_levels.empty())
       {
         level = std::lower_bound(m_levels.begin(), m_levels.end(), lo);
-        if(level == m_levels.end() || !(*level <= closest + longest))
+        if(level == m_levels.end())
           continue;
+        if(!(*level <= closest + longest))
+        {
+          bound = (std::min)(bound, closest + longest);  // (below the level all over the face: as above)
+          continue;
+        }
       }
       // the window's distance is convex over the face: its largest value is at a corner
       const double high = (std::max)({ ends[i].f0 + w.b0, ends[i].f1 + (L - w.b1), window_distance_at(w, g.cx, g.cy) });
-      if(!m_levels.empty() && !(*level <= (std::min)(high, bound) * (1. + 1e-12)))
-        continue;  // (its range over the face, below the bound, holds no level)
       bound = (std::min)(bound, high);
+      if(!m_levels.empty() && !(*level <= bound * (1. + 1e-12)))
+        continue;  // (its range over the face, below the bound, holds no level)
       ++face.count;
       buffer.push_back(Face_crossing{h, w.origin, w.sx, w.sy, w.sigma, w.b0, w.b1});
     }
@@ -182,7 +199,8 @@ public:
       sorted[m_face[static_cast<std::size_t>(Mesh_arrays::face(c.halfedge))].count++] = c;
     m_crossings.swap(sorted);
     std::vector<Face_crossing>().swap(sorted);
-    std::vector<Face_state>().swap(m_face);
+    for(std::size_t f = 0; f < m_face.size(); ++f)
+      m_face[f].count = 0;
     if(m_buffers > 1)
       for(std::size_t f = 0; f + 1 < m_face_begin.size(); ++f)
         std::sort(m_crossings.begin() + static_cast<std::ptrdiff_t>(m_face_begin[f]),
@@ -191,6 +209,14 @@ public:
                     return std::tie(a.halfedge, a.sigma, a.sx, a.sy, a.b0, a.b1, a.origin)
                          < std::tie(b.halfedge, b.sigma, b.sx, b.sy, b.b0, b.b1, b.origin);
                   });
+  }
+
+  // An upper bound of the distance all over face f (after the run): below it, no curve crosses the face.
+  // (+infinity where unknown: a face no list crossed near a level)
+  double bound(Index f) const
+  {
+    return static_cast<std::size_t>(f) < m_face.size() ? m_face[static_cast<std::size_t>(f)].bound
+                                                       : std::numeric_limits<double>::infinity();
   }
 
   // the crossings of face f (after finish())
