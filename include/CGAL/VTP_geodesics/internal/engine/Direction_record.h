@@ -287,9 +287,18 @@ public:
         continue;
       bool border = false;
       const std::size_t fan = out.size();
-      const double sum = walk_fan(fan_first(h, border), [&](Index g, double phi) { out.push_back(std::make_pair(g, phi)); });
-      for(std::size_t i = fan; i < out.size(); ++i)
-        out[i].second = t + (border ? out[i].second : wrap_in_fan(out[i].second, sum, straight - 0.5 * sum));
+      const double sum = walk_fan(fan_first(h, border), [&](Index g, double phi) { out.push_back(std::make_pair(g, t + phi)); });
+      if(border)
+        continue;
+      // phi in [0, S), growing along the walk, and straight - S/2 in [-S/2, S/2): a first stretch moves up
+      // by S, or a last one down
+      const double low = t + straight - 0.5 * sum;
+      if(low >= t)
+        for(std::size_t i = fan; i < out.size() && out[i].second < low; ++i)
+          out[i].second += sum;
+      else
+        for(std::size_t i = out.size(); i-- > fan && out[i].second >= low + sum;)
+          out[i].second -= sum;
     }
     return true;
   }
