@@ -176,7 +176,7 @@ public:
     via[v] = last;
     const bool lazy = !m_strict && last >= 0;  // theta[v] holds gamma
     const Mesh_arrays& m = *m_mesh;
-    CGAL_assertion(m_strict || theta[v] == a);  // (emission_angles() reads `a` there)
+    CGAL_assertion(m_strict || theta[v] == a || std::isnan(a));  // (emission_angles() reads `a` there)
     float turning = 0.f;
     signed char turns = 0;
     if(!m_strict && m.is_pseudo_source[v] && r.g != NO_INDEX)
