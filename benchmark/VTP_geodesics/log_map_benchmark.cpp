@@ -115,7 +115,7 @@ int main(int argc, char** argv)
             << "   (processor " << median(c_log) << " s, ratio " << median(c_log) / median(c_distance) << ")\n";
   std::cout << "log map (strict):    " << median(t_strict) << " s   ratio " << median(t_strict) / median(t_distance)
             << "   (processor " << median(c_strict) << " s, ratio " << median(c_strict) / median(c_distance) << ")\n";
-  std::cout << "log map record: 16 bytes per vertex (theta double, turn float, via int32), " << 16. * double(n) / 1e6
+  std::cout << "log map record: 17 bytes per vertex (theta double, turn float, cut int8, via int32), " << 17. * double(n) / 1e6
             << " MB\n";
   // continuity: the jump of theta across each edge whose two ends are farther from the source than 10 mean edge
   // lengths (near the source theta turns fast), percentiles over the edges; the cut locus is not excluded

@@ -51,8 +51,14 @@ namespace internal {
 // angle of the incoming ray in its fan: products of unit vectors around the fan, two atan2, no atan2 per
 // corner.
 //
-// Memory: 16 bytes per vertex (theta, turn, via), allocated only when the log map is asked for; 8 bytes per
-// window (Window::angle).
+// The fan of an interior vertex is a circle of length S (the sum of its corner angles), not 2 pi: the turn
+// of a half-edge at fan angle phi from the continued line at fan angle `straight` is phi - straight taken in
+// [-S/2, S/2) (emission_angles()). (Taken modulo 2 pi, as it was until December 2026, it was off by the
+// excess S - 2 pi for every half-edge on the far side of the fan's first half-edge: behind 553 of the 773
+// vertices of the elephant that lie behind one saddle reached straight from vertex 0.)
+//
+// Memory: 17 bytes per vertex (theta, turn, cut, via), allocated only when the log map is asked for; 8
+// bytes per window (Window::angle).
 struct Ray_arrival
 {
   double angle;   // the direction of the x-axis of the frame F below, in the turning frame of the origin
@@ -75,10 +81,14 @@ class Direction_record
 {
 public:
   std::vector<double> theta;  // per vertex
-  // per vertex, a pseudo-source: the turning angle of its fan (a float: 1e-7 rad behind pseudo-sources is far
-  // below the mesh's own error there, and keeps the record at 16 bytes per vertex); its sign bit set while
-  // theta[v] holds gamma (to be resolved by finish())
+  // per vertex, a pseudo-source: the turning angle of its fan, in [0, 2 pi) (a float: 1e-7 rad behind
+  // pseudo-sources is far below the mesh's own error there, and keeps the record small; a value near 0, as
+  // on flat domains, is kept to 1e-7 of itself); its sign bit set while theta[v] holds gamma (to be resolved
+  // by finish())
   std::vector<float> turn;
+  // per vertex, a pseudo-source in a closed fan: the fan angle of the continued line is
+  // angle_in_0_2pi(theta[v] - turn[v]) + 2 pi cut[v] (on_offer(), emission_angles())
+  std::vector<signed char> cut;
   // per vertex: the last vertex its geodesic passes through, NO_INDEX, or -2 - k for the vertex source k
   std::vector<Index> via;
   // Set by the caller before a run: the vertex sources, and per seed the direction of the x-axis of its
@@ -97,12 +107,14 @@ public:
     {
       theta.clear();
       turn.clear();
+      cut.clear();
       via.clear();
       return;
     }
     const std::size_t nv = static_cast<std::size_t>(m.nv);
     theta.assign(nv, 0.);
     turn.assign(nv, 0.);
+    cut.assign(nv, 0);
     via.assign(nv, NO_INDEX);
     start_sources(m);
   }
@@ -118,6 +130,7 @@ public:
     {
       theta[v] = 0.;
       turn[v] = 0.f;
+      cut[v] = 0;
       via[v] = NO_INDEX;
     }
     start_sources(m);
@@ -163,7 +176,9 @@ public:
     via[v] = last;
     const bool lazy = !m_strict && last >= 0;  // theta[v] holds gamma
     const Mesh_arrays& m = *m_mesh;
+    CGAL_assertion(m_strict || theta[v] == a || std::isnan(a));  // (emission_angles() reads `a` there)
     float turning = 0.f;
+    signed char turns = 0;
     if(!m_strict && m.is_pseudo_source[v] && r.g != NO_INDEX)
     {
       // the turning angle: the continued line (beta_in + S/2, or + pi at the border) goes on at `a`; beta_in,
@@ -172,10 +187,16 @@ public:
       double sum = 0., phi = 0.;
       fan_angles(r.g, border, sum, phi);
       const double beta_in = phi + std::atan2(r.gy * r.dx - r.gx * r.dy, -(r.gx * r.dx + r.gy * r.dy));
-      turning = static_cast<float>(angle_in_0_2pi(a - (beta_in + (border ? TANGENT_FRAME_PI : 0.5 * sum))));
+      // in a closed fan, the continued line's angle in [0, S) (the fan is a circle of length S, not 2 pi):
+      // emission_angles() finds it again as a - turning + 2 pi turns
+      const double straight = border ? beta_in + TANGENT_FRAME_PI : wrap_in_fan(beta_in + 0.5 * sum, sum, 0.);
+      turning = std::fabs(static_cast<float>(angle_in_0_2pi(a - straight)));  // (+0 for -0: the flag below)
+      if(!border)
+        turns = static_cast<signed char>((std::max)(-100., (std::min)(100., std::nearbyint((straight - angle_in_0_2pi(
+                                           a - static_cast<double>(turning))) / (2. * TANGENT_FRAME_PI)))));
     }
-    turning = std::fabs(turning);  // (+0 for -0 or a NaN's sign: the sign bit is the flag below)
     turn[v] = lazy ? -turning : turning;
+    cut[v] = turns;
   }
 
   // The direction of the ray r from `origin` at its end: theta (gamma behind a vertex in the default mode),
@@ -249,8 +270,12 @@ public:
     }
     if(m_strict)
       return false;
-    // one walk per fan (a vertex of a manifold mesh has one; others are found from their corners)
+    // one walk per fan (a vertex of a manifold mesh has one; others are found from their corners): a
+    // half-edge at fan angle phi leaves at turning + phi; in a closed fan, phi is first moved by a multiple of
+    // S into [straight - S/2, straight + S/2) (the fan is a circle of length S, not 2 pi), straight the angle of
+    // the continued line (on_offer())
     const double t = std::fabs(turn[v]);
+    const double straight = angle_in_0_2pi(theta[v] - t) + 2. * TANGENT_FRAME_PI * cut[v];
     const Index begin = m.corner_begin[v], degree = m.corner_begin[v + 1] - begin;
     for(Index c = begin; c < begin + degree && static_cast<Index>(out.size()) < degree; ++c)
     {
@@ -261,7 +286,19 @@ public:
       if(seen)
         continue;
       bool border = false;
-      walk_fan(fan_first(h, border), [&](Index g, double phi) { out.push_back(std::make_pair(g, t + phi)); });
+      const std::size_t fan = out.size();
+      const double sum = walk_fan(fan_first(h, border), [&](Index g, double phi) { out.push_back(std::make_pair(g, t + phi)); });
+      if(border)
+        continue;
+      // phi in [0, S), growing along the walk, and straight - S/2 in [-S/2, S/2): a first stretch moves up
+      // by S, or a last one down
+      const double low = t + straight - 0.5 * sum;
+      if(low >= t)
+        for(std::size_t i = fan; i < out.size() && out[i].second < low; ++i)
+          out[i].second += sum;
+      else
+        for(std::size_t i = out.size(); i-- > fan && out[i].second >= low + sum;)
+          out[i].second -= sum;
     }
     return true;
   }
@@ -277,6 +314,18 @@ public:
   }
 
 private:
+  // x moved by a multiple of `sum` into [low, low + sum) (x within a few turns of it)
+  static double wrap_in_fan(double x, double sum, double low)
+  {
+    if(!(sum > 0.))
+      return x;
+    for(int k = 0; k < 8 && x < low; ++k)
+      x += sum;
+    for(int k = 0; k < 8 && x >= low + sum; ++k)
+      x -= sum;
+    return x;
+  }
+
   // The fan of faces around source(h) that holds h: its first half-edge, counter-clockwise (the border
   // half-edge leaving the vertex, or the least half-edge of a closed fan).
   Index fan_first(Index h, bool& border) const
