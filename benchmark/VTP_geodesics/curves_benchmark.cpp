@@ -19,8 +19,8 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/VTP_geodesics.h>
+#include <vtp_support/read_mesh.h>
 
 #include <algorithm>
 #include <chrono>
@@ -93,10 +93,21 @@ int main(int argc, char** argv)
       return 2;
     }
   }
-  Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(argv[1], mesh) || mesh.is_empty())
+  // (the reader of the tools: OFF, OBJ, PLY, STL; a scan's soup repaired into a valid triangle mesh)
+  vtp_support::Input_mesh input;
+  try
   {
-    std::cerr << "cannot read " << argv[1] << "\n";
+    vtp_support::read_input_mesh(argv[1], input);
+  }
+  catch(const vtp_support::Input_error& e)
+  {
+    std::cerr << "cannot read " << argv[1] << ": " << e.what() << "\n";
+    return 1;
+  }
+  const Mesh& mesh = input.mesh;
+  if(mesh.is_empty())
+  {
+    std::cerr << "cannot read " << argv[1] << ": no face\n";
     return 1;
   }
   Solver solver(mesh);

@@ -62,14 +62,20 @@ struct Face_crossing
 //
 // Filter: with levels (in the engine's unit), a window is kept only if the range of its distance over the
 // face may hold one of them: at least its least distance on its interval (sigma - sy if the foot of its image is
-// inside, else the lesser of its distances at the ends), at most that lesser one plus the longest edge of the face. A face crossed by the isoline at
-// level L keeps every window whose distance reaches L inside it, and a window whose whole range is below L
-// there means the face is not crossed. So the isolines at those levels come out the same as without the
-// filter (test_curves.cpp checks it).
+// inside, else the lesser of its distances at the ends), at most its largest value over the face (at a corner:
+// it is convex) and the face's bound. A face crossed by the isoline at level L keeps every window whose distance
+// reaches L inside it, and a window whose whole range is below L there means the face is not crossed. So the
+// isolines at those levels come out the same as without the filter (test_curves.cpp checks it).
+//
+// The bound of each face (the least largest value over the face of its corners, of the windows recorded, and
+// of those found below a level all over it: an upper bound of the distance everywhere in the face) is kept
+// after the run (bound()): the extraction does not look for a rise of the field above a level in a face that
+// is below it all over.
 //
 // Threads: each thread appends to its own buffer (Propagation_scratch::crossed), which the loops hand over
-// with gather(); finish() sorts the crossings by face and by value, so the record does not depend on the
-// order of the appends.
+// with gather() (the sequential loop once, at the end); finish() orders the crossings by face: in the order of
+// the appends after a run of one thread (the same in every such run), by half-edge and values after a run of
+// several, so that the record does not depend on the order of the threads.
 class Face_crossing_record
 {
 public:
@@ -106,17 +112,18 @@ public:
     const double longest = (std::max)(L, (std::max)(g.l_prev, g.l_next));
     if(!m_levels.empty())
     {
-      // first the whole list: its least distance on the edge, and that plus the longest edge, hold no level?
-      double least = std::numeric_limits<double>::infinity();
-      for(const Window_ends& e : ends)
-        least = (std::min)(least, (std::min)(e.f0, e.f1));
-      // (a window's least distance is at least sigma - sy, its image to the line of the edge)
-      double lowest = least;
-      for(const Window& w : ws)
-        lowest = (std::min)(lowest, w.sigma - w.sy);
-      double highest = 0.;
-      for(const Window_ends& e : ends)
-        highest = (std::max)(highest, (std::min)(e.f0, e.f1));
+      // first the whole list (one pass): its least distance on the edge, and that plus the longest edge, hold no
+      // level? (a window's least distance is at least sigma - sy, its image to the line of the edge)
+      double least = std::numeric_limits<double>::infinity(), lowest = least, highest = 0.;
+      const std::size_t n = ws.size();
+      for(std::size_t i = 0; i < n; ++i)
+      {
+        const double c = (std::min)(ends[i].f0, ends[i].f1);
+        least = (std::min)(least, c);
+        highest = (std::max)(highest, c);
+        lowest = (std::min)(lowest, ws[i].sigma - ws[i].sy);
+      }
+      lowest = (std::min)(lowest, least);
       const auto it = std::lower_bound(m_levels.begin(), m_levels.end(), lowest);
       if(it == m_levels.end())
         return;
