@@ -102,39 +102,6 @@ inline double polyline_length(const Mesh_arrays& m, Index f, const std::vector<C
   return length;
 }
 
-// The zero of f on [a, b] where f(a) and f(b) have opposite signs (Illinois variant of regula falsi).
-template <class F>
-double bracketed_zero(F f, double a, double b, double fa, double fb, double tolerance)
-{
-  int side = 0;
-  for(int i = 0; i < 100; ++i)
-  {
-    const double c = (fa * b - fb * a) / (fa - fb);
-    if(!(c == c) || std::abs(b - a) <= tolerance)
-      return 0.5 * (a + b);
-    const double fc = f(c);
-    if(fc == 0. || std::abs(fc) <= tolerance * 1e-3)
-      return c;
-    if((fc < 0.) == (fb < 0.))
-    {
-      b = c;
-      fb = fc;
-      if(side == -1)
-        fa *= 0.5;
-      side = -1;
-    }
-    else
-    {
-      a = c;
-      fa = fc;
-      if(side == 1)
-        fb *= 0.5;
-      side = 1;
-    }
-  }
-  return 0.5 * (a + b);
-}
-
 // The abscissa u nearest to `near` where b + |(px, py) + u (dx, dy) - (cx, cy)| = level, the level of a circle's
 // distance along a line (NaN: the line does not reach that level).
 inline double circle_on_line(double px, double py, double dx, double dy, double cx, double cy, double b, double level,
@@ -155,8 +122,8 @@ inline double circle_on_line(double px, double py, double dx, double dy, double 
 // of one circle along a line minus a level (the field of a face along a line: the least of its candidates):
 // `g(u, next)` returns g(u) and sets `next` to where the circle that holds at u reaches the level
 // (circle_on_line(); NaN if unknown). Each step goes there if it stays inside the bracket (exact in one step
-// when the same circle holds at the zero), else takes the Illinois step (bracketed_zero() above); it stops when
-// |g| is at most `tolerance_g` or the bracket at most `tolerance`.
+// when the same circle holds at the zero), else takes the Illinois step (regula falsi, the value at an end that
+// stays twice halved); it stops when |g| is at most `tolerance_g` or the bracket at most `tolerance`.
 template <class G>
 double circle_zero(G g, double a, double b, double fa, double fb, double tolerance, double tolerance_g)
 {
@@ -193,6 +160,18 @@ double circle_zero(G g, double a, double b, double fa, double fb, double toleran
     u = next > a && next < b ? next : (fa * b - fb * a) / (fa - fb);
   }
   return 0.5 * (a + b);
+}
+
+// The zero of f on [a, b] where f(a) and f(b) have opposite signs: the Illinois steps of circle_zero() alone.
+template <class F>
+double bracketed_zero(F f, double a, double b, double fa, double fb, double tolerance)
+{
+  return circle_zero(
+    [&f](double u, double& next) {
+      next = std::numeric_limits<double>::quiet_NaN();
+      return f(u);
+    },
+    a, b, fa, fb, tolerance, tolerance * 1e-3);
 }
 
 // The pieces of the curves in the faces: the points where they cross edges (computed once per edge, from
