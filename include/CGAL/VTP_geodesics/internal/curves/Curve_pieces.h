@@ -238,6 +238,29 @@ public:
     return best;
   }
 
+  // The candidates of the faces of the lower half-edge c (m_cf, and m_cg of the face of its opposite, if any),
+  // and the edge in the frames of these faces: line[i] = {x, y, dx, dy}, the point (x, y) + u (dx, dy) at
+  // abscissa u from source(c)
+  void edge_candidates(Index c, double line[2][4])
+  {
+    const Index o = m_mesh.opposite[c];
+    m_field.candidates(Mesh_arrays::face(c), m_cf);
+    edge_point(c, 0., line[0][0], line[0][1]);
+    edge_point(c, 1., line[0][2], line[0][3]);
+    m_cg.clear();
+    if(o != NO_INDEX)
+    {
+      m_field.candidates(Mesh_arrays::face(o), m_cg);
+      edge_point(o, 1., line[1][0], line[1][1]);
+      edge_point(o, 0., line[1][2], line[1][3]);
+    }
+    for(int i = 0; i < (o != NO_INDEX ? 2 : 1); ++i)
+    {
+      line[i][2] -= line[i][0];
+      line[i][3] -= line[i][1];
+    }
+  }
+
   // The crossings of the level on the lower half-edge c (abscissae from source(c), increasing; at most 4) from
   // the field of the windows that crossed the faces (Curve_field::from_crossings()): each candidate of the two
   // faces is below the level on one interval of the edge (Curve_candidate::below_on_line()), the field on their
@@ -248,19 +271,8 @@ public:
   int exact_isoline_crossings(Index c, double level, double da, double db, double t[4])
   {
     const Index o = m_mesh.opposite[c];
-    m_field.candidates(Mesh_arrays::face(c), m_cf);
-    if(o != NO_INDEX)
-      m_field.candidates(Mesh_arrays::face(o), m_cg);
-    else
-      m_cg.clear();
     double line[2][4];
-    edge_point(c, 0., line[0][0], line[0][1]);
-    edge_point(c, 1., line[0][2], line[0][3]);
-    if(o != NO_INDEX)
-    {
-      edge_point(o, 1., line[1][0], line[1][1]);
-      edge_point(o, 0., line[1][2], line[1][3]);
-    }
+    edge_candidates(c, line);
     m_intervals.clear();
     for(int side = 0; side < (o != NO_INDEX ? 2 : 1); ++side)
     {
@@ -268,7 +280,7 @@ public:
       for(const Curve_candidate& q : side == 0 ? m_cf : m_cg)
       {
         double lo, hi;
-        if(q.below_on_line(l[0], l[1], l[2] - l[0], l[3] - l[1], level, lo, hi) && hi > 0. && lo < 1.)
+        if(q.below_on_line(l[0], l[1], l[2], l[3], level, lo, hi) && hi > 0. && lo < 1.)
           m_intervals.emplace_back(lo, hi);
       }
     }
@@ -319,24 +331,8 @@ public:
     if(below_a && below_b)
       return 0;
     const Index o = m_mesh.opposite[c];
-    m_field.candidates(Mesh_arrays::face(c), m_cf);
-    if(o != NO_INDEX)
-      m_field.candidates(Mesh_arrays::face(o), m_cg);
-    else
-      m_cg.clear();
-    // the edge in the frames of its faces: x + u dx (u from source(c)); of face(o): from its target
     double line[2][4];
-    edge_point(c, 0., line[0][0], line[0][1]);
-    edge_point(c, 1., line[0][2], line[0][3]);
-    line[0][2] -= line[0][0];
-    line[0][3] -= line[0][1];
-    if(o != NO_INDEX)
-    {
-      edge_point(o, 1., line[1][0], line[1][1]);
-      edge_point(o, 0., line[1][2], line[1][3]);
-      line[1][2] -= line[1][0];
-      line[1][3] -= line[1][1];
-    }
+    edge_candidates(c, line);
     auto g = [&](double u, double& next) {
       double best = std::numeric_limits<double>::infinity();
       int best_side = -1, best_which = -1;
