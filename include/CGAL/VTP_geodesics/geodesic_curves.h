@@ -176,7 +176,7 @@ extract_curves(const Solver& solver, const std::vector<double>* levels, const NP
     report->points = points;
     report->undecided = extraction.pieces().undecided;
     report->edge_fallbacks = extraction.pieces().edge_fallbacks + extraction.m_border_fallbacks;
-    report->junction_fallbacks = extraction.m_junction_fallbacks;
+    report->junction_fallbacks = extraction.pieces().junction_fallbacks;
   }
   return out;
 }

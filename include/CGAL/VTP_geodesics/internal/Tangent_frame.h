@@ -92,6 +92,19 @@ inline std::array<double, 2> halfedge_vector_in_frame(const Mesh_arrays& a, Inde
   return {{-q.cx, -q.cy}};
 }
 
+// x moved by a multiple of `sum` into [low, low + sum), x within a few turns of it (an angle in a fan whose
+// corner angles sum to `sum`)
+inline double wrap_in_fan(double x, double sum, double low)
+{
+  if(!(sum > 0.))
+    return x;
+  for(int k = 0; k < 8 && x < low; ++k)
+    x += sum;
+  for(int k = 0; k < 8 && x >= low + sum; ++k)
+    x -= sum;
+  return x;
+}
+
 // An angle brought into [0, 2 pi).
 inline double angle_in_0_2pi(double t)
 {

@@ -30,16 +30,6 @@ namespace CGAL {
 namespace VTP_geodesics {
 namespace internal {
 
-// A curve of a set (a level, or a pair of cells): its points, each in a face, consecutive points in a
-// common face; closed or open (an open curve ends on the border of the mesh, at a junction of three cells,
-// or where a corner of a face is unreached).
-struct Extracted_curve
-{
-  Index set;
-  bool closed;
-  std::vector<Curve_point> points;
-};
-
 // The isolines and the cell borders of a field (Curve_field.h). Which edges a curve crosses is decided by
 // the values at their ends (the vertex distances, or labels), as marching triangles would, so that the
 // pieces of two faces meet at the same edge point; where the curve crosses an edge and how it runs inside
@@ -100,7 +90,7 @@ public:
       }
     }
     m_edge_crossings.clear();
-    return chain(pieces, m);
+    return chain_pieces(pieces);
   }
 
   // The pieces of the isoline at `level` (set `set`) in face f (candidates c, corner distances d): the
@@ -304,7 +294,7 @@ public:
       }
       // three cells: the junction where the three are equal
       double jx = (ex[0] + ex[1] + ex[2]) / 3., jy = (ey[0] + ey[1] + ey[2]) / 3.;
-      junction(f, c, l, jx, jy);
+      m_pieces.junction(f, c, l, jx, jy);
       const Face_frame fr(m, f);
       const Curve_point jp = Curve_pieces::point_in_face(f, fr, jx, jy);
       for(int k = 0; k < 3; ++k)
@@ -324,7 +314,7 @@ public:
         add_area(l[k], part, bound);
       }
     }
-    return chain(pieces, m);
+    return chain_pieces(pieces);
   }
 
 private:
@@ -390,107 +380,6 @@ private:
     pieces.push_back(std::move(piece));
   }
 
-  // Newton's method on (value_l0 - value_l1, value_l1 - value_l2) = 0 from (x, y), kept in the face
-  void junction(Index f, const std::vector<Curve_candidate>& c, const Index l[3], double& x, double& y)
-  {
-    const Face_frame fr(m_pieces.field().mesh(), f);
-    auto g = [&](double px, double py, double& g0, double& g1) {
-      const double v0 = Curve_field::value(c, px, py, l[0]), v1 = Curve_field::value(c, px, py, l[1]),
-                   v2 = Curve_field::value(c, px, py, l[2]);
-      g0 = v0 - v1;
-      g1 = v1 - v2;
-    };
-    const double scale = std::abs(fr.x[1]) + std::abs(fr.x[2]) + std::abs(fr.y[2]);
-    const double step = 1e-7 * scale;
-    for(int i = 0; i < 30; ++i)
-    {
-      double g0, g1, a0, a1, b0, b1;
-      g(x, y, g0, g1);
-      if(std::abs(g0) + std::abs(g1) <= 1e-15 * scale)
-        break;
-      g(x + step, y, a0, a1);
-      g(x, y + step, b0, b1);
-      const double j00 = (a0 - g0) / step, j10 = (a1 - g1) / step, j01 = (b0 - g0) / step, j11 = (b1 - g1) / step;
-      const double det = j00 * j11 - j01 * j10;
-      if(!(std::abs(det) > 0.) || !std::isfinite(det))
-        break;
-      const double nx = x - (j11 * g0 - j01 * g1) / det, ny = y - (-j10 * g0 + j00 * g1) / det;
-      // keep the point in the face
-      const Curve_point p = Curve_pieces::point_in_face(f, fr, nx, ny);
-      if(!(p.b[0] >= -1e-9 && p.b[1] >= -1e-9 && p.b[2] >= -1e-9))
-      {
-        ++m_junction_fallbacks;
-        break;
-      }
-      x = nx;
-      y = ny;
-    }
-  }
-
-  // Joins the pieces of each set into curves, at the keys of their ends.
-  static std::vector<Extracted_curve> chain(std::vector<Curve_piece>& pieces, const Mesh_arrays&)
-  {
-    std::stable_sort(pieces.begin(), pieces.end(),
-                     [](const Curve_piece& a, const Curve_piece& b) { return a.set < b.set; });
-    std::vector<Extracted_curve> curves;
-    std::vector<char> used(pieces.size(), 0);
-    std::unordered_map<Index, std::vector<std::size_t> > at;  // key -> 2 * piece + end
-    for(std::size_t begin = 0; begin < pieces.size();)
-    {
-      std::size_t end = begin;
-      while(end < pieces.size() && pieces[end].set == pieces[begin].set)
-        ++end;
-      at.clear();
-      for(std::size_t i = begin; i < end; ++i)
-        for(int e = 0; e < 2; ++e)
-          at[pieces[i].key[e]].push_back(2 * i + static_cast<std::size_t>(e));
-      auto walk = [&](std::size_t i, int e) {
-        Extracted_curve curve;
-        curve.set = pieces[i].set;
-        curve.closed = false;
-        const std::size_t first = i;
-        for(;;)
-        {
-          used[i] = 1;
-          std::vector<Curve_point>& p = pieces[i].points;
-          if(e == 1)
-            std::reverse(p.begin(), p.end());
-          curve.points.insert(curve.points.end(), p.begin() + (curve.points.empty() ? 0 : 1), p.end());
-          const Index key = pieces[i].key[1 - e];
-          std::size_t next = pieces.size();
-          int next_end = 0;
-          for(std::size_t x : at[key])
-            if(x / 2 != i && (!used[x / 2] || x / 2 == first))
-            {
-              next = x / 2;
-              next_end = static_cast<int>(x % 2);
-              break;
-            }
-          if(next == first)
-          {
-            curve.closed = true;
-            curve.points.pop_back();
-            break;
-          }
-          if(next == pieces.size())
-            break;
-          i = next;
-          e = next_end;
-        }
-        curves.push_back(std::move(curve));
-      };
-      for(std::size_t i = begin; i < end; ++i)  // open curves from their ends
-        for(int e = 0; e < 2 && !used[i]; ++e)
-          if(at[pieces[i].key[e]].size() == 1)
-            walk(i, e);
-      for(std::size_t i = begin; i < end; ++i)  // closed curves
-        if(!used[i])
-          walk(i, 0);
-      begin = end;
-    }
-    return curves;
-  }
-
   void add_area(Index label, double area, double bound)
   {
     const std::size_t i = static_cast<std::size_t>(label);
@@ -510,8 +399,8 @@ private:
     int count;
     double t[4];
   };
-  std::unordered_map<std::uint64_t, Edge_crossings> m_edge_crossings;
-  std::vector<Curve_piece> m_trial, m_kept;  // (face_isoline(): the pieces of a face, the two ways to join)  // (isolines(): key lower half-edge, set)
+  std::unordered_map<std::uint64_t, Edge_crossings> m_edge_crossings;  // (isolines(): key lower half-edge, set)
+  std::vector<Curve_piece> m_trial, m_kept;  // (face_isoline(): the pieces of a face, the two ways to join)
   std::uint64_t m_number_of_sets = 1;
   std::vector<Curve_candidate> m_cf, m_cg;
 
@@ -521,7 +410,7 @@ public:
   std::vector<double> areas, area_bounds;
 
 public:
-  std::size_t m_border_fallbacks = 0, m_junction_fallbacks = 0;
+  std::size_t m_border_fallbacks = 0;
 };
 
 } // namespace internal

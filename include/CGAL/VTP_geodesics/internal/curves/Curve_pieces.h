@@ -15,6 +15,8 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/internal/curves/Curve_field.h>
+#include <CGAL/VTP_geodesics/internal/curves/Curve_polylines.h>
+#include <CGAL/VTP_geodesics/internal/curves/Curve_roots.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,153 +28,6 @@
 namespace CGAL {
 namespace VTP_geodesics {
 namespace internal {
-
-// A point of a curve: face f and its barycentric coordinates (corners source(3f + k)).
-struct Curve_point
-{
-  Index face;
-  double b[3];
-};
-
-// The part of a curve inside one face, from an end to the other; an end is an edge point (key: twice the lower
-// half-edge of the edge, plus 1 for the second crossing of an edge along it) or a junction of three cells
-// (key: twice the number of half-edges, plus the face).
-struct Curve_piece
-{
-  Index set;
-  Index key[2];
-  std::vector<Curve_point> points;
-};
-
-// the area of face f (from its frame)
-inline double face_area(const Mesh_arrays& m, Index f)
-{
-  const Halfedge_geometry g = m.geometry[3 * f];
-  return 0.5 * g.length * g.cy;
-}
-
-inline void frame_point(const Face_frame& fr, const Curve_point& p, double& x, double& y)
-{
-  x = p.b[1] * fr.x[1] + p.b[2] * fr.x[2];
-  y = p.b[2] * fr.y[2];
-}
-
-// the area of the polygon of corner k of face f, the points of `first` in order, then those of `second`
-// backwards (if not null)
-inline double polygon_area(const Mesh_arrays& m, Index f, int k, const std::vector<Curve_point>& first,
-                         const std::vector<Curve_point>* second)
-{
-  const Face_frame fr(m, f);
-  std::vector<std::pair<double, double> > q;
-  q.emplace_back(fr.x[k], fr.y[k]);
-  double x, y;
-  for(const Curve_point& p : first)
-  {
-    frame_point(fr, p, x, y);
-    q.emplace_back(x, y);
-  }
-  if(second != nullptr)
-    for(std::size_t i = second->size(); i-- > 0;)
-    {
-      frame_point(fr, (*second)[i], x, y);
-      q.emplace_back(x, y);
-    }
-  double twice = 0.;
-  for(std::size_t i = 0; i < q.size(); ++i)
-  {
-    const std::pair<double, double>& a = q[i];
-    const std::pair<double, double>& b = q[(i + 1) % q.size()];
-    twice += a.first * b.second - a.second * b.first;
-  }
-  return 0.5 * std::abs(twice);
-}
-
-inline double polyline_length(const Mesh_arrays& m, Index f, const std::vector<Curve_point>& points)
-{
-  const Face_frame fr(m, f);
-  double length = 0., x0 = 0., y0 = 0., x, y;
-  for(std::size_t i = 0; i < points.size(); ++i)
-  {
-    frame_point(fr, points[i], x, y);
-    if(i > 0)
-      length += std::hypot(x - x0, y - y0);
-    x0 = x;
-    y0 = y;
-  }
-  return length;
-}
-
-// The abscissa u nearest to `near` where b + |(px, py) + u (dx, dy) - (cx, cy)| = level, the level of a circle's
-// distance along a line (NaN: the line does not reach that level).
-inline double circle_on_line(double px, double py, double dx, double dy, double cx, double cy, double b, double level,
-                             double near)
-{
-  const double r = level - b;
-  const double qx = px - cx, qy = py - cy;
-  const double a2 = dx * dx + dy * dy, bq = qx * dx + qy * dy, cq = qx * qx + qy * qy - r * r;
-  const double disc = bq * bq - a2 * cq;
-  if(!(r >= 0.) || !(disc >= 0.) || !(a2 > 0.))
-    return std::numeric_limits<double>::quiet_NaN();
-  const double q = -(bq + (bq < 0. ? -1. : 1.) * std::sqrt(disc));  // (the two roots without cancellation)
-  const double u1 = q / a2, u2 = q != 0. ? cq / q : u1;
-  return std::abs(u1 - near) <= std::abs(u2 - near) ? u1 : u2;
-}
-
-// The zero of g on [a, b], where g(a) and g(b) have opposite signs and g is, around each abscissa, the distance
-// of one circle along a line minus a level (the field of a face along a line: the least of its candidates):
-// `g(u, next)` returns g(u) and sets `next` to where the circle that holds at u reaches the level
-// (circle_on_line(); NaN if unknown). Each step goes there if it stays inside the bracket (exact in one step
-// when the same circle holds at the zero), else takes the Illinois step (regula falsi, the value at an end that
-// stays twice halved); it stops when |g| is at most `tolerance_g` or the bracket at most `tolerance`.
-template <class G>
-double circle_zero(G g, double a, double b, double fa, double fb, double tolerance, double tolerance_g)
-{
-  double u = (fa * b - fb * a) / (fa - fb);
-  int side = 0;
-  for(int i = 0; i < 100; ++i)
-  {
-    if(!(u > a && u < b))
-      u = 0.5 * (a + b);
-    double next;
-    const double fu = g(u, next);
-    if(!(fu == fu))
-      return 0.5 * (a + b);
-    if(std::abs(fu) <= tolerance_g)
-      return u;
-    if((fu < 0.) == (fb < 0.))
-    {
-      b = u;
-      fb = fu;
-      if(side == -1)
-        fa *= 0.5;
-      side = -1;
-    }
-    else
-    {
-      a = u;
-      fa = fu;
-      if(side == 1)
-        fb *= 0.5;
-      side = 1;
-    }
-    if(std::abs(b - a) <= tolerance)
-      return std::abs(fa) <= std::abs(fb) ? a : b;
-    u = next > a && next < b ? next : (fa * b - fb * a) / (fa - fb);
-  }
-  return 0.5 * (a + b);
-}
-
-// The zero of f on [a, b] where f(a) and f(b) have opposite signs: the Illinois steps of circle_zero() alone.
-template <class F>
-double bracketed_zero(F f, double a, double b, double fa, double fb, double tolerance)
-{
-  return circle_zero(
-    [&f](double u, double& next) {
-      next = std::numeric_limits<double>::quiet_NaN();
-      return f(u);
-    },
-    a, b, fa, fb, tolerance, tolerance * 1e-3);
-}
 
 // The pieces of the curves in the faces: the points where they cross edges (computed once per edge, from
 // the candidates of its two faces, in the same way from either face) and the points in between, each on
@@ -186,6 +41,8 @@ public:
   std::size_t undecided = 0;
   // edge points placed by linear interpolation (the candidates did not bracket the level on the edge)
   std::size_t edge_fallbacks = 0;
+  // junctions of three cells whose Newton step left the face (junction())
+  std::size_t junction_fallbacks = 0;
 
   // The value along edge e = (lower half-edge c) at abscissa t in [0, 1] from source(c): phi(candidates of
   // the face, point in its frame) over both faces.
@@ -447,6 +304,44 @@ public:
       else
         ++undecided;
       out.push_back(point_in_face(f, fr, px, py));
+    }
+  }
+
+  // The junction of three cells in face f: Newton's method on (value_l0 - value_l1, value_l1 - value_l2) = 0
+  // from (x, y), kept in the face
+  void junction(Index f, const std::vector<Curve_candidate>& c, const Index l[3], double& x, double& y)
+  {
+    const Face_frame fr(m_mesh, f);
+    auto g = [&](double px, double py, double& g0, double& g1) {
+      const double v0 = Curve_field::value(c, px, py, l[0]), v1 = Curve_field::value(c, px, py, l[1]),
+                   v2 = Curve_field::value(c, px, py, l[2]);
+      g0 = v0 - v1;
+      g1 = v1 - v2;
+    };
+    const double scale = std::abs(fr.x[1]) + std::abs(fr.x[2]) + std::abs(fr.y[2]);
+    const double step = 1e-7 * scale;
+    for(int i = 0; i < 30; ++i)
+    {
+      double g0, g1, a0, a1, b0, b1;
+      g(x, y, g0, g1);
+      if(std::abs(g0) + std::abs(g1) <= 1e-15 * scale)
+        break;
+      g(x + step, y, a0, a1);
+      g(x, y + step, b0, b1);
+      const double j00 = (a0 - g0) / step, j10 = (a1 - g1) / step, j01 = (b0 - g0) / step, j11 = (b1 - g1) / step;
+      const double det = j00 * j11 - j01 * j10;
+      if(!(std::abs(det) > 0.) || !std::isfinite(det))
+        break;
+      const double nx = x - (j11 * g0 - j01 * g1) / det, ny = y - (-j10 * g0 + j00 * g1) / det;
+      // keep the point in the face
+      const Curve_point p = point_in_face(f, fr, nx, ny);
+      if(!(p.b[0] >= -1e-9 && p.b[1] >= -1e-9 && p.b[2] >= -1e-9))
+      {
+        ++junction_fallbacks;
+        break;
+      }
+      x = nx;
+      y = ny;
     }
   }
 

@@ -314,18 +314,6 @@ public:
   }
 
 private:
-  // x moved by a multiple of `sum` into [low, low + sum) (x within a few turns of it)
-  static double wrap_in_fan(double x, double sum, double low)
-  {
-    if(!(sum > 0.))
-      return x;
-    for(int k = 0; k < 8 && x < low; ++k)
-      x += sum;
-    for(int k = 0; k < 8 && x >= low + sum; ++k)
-      x -= sum;
-    return x;
-  }
-
   // The fan of faces around source(h) that holds h: its first half-edge, counter-clockwise (the border
   // half-edge leaving the vertex, or the least half-edge of a closed fan).
   Index fan_first(Index h, bool& border) const
