@@ -302,7 +302,7 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
                                       .targets(targets)
                                       .stop_at_targets(request.stop_at_targets)
                                       .record_paths(!request.paths.empty())
-                                      .curve_levels(levels));
+                                      .keep_field(true));
       });
       r.curves = extract_curve_sets(solver, isolines, label_of_source);
       r.curves.insert(r.curves.end(), border_sets.begin(), border_sets.end());

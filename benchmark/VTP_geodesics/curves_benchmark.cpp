@@ -1,20 +1,19 @@
 // vtp_curves_benchmark: the cost and the exactness of the isolines and cell borders of geodesic_curves.h on a
 // mesh (doc/VTP_geodesics/curves.txt).
 //
-//   vtp_curves_benchmark MESH [--levels N] [--samples K] [--sources S] [--refine R] [--record paths|levels|all]
+//   vtp_curves_benchmark MESH [--levels N] [--samples K] [--sources S] [--refine R] [--record paths|field]
 //
 // A distance run from vertex 0 without record gives the largest distance and the N levels (default 20: the
-// largest distance times i / (N + 1)); then the same run with the record of the curves (--record: `levels`, the
-// default: curve_levels(levels), the windows that may reach a level; `all`:
-// record_curves(true), every window that crosses a face; `paths`: record_paths(true) only, the field from the
-// per-vertex record), timed beside the run without record, with the memory of the record, and the
+// largest distance times i / (N + 1)); then the same run with the record of the curves (--record: `field`, the
+// default: keep_field(true), every window that crosses a face; `paths`: record_paths(true) only, the field from
+// the per-vertex record), timed beside the run without record, with the memory of the record, and the
 // isolines at the N levels, timed: the cost is (recorded run - plain run + extraction) / plain run. Then K points
 // (default 1,000) taken evenly from all the isoline points, each checked by one exact run that has them all as
 // targets: |exact distance - level| / largest distance; beside it, for the same points, what the linear
 // interpolation of the vertex distances gives: |interpolated - exact| / largest distance. With S > 1, the
 // borders of the cells of S sources (vertices spread over the index range) are checked the same way (the
-// two cells' sources, one run each): |d_i - d_j| / largest distance; the borders' run records every window
-// (record_curves(true)) unless --record paths. With R > 0, the isolines are refined by R exact runs (named
+// two cells' sources, one run each): |d_i - d_j| / largest distance; the borders' run keeps the field
+// (keep_field(true)) unless --record paths. With R > 0, the isolines are refined by R exact runs (named
 // parameter exact_refinement).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -69,7 +68,7 @@ int main(int argc, char** argv)
     return 2;
   }
   int number_of_levels = 20, sources_count = 1, refine = 0, repeat = 1;
-  std::string record = "levels";
+  std::string record = "field";
   std::size_t samples = 1000;
   for(int i = 2; i + 1 < argc; i += 2)
   {
@@ -84,8 +83,7 @@ int main(int argc, char** argv)
       refine = std::atoi(argv[i + 1]);
     else if(a == "--sources")
       sources_count = std::atoi(argv[i + 1]);
-    else if(a == "--record" && (std::string(argv[i + 1]) == "paths" || std::string(argv[i + 1]) == "levels"
-                                || std::string(argv[i + 1]) == "all"))
+    else if(a == "--record" && (std::string(argv[i + 1]) == "paths" || std::string(argv[i + 1]) == "field"))
       record = argv[i + 1];
     else
     {
@@ -137,14 +135,12 @@ int main(int argc, char** argv)
     t0 = std::chrono::steady_clock::now();
     if(record == "paths")
       solver.compute(discard, source, VG::parameters::record_paths(true));
-    else if(record == "all")
-      solver.compute(discard, source, VG::parameters::record_curves(true));
     else
-      solver.compute(discard, source, VG::parameters::curve_levels(levels));
+      solver.compute(discard, source, VG::parameters::keep_field(true));
     recorded = (std::min)(recorded, seconds_since(t0));
     recorded_cpu = (std::min)(recorded_cpu, cpu_seconds() - c0);
   }
-  const auto& crossings = solver.engine().face_crossings();
+  const VG::Propagation_statistics kept = solver.statistics();
   VG::Geodesic_curves_report report;
   t0 = std::chrono::steady_clock::now();
   const double c0 = cpu_seconds();
@@ -152,8 +148,10 @@ int main(int argc, char** argv)
   const double extraction = seconds_since(t0), extraction_cpu = cpu_seconds() - c0;
   std::cout << argv[1] << ": " << mesh.number_of_vertices() << " vertices, " << mesh.number_of_faces() << " faces\n"
             << "distance run " << plain << " s, with the record (" << record << ") " << recorded << " s: "
-            << crossings.size() << " window crossings kept of " << st.windows_propagated << ", "
-            << crossings.bytes() / 1e6 << " MB; " << number_of_levels
+            << kept.field_pieces << " pieces kept of " << st.windows_propagated << " windows propagated, "
+            << kept.field_bytes / 1e6 << " MB (" << static_cast<double>(kept.field_bytes) / mesh.number_of_vertices()
+            << " bytes per vertex, " << static_cast<double>(kept.field_pieces) / mesh.number_of_faces() << " pieces per face); "
+            << number_of_levels
             << " levels: " << curves.size() << " curves, " << report.points << " points in " << extraction
             << " s; cost (recorded run - plain run + extraction) / plain run = "
             << 100. * (recorded - plain + extraction) / plain << "% (extraction alone " << 100. * extraction / plain
@@ -205,11 +203,11 @@ int main(int argc, char** argv)
     solver.compute(discard, sources, VG::parameters::record_paths(true));
     const double border_plain = seconds_since(t0);
     t0 = std::chrono::steady_clock::now();
-    solver.compute(discard, sources, VG::parameters::record_paths(record == "paths").record_curves(record != "paths"));
+    solver.compute(discard, sources, VG::parameters::record_paths(record == "paths").keep_field(record != "paths"));
     const double border_recorded = seconds_since(t0);
-    std::cout << sources_count << " sources: run with record_paths " << border_plain << " s, with record_curves("
-              << (record != "paths") << ") " << border_recorded << " s: " << crossings.size() << " window crossings, "
-              << crossings.bytes() / 1e6 << " MB\n";
+    std::cout << sources_count << " sources: run with record_paths " << border_plain << " s, with keep_field("
+              << (record != "paths") << ") " << border_recorded << " s: " << solver.statistics().field_pieces
+              << " pieces, " << solver.statistics().field_bytes / 1e6 << " MB\n";
     VG::Geodesic_curves_report border_report;
     t0 = std::chrono::steady_clock::now();
     const auto borders = VG::geodesic_cell_borders(solver, VG::parameters::default_values(), &border_report);

@@ -52,12 +52,8 @@ py::list Core_solver::curves(const Index_array& sources, const Index_array& poin
     std::lock_guard<std::mutex> lock(m_mutex);
     set_sources(mesh_sources, source_points);
     const CGAL::Constant_property_map<Vertex_index, double> no_map;
-    // isolines: the record of the windows that cross the faces and may reach a level (exact curves); borders: the
-    // per-vertex record (every window would be exact but costs O(windows) memory, doc/VTP_geodesics/curves.txt)
-    if(borders || level_list.empty())
-      m_solver->compute<CGAL::Sequential_tag>(no_map, VTP::parameters::record_paths(true).statistics(m_statistics));
-    else
-      m_solver->compute<CGAL::Sequential_tag>(no_map, VTP::parameters::curve_levels(level_list).statistics(m_statistics));
+    // isolines and borders on the kept field (every window that crossed a face: exact curves)
+    m_solver->compute<CGAL::Sequential_tag>(no_map, VTP::parameters::keep_field(true).statistics(m_statistics));
     const double tolerance = chord_tolerance > 0. ? chord_tolerance : 1e-3 * m_solver->mean_edge_length();
     const auto np = VTP::parameters::chord_tolerance(tolerance).exact_refinement(exact_refinement);
     curves = borders ? VTP::geodesic_cell_borders(*m_solver, np) : VTP::geodesic_isolines(*m_solver, level_list, np);

@@ -132,7 +132,8 @@ class Solver(Queries, Matrices, Sampling, LogMap, Curves, Patches):
         """The library's statistics of the last computation, as a dict.
 
         Keys: method, threads, vertices, faces, sources, windows_created, windows_propagated,
-        peak_live_windows, peak_window_bytes, vertices_processed, pseudo_sources, resets, stopped_early,
+        peak_live_windows, peak_window_bytes, field_pieces, field_bytes (the kept field of ``keep_field=True``),
+        vertices_processed, pseudo_sources, resets, stopped_early,
         rounds, parallel_rounds, round_selection_seconds, round_propagation_seconds, round_merge_seconds (the
         stages of the parallel rounds), reached_vertices, max_distance, seconds (the propagation, wall clock),
         output_seconds, preprocessing_seconds (the library's preprocessing in the constructor) and

@@ -21,6 +21,7 @@
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
+#include <CGAL/VTP_geodesics/internal/field/Field_queries.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
 #include <CGAL/VTP_geodesics/internal/solver/Log_map_output.h>
 #include <CGAL/VTP_geodesics/internal/solver/Many_sources.h>
@@ -322,6 +323,38 @@ public:
   const Propagation_statistics& statistics() const { return m_statistics; }
   /// @}
 
+  /// \name The kept field
+  /// With the named parameter `keep_field(true)` (exact methods: VTP, PVTP), a computation keeps every window
+  /// that crossed a face (O(windows propagated) memory: `field_bytes()`), until the next computation. The
+  /// distance inside a face is the least, over its corners, the sources in it and those windows, of the
+  /// length of a real path to the point, which is the exact geodesic distance (the manual, curves, says why).
+  /// These queries answer from it, without a new propagation; so do `geodesic_isolines()`,
+  /// `geodesic_cell_borders()` and `geodesic_voronoi_cell_areas()`. They are not to be called concurrently.
+  /// @{
+
+  /// whether the last computation kept the field.
+  bool has_kept_field() const { return m_engine.kept_field().is_active(); }
+  /// the bytes the kept field holds (0 without it).
+  std::size_t field_bytes() const { return m_engine.kept_field().bytes(); }
+  /// the exact distance of the last computation at `p` (a `vertex_descriptor` or a face location): its
+  /// distance to the nearest source, `+infinity` if no source reaches it or it lies beyond the distance limit.
+  /// \throws Invalid_input_error if the last computation did not keep the field, or `p` is not a vertex or a
+  /// point of the mesh.
+  template <class VertexOrLocation>
+  double field_distance(const VertexOrLocation& p) const
+  {
+    return field_at(p).first;
+  }
+  /// the nearest source of the last computation at `p` (its index, as the named parameter
+  /// `nearest_source_map` gives it), `no_source` where `field_distance(p)` is infinite. Where two sources are
+  /// equally near, either. \throws Invalid_input_error as `field_distance()`.
+  template <class VertexOrLocation>
+  std::size_t field_nearest_source(const VertexOrLocation& p) const
+  {
+    return field_at(p).second;
+  }
+  /// @}
+
   /// \name Geodesic paths
   /// The shortest path from a vertex or a point of the surface back to its nearest source, after a
   /// computation. With the named parameter `record_paths(true)` the computation keeps, for each vertex and
@@ -414,6 +447,13 @@ public:
   const internal::Mesh_arrays& mesh_arrays() const { return m_mesh.arrays; }
   const internal::Mesh_index<TriangleMesh>& mesh_index() const { return m_mesh; }  // (geodesic_curves.h)
   const internal::Propagation_engine& engine() const { return m_engine; }
+  // the queries on the field of the last computation (built on the first call after it)
+  const internal::Field_queries& field_queries() const
+  {
+    if(!m_field_queries)
+      m_field_queries.reset(new internal::Field_queries(m_mesh.arrays, m_engine, m_mesh.length_scale));
+    return *m_field_queries;
+  }
   /// \endcond
 
 private:
@@ -426,9 +466,23 @@ private:
     m_preprocessing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
 
+  template <class VertexOrLocation>
+  std::pair<double, std::size_t> field_at(const VertexOrLocation& p) const
+  {
+    if(!has_kept_field())
+      throw Invalid_input_error("the last computation kept no field: compute with keep_field(true)");
+    const internal::Seed s = m_mesh.seed_of(p, 0, "the point", m_mesh.no_position);
+    const std::pair<double, internal::Index> r = field_queries().at(s);
+    return std::make_pair(r.first * m_mesh.length_scale,
+                          r.second == internal::NO_INDEX ? no_source : static_cast<std::size_t>(r.second));
+  }
+
   template <class ConcurrencyTag, class NamedParameters>
   void run(std::vector<internal::Seed> seeds, const NamedParameters& np)
-  { internal::run_solver<ConcurrencyTag>(m_mesh, m_vpm, std::move(seeds), np, m_engine, m_distances, m_paths, m_statistics); }
+  {
+    m_field_queries.reset();
+    internal::run_solver<ConcurrencyTag>(m_mesh, m_vpm, std::move(seeds), np, m_engine, m_distances, m_paths, m_statistics);
+  }
 
   Vertex_point_map m_vpm;
   Geom_traits m_traits;
@@ -441,6 +495,7 @@ private:
   internal::Path_queries m_paths;  // remembers the parameters of the last computation
   std::vector<std::unique_ptr<internal::Propagation_engine> > m_workspaces;  // of compute_each(), one per thread
   std::vector<std::unique_ptr<internal::Local_propagation> > m_patches;  // workspaces of the polar patches
+  mutable std::unique_ptr<internal::Field_queries> m_field_queries;       // (field_queries())
 };
 
 } // namespace VTP_geodesics

@@ -46,6 +46,10 @@ struct Propagation_statistics
   /// Number of times a vertex was taken from the queue / buckets, and pseudo-source emissions.
   std::size_t vertices_processed = 0;
   std::size_t pseudo_sources = 0;
+  /// With `keep_field(true)`: the pieces of the kept field (the windows that crossed a face) and the bytes it
+  /// holds (0 without it).
+  std::size_t field_pieces = 0;
+  std::size_t field_bytes = 0;
   /// Number of window resets (approximate variants only).
   std::size_t resets = 0;
   /// Whether the propagation stopped before the end, at the distance limit or once every target was final.

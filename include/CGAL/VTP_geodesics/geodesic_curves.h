@@ -80,10 +80,9 @@ extract_curves(const Solver& solver, const std::vector<double>* levels, const NP
   typedef Geodesic_curve<typename Solver::face_descriptor, typename Solver::Point_3> Curve;
   const auto& index = solver.mesh_index();
   const Propagation_engine& engine = solver.engine();
-  const Face_crossing_record& crossings = engine.face_crossings();
-  if(!engine.path_record().is_active() && !crossings.is_active())
-    throw Invalid_input_error("curves need the record of the last computation: compute with record_curves(true), "
-                              "curve_levels(levels) or record_paths(true)");
+  if(!engine.path_record().is_active() && !engine.kept_field().is_active())
+    throw Invalid_input_error("curves need the field of the last computation: compute with keep_field(true) "
+                              "(exact), or record_paths(true)");
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, index.tm));
   const double scale = index.length_scale;
@@ -91,22 +90,8 @@ extract_curves(const Solver& solver, const std::vector<double>* levels, const NP
                                             1e-3 * solver.mean_edge_length());
   if(!(tolerance > 0.) || !std::isfinite(tolerance))
     throw Invalid_input_error("the chord tolerance must be positive and finite");
-  std::vector<double> distances(engine.distances());
-  for(double& d : distances)
-    d /= scale;
   const Mesh_arrays& m = index.arrays;
-  if(crossings.is_filtered())
-  {
-    // (a record kept for some levels is exact at those levels only)
-    if(levels == nullptr)
-      throw Invalid_input_error("the cell borders need the record of every window: compute with record_curves(true), "
-                                "not curve_levels()");
-    for(double l : *levels)
-      if(!std::binary_search(crossings.levels().begin(), crossings.levels().end(), l / scale))
-        throw Invalid_input_error("level " + std::to_string(l) + " is not one of the curve_levels() of the computation");
-  }
-  const Curve_field field(m, engine.path_record(), engine.seeds(), distances, engine.labels(),
-                          crossings.is_active() ? &crossings : nullptr);
+  const Curve_field& field = solver.field_queries().field();
   Curve_extraction extraction(field, tolerance / scale);
   std::vector<Extracted_curve> curves;
   std::vector<std::pair<Index, Index> > pairs;
@@ -190,17 +175,16 @@ extract_curves(const Solver& solver, const std::vector<double>* levels, const NP
 /// (or where a face has an unreached corner). Curves are ordered by level (in the order of `levels`).
 ///
 /// Which edges an isoline crosses is decided by the vertex distances (a vertex at the level counts as above
-/// it). Where it crosses an edge and how it runs inside a face come from the exact field inside the faces:
-/// from the trace-back record of the computation, each face gets candidate images (its corners, the image
-/// of the source or pseudo-source through which each corner was reached, the sources in the face) and the
+/// it). Where it crosses an edge and how it runs inside a face come from the field inside the faces: each face
+/// has candidates (its corners, the sources in it, and with the kept field every window that crossed it) and the
 /// distance at a point is the least candidate distance (arcs of circles meeting where candidates switch),
-/// sampled so that the chords are within `chord_tolerance` of the arcs. See the user manual (curves) for
-/// where this is exact and what is done elsewhere.
+/// sampled so that the chords are within `chord_tolerance` of the arcs. With the kept field this is the exact
+/// distance; from the trace-back record only (`record_paths(true)`), the candidates are the images through
+/// which the corners were reached, which is not exact everywhere (see the manual, curves).
 ///
-/// \param solver a `Geodesic_distance_solver` whose last computation kept a record: `curve_levels(levels)` (the
-///   windows that crossed each face and may reach these levels: exact at them), `record_curves(true)` (every
-///   window that crossed a face: exact at every level, and the borders), or `record_paths(true)` (per vertex only:
-///   the candidates that reached the corners, not exact everywhere; see the manual, curves)
+/// \param solver a `Geodesic_distance_solver` whose last computation kept its field (`keep_field(true)`: exact
+///   at every level, and the borders) or recorded its paths (`record_paths(true)`: per vertex only, also after
+///   the approximate methods)
 /// \param levels the levels, in the unit of the mesh
 /// \param np optional: `chord_tolerance` (the largest distance of a chord to its arc, default 1e-3 times
 ///   the mean edge length), `vertex_point_map` (default: that of the mesh), `exact_refinement` (a number of
@@ -209,7 +193,7 @@ extract_curves(const Solver& solver, const std::vector<double>* levels, const NP
 ///   each costs about one distance run)
 /// \param report optional: what could not be placed from the field of the faces
 /// \throws Invalid_input_error if a level is negative or not a number, the tolerance is not positive, or the
-/// last computation did not record paths.
+/// last computation kept neither its field nor its paths.
 template <class Solver, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<Geodesic_curve<typename Solver::face_descriptor, typename Solver::Point_3> >
 geodesic_isolines(const Solver& solver, const std::vector<double>& levels,
@@ -258,12 +242,12 @@ geodesic_cell_borders(const Solver& solver, const NamedParameters& np = paramete
 
 /// \ingroup PkgVTPGeodesicsRef
 /// The area of the geodesic Voronoi cell of each source of the last computation of `solver` (which used
-/// `record_paths(true)`), from the split of the faces by the borders of `geodesic_cell_borders()`: a face whose
+/// `keep_field(true)`, or `record_paths(true)`), from the split of the faces by the borders of `geodesic_cell_borders()`: a face whose
 /// corners have one label is in that cell; a face with two or three labels is cut along the border pieces (the
 /// polygons of its corners). The areas add up to the area of the faces whose corners are all reached (to
 /// rounding). `uncertainty[i]`: the chord tolerance times the length of the border of cell i, a bound of the
 /// area between the chords and the borders (where the borders are exact; see the manual, curves).
-/// \param solver a solver whose last computation used `record_paths(true)`, from several sources.
+/// \param solver a solver whose last computation kept its field or its paths, from several sources.
 /// \param np optional: `chord_tolerance`, `vertex_point_map` (as `geodesic_isolines()`)
 /// \throws Invalid_input_error as `geodesic_cell_borders()`.
 template <class Solver, class NamedParameters = CGAL::parameters::Default_named_parameters>

@@ -45,7 +45,7 @@ constexpr std::size_t no_source = (std::numeric_limits<std::size_t>::max)();
   X(virtual_sources_per_vertex) X(initial_distances) X(initial_nearest_sources) X(first_source_label)    \
   X(first_sample) X(sampling_radius) X(covering_radii) X(vertex_distance_map) X(log_map) X(log_map_via)      \
   X(log_map_strict) X(reference_direction) X(chord_tolerance) X(exact_refinement) \
-  X(record_curves) X(curve_levels)
+  X(keep_field)
 
 // The names of CGAL's named parameters that a chain of this package can hold: X(NAME, TAG_TYPE).
 #define CGAL_VTP_GEODESICS_FOR_EACH_CGAL_NAMED_PARAMETER(X)                                              \

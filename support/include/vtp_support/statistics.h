@@ -78,6 +78,8 @@ void for_each_statistic(Statistics& s, F&& f)
   f("windows_propagated", s.windows_propagated, U::count);
   f("peak_live_windows", s.peak_live_windows, U::count);
   f("peak_window_bytes", s.peak_window_bytes, U::bytes);
+  f("field_pieces", s.field_pieces, U::count);
+  f("field_bytes", s.field_bytes, U::bytes);
   f("vertices_processed", s.vertices_processed, U::count);
   f("pseudo_sources", s.pseudo_sources, U::count);
   f("resets", s.resets, U::count);

@@ -135,7 +135,7 @@ public:
       // (on the edge the field is at least (da + db - l) / 2 and at most (da + db + l) / 2: no crossing of two
       // vertices on one side of the level beyond these)
       const double length = m.geometry[h].length;
-      // (nor where the field is below the level all over either face of the edge: Face_crossings::bound())
+      // (nor where the field is below the level all over either face of the edge: Curve_field::face_bound())
       if((da < level && db < level
           && (0.5 * (da + db + length) < level || field.face_bound(f) < level
               || (m.opposite[h] != NO_INDEX && field.face_bound(Mesh_arrays::face(m.opposite[h])) < level)))

@@ -14,7 +14,7 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
-#include <CGAL/VTP_geodesics/internal/curves/Curve_field.h>
+#include <CGAL/VTP_geodesics/internal/field/Curve_field.h>
 #include <CGAL/VTP_geodesics/internal/curves/Curve_polylines.h>
 #include <CGAL/VTP_geodesics/internal/curves/Curve_roots.h>
 

@@ -91,7 +91,7 @@ public:
              });
     for(Propagation_scratch& s : m_scratch)
     {
-      st.crossings.gather(s.crossed);
+      st.field.gather(s.crossed);
       st.propagated += s.propagated;
       s.propagated = 0;
     }

@@ -18,11 +18,11 @@
 #include <CGAL/VTP_geodesics/internal/Triangle_propagation.h>
 #include <CGAL/VTP_geodesics/internal/Window_storage.h>
 #include <CGAL/VTP_geodesics/internal/engine/Direction_record.h>
-#include <CGAL/VTP_geodesics/internal/engine/Face_crossings.h>
 #include <CGAL/VTP_geodesics/internal/engine/Known_vertices.h>
 #include <CGAL/VTP_geodesics/internal/engine/Path_record.h>
 #include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
 #include <CGAL/VTP_geodesics/internal/engine/Vertex_schedule.h>
+#include <CGAL/VTP_geodesics/internal/field/Kept_field.h>
 #include <CGAL/VTP_geodesics/internal/engine/Window_reset.h>
 
 #include <CGAL/assertions.h>
@@ -51,8 +51,7 @@ struct Propagation_settings
   bool known_distances = false;        // the run starts from distances already known (Known_vertices.h)
   bool log_map = false;                // the log map (Direction_record.h)
   bool log_map_strict = false;         // with log_map: the strict polyhedral theta behind pseudo-sources
-  bool record_crossings = false;       // the windows that cross each face (Face_crossings.h)
-  std::vector<double> crossing_levels; // with record_crossings: keep only those that may reach these levels
+  bool keep_field = false;             // every window that crosses a face (field/Kept_field.h)
 };
 
 // The buffers of one thread: a list being propagated, its children, and counters.
@@ -62,7 +61,7 @@ struct alignas(64) Propagation_scratch
   List_scratch list;
   std::size_t propagated = 0, created = 0;
   Stop_events events;
-  std::vector<Face_crossing> crossed;  // the record of the curves (Face_crossings.h), until gathered
+  Field_piece_buffer crossed;          // the kept field (field/Kept_field.h), until gathered
 };
 
 // The data of one propagation (Propagation_state.h holds the steps that the loops share): per vertex a
@@ -88,7 +87,7 @@ public:
   Window_reset reset;
   Stop_rule stop;
   Path_record record;
-  Face_crossing_record crossings;      // the record of the curves
+  Kept_field field;                    // the windows that crossed each face (keep_field)
   Direction_record direction;          // the log map
   std::vector<Index> fifo;             // queued lists (sequential scheduling: FIFO order)
   Known_vertices known;                // runs from known distances
@@ -119,8 +118,7 @@ public:
     const std::size_t number_of_targets = targets.size();
     stop.start(m, s.limit, s.stop_at_targets, std::move(targets));
     record.start(s.record_paths, static_cast<std::size_t>(m.nv), number_of_targets);
-    crossings.start(s.record_crossings && s.reset_step == std::numeric_limits<double>::infinity(),
-                    s.crossing_levels, m.nf);
+    field.start(s.keep_field && s.reset_step == std::numeric_limits<double>::infinity(), m.nf);
     direction.start(m, s.log_map, s.log_map_strict);
     known.start(static_cast<std::size_t>(m.nv), s.known_distances);
     m_events.clear();
@@ -142,7 +140,7 @@ public:
     fifo.clear();
     reset.start(s.reset_step, s.reset_guard, static_cast<std::size_t>(m.nv));
     stop.start(m, s.limit, false, std::vector<Target>());
-    crossings.start(false, std::vector<double>());
+    field.start(false);
     m_events.clear();
     created = propagated = vertices_processed = pseudo_sources = 0;
   }
@@ -162,7 +160,7 @@ public:
     reset.start(s.reset_step, s.reset_guard, static_cast<std::size_t>(mesh->nv));
     stop.start(*mesh, s.limit, false, std::vector<Target>(), /* keep_list_bounds */ true);
     record.start(false, 0, 0);
-    crossings.start(false, std::vector<double>());
+    field.start(false);
     direction.restart(*mesh, s.log_map, s.log_map_strict, previous);
     known.start(static_cast<std::size_t>(mesh->nv), false);
     m_events.clear();

@@ -94,7 +94,7 @@ public:
     if(settings.known_distances)
       known.move_into(m_state.dist, m_state.label, settings.want_labels);
     threads = propagate(parallel, threads);
-    m_state.crossings.finish(m.nf);
+    m_state.field.finish();
     m_state.direction.finish(m_state.dist);  // the log map behind pseudo-sources
     apply_cutoff();
     if(settings.unit != 1.)
@@ -181,9 +181,11 @@ public:
   const std::vector<Seed>& seeds() const { return m_seeds; }
   const std::vector<Target>& targets() const { return m_virtual_sources ? m_vsp.targets() : m_state.stop.targets(); }
   const Path_record& path_record() const { return m_virtual_sources ? m_vsp.record : m_state.record; }
-  // the windows that crossed each face in the last run (active with settings.record_crossings; not with
-  // virtual sources nor resets)
-  const Face_crossing_record& face_crossings() const { return m_virtual_sources ? m_no_crossings : m_state.crossings; }
+  // the windows that crossed each face in the last run (active with settings.keep_field; not with virtual
+  // sources nor resets)
+  const Kept_field& kept_field() const { return m_virtual_sources ? m_no_field : m_state.field; }
+  // the distance up to which the last run's distances are final (engine unit; +infinity after a full run)
+  double cutoff() const { return m_virtual_sources ? std::numeric_limits<double>::infinity() : m_state.stop.cutoff(); }
   // the log map: its sources (set before a run) and its angles after the run
   Direction_record& direction() { return m_state.direction; }
   const Direction_record& direction() const { return m_state.direction; }
@@ -236,6 +238,8 @@ private:
     st.peak_window_bytes = m_state.store.peak_bytes();
     st.vertices_processed = m_state.vertices_processed;
     st.pseudo_sources = m_state.pseudo_sources;
+    st.field_pieces = m_state.field.size();
+    st.field_bytes = m_state.field.bytes();
     st.resets = m_state.reset.number_of_resets();
     st.stopped_early = m_state.stop.stopped_early();
     if(parallel)
@@ -254,7 +258,7 @@ private:
   Parallel_loop m_parallel;
   Virtual_source_front m_vsp;
   bool m_virtual_sources = false;  // the last run was virtual source propagation
-  Face_crossing_record m_no_crossings;
+  Kept_field m_no_field;
 };
 
 } // namespace internal

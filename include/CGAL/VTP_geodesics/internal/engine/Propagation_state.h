@@ -317,8 +317,7 @@ public:
     Offer offer;
     if(s.in.empty())
       return offer;
-    crossings.on_list_crossing(g, h, s.in, s.list.ends, dist[a], dist[b], dist[m.source[Mesh_arrays::prev(h)]],
-                               s.crossed);
+    field.on_list_crossing(h, s.in, s.crossed);
     if(stop.has_targets())
       stop.on_list_crossing(h, s.in, s.events, [&](Index t, const Window& w) {
         const std::size_t i = static_cast<std::size_t>(t);

@@ -38,7 +38,7 @@ public:
     while(!(st.stop.is_tracking() && st.stop.is_done(st.schedule)) && st.schedule.pop(e))
       if(st.take_vertex(e.second, e.first))
         drain(st);
-    st.crossings.gather(m_scratch.crossed);
+    st.field.gather(m_scratch.crossed);
   }
 
 private:

@@ -82,19 +82,15 @@ Propagation_settings settings_from_parameters(const NamedParameters& np, double 
   settings.record_paths = choose_parameter(get_parameter(np, internal_np::record_paths), false);
   settings.unit = length_scale;
   settings.virtual_sources = choose_parameter(get_parameter(np, internal_np::virtual_sources), false);
-  // the record of the curves (engine/Face_crossings.h): every window crossing a face, or with levels only those
-  // that may reach one of them
-  const std::vector<double> levels = choose_parameter(get_parameter(np, internal_np::curve_levels),
-                                                      std::vector<double>());
-  settings.record_crossings = choose_parameter(get_parameter(np, internal_np::record_curves), false) || !levels.empty();
-  for(double l : levels)
+  // the kept field (field/Kept_field.h): every window crossing a face; exact methods only
+  settings.keep_field = choose_parameter(get_parameter(np, internal_np::keep_field), false);
+  if(settings.keep_field)
   {
-    if(!(l >= 0.) || !std::isfinite(l))
-      throw Invalid_input_error("a curve level is negative, infinite or not a number");
-    settings.crossing_levels.push_back(l / length_scale);
-  }
-  if(settings.record_crossings)
+    if(settings.virtual_sources || settings.reset_step < std::numeric_limits<double>::infinity())
+      throw Invalid_input_error("keep_field needs an exact method (VTP or PVTP: lambda = infinity, no virtual "
+                                "sources)");
     settings.want_labels = true;  // (the field of the faces needs the corners' labels, not their paths)
+  }
   settings.second_virtual_source = settings.virtual_sources && per_vertex == 2;
   return settings;
 }

@@ -45,6 +45,9 @@ void run_solver(const MeshIndex& mesh, VertexPointMap vpm, std::vector<Seed> see
   int threads = 0;
   Propagation_settings settings = settings_from_parameters(np, mesh, threads);
   Known_field known = known_field_of(np, mesh, mesh.length_scale, settings, seeds);
+  if(settings.keep_field && settings.known_distances)
+    throw Invalid_input_error("keep_field cannot start from initial distances (the field of the known region is "
+                              "not known)");
   start_log_map(np, settings, mesh, vpm, seeds, engine.direction());
   std::vector<Target> targets = mesh.targets_of(CGAL::parameters::get_parameter(np, internal_np::targets));
   engine.template run<ConcurrencyTag>(mesh.arrays, seeds, std::move(targets), settings, threads, statistics,

@@ -9,14 +9,14 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef CGAL_VTP_GEODESICS_INTERNAL_CURVES_CURVE_CANDIDATE_H
-#define CGAL_VTP_GEODESICS_INTERNAL_CURVES_CURVE_CANDIDATE_H
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_FIELD_CURVE_CANDIDATE_H
+#define CGAL_VTP_GEODESICS_INTERNAL_FIELD_CURVE_CANDIDATE_H
 
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/internal/Face_frame.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
-#include <CGAL/VTP_geodesics/internal/engine/Face_crossings.h>
+#include <CGAL/VTP_geodesics/internal/field/Kept_field.h>
 
 #include <algorithm>
 #include <cmath>
@@ -39,7 +39,7 @@ struct Curve_candidate
   // the point must cross for the candidate to be a path
   bool gated = false;
   double gx0 = 0., gy0 = 0., gx1 = 0., gy1 = 0.;
-  // a window that crossed the face (Face_crossings.h): straight where the segment from the image to the point
+  // a window that crossed the face (field/Kept_field.h): straight where the segment from the image to the point
   // crosses its interval (gx0, gy0) - (gx1, gy1), else bent at the nearer end (e0, e1: the image to the ends)
   bool window = false;
   double e0 = 0., e1 = 0., low = 0.;  // (low: base plus the image's distance to the interval)
@@ -175,14 +175,15 @@ struct Curve_candidate
   }
 };
 
-// The windows that crossed face f (Face_crossings.h), as candidates in the frame of f; `label_of(origin)`: the
+// The windows that crossed face f (field/Kept_field.h), as candidates in the frame of f; `label_of(origin)`: the
 // label of an origin.
 template <class LabelOf>
-void add_crossing_candidates(const Face_crossing_record& crossings, Index f, const Face_frame& frame,
+void add_crossing_candidates(const Kept_field& field, Index f, const Face_frame& frame,
                              const LabelOf& label_of, std::vector<Curve_candidate>& out)
 {
-  for(const Face_crossing* c = crossings.begin(f); c != crossings.end(f); ++c)
+  for(std::size_t i = field.first(f); i < field.last(f); ++i)
   {
+    const Field_piece* c = &field.piece_of_face(i);
     const int k = static_cast<int>(c->halfedge % 3);
     Curve_candidate q{0., 0., c->sigma, label_of(c->origin)};
     q.window = true;
@@ -230,4 +231,4 @@ inline void prune_candidates(const Face_frame& frame, std::vector<Curve_candidat
 } // namespace VTP_geodesics
 } // namespace CGAL
 
-#endif // CGAL_VTP_GEODESICS_INTERNAL_CURVES_CURVE_CANDIDATE_H
+#endif // CGAL_VTP_GEODESICS_INTERNAL_FIELD_CURVE_CANDIDATE_H

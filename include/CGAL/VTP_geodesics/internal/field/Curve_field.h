@@ -9,14 +9,14 @@
 //
 // Author(s) : VTP_geodesics contributors
 
-#ifndef CGAL_VTP_GEODESICS_INTERNAL_CURVES_CURVE_FIELD_H
-#define CGAL_VTP_GEODESICS_INTERNAL_CURVES_CURVE_FIELD_H
+#ifndef CGAL_VTP_GEODESICS_INTERNAL_FIELD_CURVE_FIELD_H
+#define CGAL_VTP_GEODESICS_INTERNAL_FIELD_CURVE_FIELD_H
 
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/internal/Face_frame.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
-#include <CGAL/VTP_geodesics/internal/curves/Curve_candidate.h>
+#include <CGAL/VTP_geodesics/internal/field/Curve_candidate.h>
 #include <CGAL/VTP_geodesics/internal/engine/Path_record.h>
 #include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
 
@@ -35,9 +35,9 @@ namespace internal {
 // The distance field inside the faces, from the record of a computation. The candidates (Curve_candidate.h)
 // of face f are
 //  - its corners v, with base D(v) (the path to v, then straight to p: a real path, an upper bound);
-//  - with the record of the windows that crossed each face (Face_crossings.h: record_curves, curve_levels): those
-//    windows, each a real path to every point of f (straight through its interval, else bent at an end). The
-//    least candidate is then the exact distance (Face_crossings.h says why; the tests check it);
+//  - with the kept field (field/Kept_field.h: keep_field): the windows that crossed f, each a real path to every
+//    point of f (straight through its interval, else bent at an end). The least candidate is then the exact
+//    distance (Kept_field.h says why; the tests check it);
 //  - else, from the trace-back record (Path_record.h), the image of the origin of each corner's recorded offer
 //    (the window through which the geodesic reached the corner), unfolded into f when the offer came through f
 //    itself or through a face sharing an edge of f at that corner, with base the origin's distance; a bent offer
@@ -51,10 +51,10 @@ class Curve_field
 public:
   // `distances`: per vertex, in the engine's unit (+infinity: unreached); `labels`: the engine's labels if
   // it has them (else empty: the labels are found along the record).
-  // `crossings`: the record of the windows that crossed each face, if the run kept it (else nullptr).
+  // `crossings`: the windows that crossed each face, if the run kept the field (else nullptr).
   Curve_field(const Mesh_arrays& m, const Path_record& record, const std::vector<Seed>& seeds,
               const std::vector<double>& distances, const std::vector<Index>& labels,
-              const Face_crossing_record* crossings = nullptr)
+              const Kept_field* crossings = nullptr)
     : m_mesh(m), m_record(record), m_seeds(seeds), m_distance(distances), m_crossings(crossings)
   {
     for(auto& c : m_cache)
@@ -81,10 +81,17 @@ public:
   double distance(Index v) const { return m_distance[static_cast<std::size_t>(v)]; }
   // whether the field comes from the windows that crossed the faces (exact; its candidates have no gate)
   bool from_crossings() const { return m_crossings != nullptr; }
-  // an upper bound of the field all over face f (Face_crossing_record::bound(); +infinity if unknown)
+  // an upper bound of the field all over face f: a corner's distance plus its farthest point of the face
+  // (+infinity without the kept field, where the extraction does not use it)
   double face_bound(Index f) const
   {
-    return m_crossings != nullptr ? m_crossings->bound(f) : std::numeric_limits<double>::infinity();
+    if(m_crossings == nullptr)
+      return std::numeric_limits<double>::infinity();
+    double bound = std::numeric_limits<double>::infinity();
+    for(int k = 0; k < 3; ++k)
+      bound = (std::min)(bound, distance(m_mesh.source[3 * f + k])
+                                  + (std::max)(m_mesh.geometry[3 * f + k].length, m_mesh.geometry[3 * f + (k + 2) % 3].length));
+    return bound;
   }
   Index label(Index v) const { return m_label[static_cast<std::size_t>(v)]; }
 
@@ -415,7 +422,7 @@ private:
   const Path_record& m_record;
   const std::vector<Seed>& m_seeds;
   const std::vector<double>& m_distance;
-  const Face_crossing_record* m_crossings;
+  const Kept_field* m_crossings;
   std::vector<Index> m_label;
   std::vector<std::pair<Index, Index> > m_face_seeds;  // (face, seed), sorted
   mutable std::vector<std::pair<Index, double> > m_bound;  // (prune())
@@ -427,4 +434,4 @@ private:
 } // namespace VTP_geodesics
 } // namespace CGAL
 
-#endif // CGAL_VTP_GEODESICS_INTERNAL_CURVES_CURVE_FIELD_H
+#endif // CGAL_VTP_GEODESICS_INTERNAL_FIELD_CURVE_FIELD_H
