@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "vtp_field_envelope.h"
 #include "vtp_test_meshes.h"
 #include "vtp_test_utils.h"
 
@@ -292,6 +293,51 @@ TEST(KeptField, RealMeshesEqualTargetedRuns)
       EXPECT_NEAR(s.field_distance(points[k]), field[k], 1e-12 * r) << name << " point " << k;
 #endif
   }
+}
+
+// Why the field keeps every window that crossed a face (field/Kept_field.h): nearly each is the least candidate
+// somewhere in its face. On the elephant from vertex 0, the windows that are nowhere the least (decided on their
+// interval, vtp_field_envelope.h) are at most 5%: the lower envelope is at least 95% of the field (97.6%
+// measured); dropping those changes the field at no point (random points of every face, to 1e-15 relative).
+TEST(KeptField, NearlyEveryPieceIsTheLeastSomewhere)
+{
+  const Surface_mesh& m = elephant();
+  Field_solver s(m);
+  s.compute(discard, Vertex_index(0), VG::parameters::keep_field(true));
+  const double r = largest(s) / s.mesh_index().length_scale;  // (the field of the faces is in the engine's unit)
+  const auto& field = s.field_queries().field();
+  Field_envelope envelope;
+  std::vector<CGAL::VTP_geodesics::internal::Curve_candidate> all, least;
+  std::size_t windows = 0, kept = 0;
+  std::mt19937 g(8);
+  std::uniform_real_distribution<double> u(0., 1.);
+  for(CGAL::VTP_geodesics::internal::Index f = 0; f < static_cast<CGAL::VTP_geodesics::internal::Index>(m.number_of_faces()); ++f)
+  {
+    field.build_candidates(f, all);
+    least = all;
+    envelope.keep_least(least, 1e-15 * r);
+    for(const auto& c : all)
+      windows += c.window ? 1 : 0;
+    for(const auto& c : least)
+      kept += c.window ? 1 : 0;
+    const CGAL::VTP_geodesics::internal::Face_frame frame(s.mesh_arrays(), f);
+    for(int i = 0; i < 4; ++i)
+    {
+      double a = u(g), b = u(g);
+      if(a + b > 1.)
+      {
+        a = 1. - a;
+        b = 1. - b;
+      }
+      const double x = frame.x[0] + a * (frame.x[1] - frame.x[0]) + b * (frame.x[2] - frame.x[0]);
+      const double y = frame.y[0] + a * (frame.y[1] - frame.y[0]) + b * (frame.y[2] - frame.y[0]);
+      const double v = CGAL::VTP_geodesics::internal::Curve_field::value(all, x, y);
+      ASSERT_NEAR(CGAL::VTP_geodesics::internal::Curve_field::value(least, x, y), v, 1e-15 * r) << "face " << f;
+    }
+  }
+  ASSERT_GT(windows, 0u);
+  EXPECT_GE(static_cast<double>(kept), 0.95 * static_cast<double>(windows)) << kept << " of " << windows;
+  EXPECT_LT(kept, windows);  // (the test can drop some: it is not vacuous)
 }
 
 // Bad input: a query without a kept field (none yet, or a run without it), a location outside the mesh or

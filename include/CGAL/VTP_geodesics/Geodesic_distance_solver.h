@@ -336,6 +336,15 @@ public:
   bool has_kept_field() const { return m_engine.kept_field().is_active(); }
   /// the bytes the kept field holds (0 without it).
   std::size_t field_bytes() const { return m_engine.kept_field().bytes(); }
+  /// the pieces of the kept field in face `f`: the windows that crossed it (0 without the field).
+  std::size_t number_of_field_pieces(face_descriptor f) const
+  {
+    const internal::Kept_field& k = m_engine.kept_field();
+    const internal::Index i = m_mesh.face_index(f);
+    if(!k.is_active() || i == internal::NO_INDEX)
+      return 0;
+    return k.last(i) - k.first(i);
+  }
   /// the exact distance of the last computation at `p` (a `vertex_descriptor` or a face location): its
   /// distance to the nearest source, `+infinity` if no source reaches it or it lies beyond the distance limit.
   /// \throws Invalid_input_error if the last computation did not keep the field, or `p` is not a vertex or a

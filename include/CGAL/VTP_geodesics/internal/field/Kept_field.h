@@ -14,6 +14,7 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
+#include <CGAL/VTP_geodesics/internal/Huge_page_allocator.h>
 #include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/Window.h>
 
@@ -41,31 +42,39 @@ struct Field_piece
   double sx, sy, sigma, b0, b1;
 };
 
-// The pieces one thread records during a run, in blocks of fixed capacity (no block is moved once written:
-// no copy as the record grows, and the blocks of the threads are handed over by moving them).
+// A block of pieces: up to 6 MB, on transparent huge pages where the system grants them (one page fault per
+// 2 MB instead of one per 4 KB).
+typedef std::vector<Field_piece, Huge_page_allocator<Field_piece> > Field_piece_block;
+
+// The pieces one thread records during a run, in blocks (no block is moved once written: no copy as the record
+// grows, and the blocks of the threads are handed over by moving them). The first block of a run holds 4,096
+// pieces and each next one twice as many, up to BLOCK: a small run takes little memory.
 class Field_piece_buffer
 {
 public:
-  static constexpr std::size_t BLOCK = std::size_t(1) << 16;
+  static constexpr int BLOCK_BITS = 17;
+  static constexpr std::size_t BLOCK = std::size_t(1) << BLOCK_BITS;
 
   void push(const Field_piece& p)
   {
-    if(m_current.size() == m_current.capacity())
+    if(m_current.size() == m_capacity)
     {
-      if(!m_current.empty())
+      if(m_capacity > 0)
         m_full.push_back(std::move(m_current));
-      m_current = std::vector<Field_piece>();
-      m_current.reserve(BLOCK);
+      m_capacity = m_capacity == 0 ? std::size_t(4096) : (std::min)(2 * m_capacity, BLOCK);
+      m_current = Field_piece_block();
+      m_current.reserve(m_capacity);
     }
     m_current.push_back(p);
   }
   void clear()
   {
     m_full.clear();
-    m_current = std::vector<Field_piece>();
+    m_current = Field_piece_block();
+    m_capacity = 0;
   }
   // moves every block (full or not) to the end of `blocks`
-  void hand_over(std::vector<std::vector<Field_piece> >& blocks)
+  void hand_over(std::vector<Field_piece_block>& blocks)
   {
     for(auto& b : m_full)
       blocks.push_back(std::move(b));
@@ -75,8 +84,9 @@ public:
   }
 
 private:
-  std::vector<std::vector<Field_piece> > m_full;
-  std::vector<Field_piece> m_current;
+  std::vector<Field_piece_block> m_full;
+  Field_piece_block m_current;
+  std::size_t m_capacity = 0;  // of m_current
 };
 
 // The kept field (named parameter keep_field): every window that a list propagates across a face, indexed by
@@ -157,7 +167,7 @@ public:
     std::size_t total = 0;
     for(const auto& b : m_blocks)
       total += b.size();
-    CGAL_precondition(m_blocks.size() < (std::size_t(1) << 16));
+    CGAL_precondition(m_blocks.size() < (std::size_t(1) << (32 - Field_piece_buffer::BLOCK_BITS)));
     m_face_begin.assign(static_cast<std::size_t>(m_faces) + 1, 0);
     for(const auto& b : m_blocks)
       for(const Field_piece& p : b)
@@ -170,7 +180,7 @@ public:
     for(std::size_t i = 0; i < m_blocks.size(); ++i)
       for(std::size_t j = 0; j < m_blocks[i].size(); ++j)
         m_order[next[static_cast<std::size_t>(Mesh_arrays::face(m_blocks[i][j].halfedge))]++]
-          = static_cast<std::uint32_t>((i << 16) | j);
+          = static_cast<std::uint32_t>((i << Field_piece_buffer::BLOCK_BITS) | j);
     if(m_buffers > 1)
       for(std::size_t f = 0; f < static_cast<std::size_t>(m_faces); ++f)
         std::sort(m_order.begin() + static_cast<std::ptrdiff_t>(m_face_begin[f]),
@@ -199,13 +209,16 @@ public:
   }
 
 private:
-  const Field_piece& piece(std::uint32_t i) const { return m_blocks[i >> 16][i & 0xffff]; }
+  const Field_piece& piece(std::uint32_t i) const
+  {
+    return m_blocks[i >> Field_piece_buffer::BLOCK_BITS][i & (Field_piece_buffer::BLOCK - 1)];
+  }
 
   bool m_active = false;
   Index m_faces = 0;
   int m_buffers = 0;                                // the threads' buffers that held pieces
-  std::vector<std::vector<Field_piece> > m_blocks;  // the pieces, in blocks of Field_piece_buffer::BLOCK
-  std::vector<std::uint32_t> m_order;               // block << 16 | position, by face
+  std::vector<Field_piece_block> m_blocks;  // the pieces, in blocks of at most Field_piece_buffer::BLOCK
+  std::vector<std::uint32_t, Huge_page_allocator<std::uint32_t> > m_order;  // block << BLOCK_BITS | position, by face
   std::vector<std::size_t> m_face_begin;
 };
 

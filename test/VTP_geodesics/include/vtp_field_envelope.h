@@ -1,18 +1,8 @@
-// Copyright (c) 2026  VTP_geodesics contributors.
-// All rights reserved.
-//
-// This file is part of the VTP_geodesics package for CGAL (www.cgal.org).
-//
-// $URL$
-// $Id$
-// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
-//
-// Author(s) : VTP_geodesics contributors
+// The lower envelope of the kept field in a face, for the test that measures how much of the field it is
+// (test_kept_field.cpp, KeptField.NearlyEveryPieceIsTheLeastSomewhere; doc/VTP_geodesics/curves.txt).
 
-#ifndef CGAL_VTP_GEODESICS_INTERNAL_FIELD_FIELD_ENVELOPE_H
-#define CGAL_VTP_GEODESICS_INTERNAL_FIELD_FIELD_ENVELOPE_H
-
-#include <CGAL/license/VTP_geodesics.h>
+#ifndef VTP_TEST_FIELD_ENVELOPE_H
+#define VTP_TEST_FIELD_ENVELOPE_H
 
 #include <CGAL/VTP_geodesics/internal/field/Curve_candidate.h>
 
@@ -22,9 +12,10 @@
 #include <limits>
 #include <vector>
 
-namespace CGAL {
-namespace VTP_geodesics {
-namespace internal {
+namespace vtp_test {
+
+using CGAL::VTP_geodesics::internal::Curve_candidate;
+using CGAL::VTP_geodesics::internal::NO_INDEX;
 
 // The lower envelope of the candidates of a face (Curve_candidate.h): which windows are the least candidate
 // somewhere in the face, decided on their own interval.
@@ -194,8 +185,6 @@ private:
   std::vector<Piece> m_stack;
 };
 
-} // namespace internal
-} // namespace VTP_geodesics
-} // namespace CGAL
+} // namespace vtp_test
 
-#endif // CGAL_VTP_GEODESICS_INTERNAL_FIELD_FIELD_ENVELOPE_H
+#endif // VTP_TEST_FIELD_ENVELOPE_H
