@@ -204,7 +204,7 @@ public:
 
   // sampling.cpp
   py::tuple farthest_point_sampling(std::int64_t k, std::int64_t first, double radius, const std::string& method_name,
-                                    double lam, int threads);
+                                    double lam, int threads, bool exact_cell_areas);
 
 private:
   // solver.cpp

@@ -91,7 +91,8 @@ class Curves:
             vertices, then the ``points``). They add up to the area of the faces whose corners are all reached.
         uncertainty : ndarray float64 (s,)
             ``chord_tolerance`` times the length of the cell's border: a bound of the area between the chords
-            and the borders (0 where a border is straight in its faces, as on a plane).
+            and the borders (the areas are exact where the borders are straight in their faces, as on a
+            plane).
         """
         tol, _ = _options(chord_tolerance, 0)
         src, pf, pb = self._sources(sources, points)
