@@ -18,11 +18,15 @@
 //                  preprocessing; statistics()
 //   repair.cpp     the repair of V and F that are not a valid mesh (the tools' repair), and the caller's indices:
 //                  sources, targets and results mapped between the vertices and faces of V and F and the mesh's
-//   queries.cpp    distances(), path(), distance(), locate()
+//   queries.cpp    distances() (keep_field: the field of the run kept), path(), distance(), locate()
+//   field.cpp      field_query(): the distance and nearest source at any vertex or point of the surface, from
+//                  the field that the last distances(..., keep_field=True) kept
 //   matrices.cpp   matrix_dense(), matrix_sparse(): rows on all cores, Ctrl-C and progress every 0.2 s
-//   sampling.cpp   farthest_point_sampling(), with the Voronoi cell areas
+//   sampling.cpp   farthest_point_sampling(), with the Voronoi cell areas (exact methods: from a kept field)
 //   straightest.cpp  trace(): straightest geodesics (the exp map), many walks on the solver's threads
 //   log_map.cpp    log_map(): geodesic polar coordinates (VTP, PVTP), in the caller's frames
+//   curves.cpp     curves() (isolines, cell borders), cell_areas(): exact, from one run of the given sources that
+//                  keeps its field, or from the field that distances(..., keep_field=True) kept
 //   patches.cpp    polar_patches(): the log map around many centres cut at a radius, CSR arrays, Ctrl-C
 //   interrupt.h    Ctrl-C (KeyboardInterrupt) and progress for matrices.cpp and patches.cpp
 //   io.cpp         read_mesh(), symmetric_min_csr(); the conversions of vertex indices, face locations and
@@ -155,7 +159,7 @@ public:
   // queries.cpp
   py::tuple distances(const Index_array& sources, const Index_array& point_faces, const Double_array& point_bary,
                       double max_distance, const Index_array& targets, const std::string& method_name, double lam,
-                      int threads, bool want_labels);
+                      int threads, bool want_labels, bool keep_field);
   py::tuple path(std::int64_t target_vertex, std::int64_t target_face, const Double_array& target_bary,
                  const Index_array& sources, const Index_array& point_faces, const Double_array& point_bary,
                  double max_distance);
@@ -185,20 +189,43 @@ public:
                           double max_distance, bool single, const std::string& method_name, double lam, int threads,
                           bool progress);
 
+  // field.cpp
+  py::tuple field_query(const Index_array& vertices, const Index_array& faces, const Double_array& bary,
+                        bool want_labels);
+  bool has_kept_field() const;
+  std::size_t field_bytes() const;
+
   // curves.cpp
   py::list curves(const Index_array& sources, const Index_array& point_faces, const Double_array& point_bary,
-                  const Double_array& levels, bool borders, double chord_tolerance, int exact_refinement);
+                  const Double_array& levels, bool borders, double chord_tolerance, int exact_refinement,
+                  bool from_field);
+  py::tuple cell_areas(const Index_array& sources, const Index_array& point_faces, const Double_array& point_bary,
+                       double chord_tolerance, bool from_field);
 
   // sampling.cpp
   py::tuple farthest_point_sampling(std::int64_t k, std::int64_t first, double radius, const std::string& method_name,
-                                    double lam, int threads);
+                                    double lam, int threads, bool exact_cell_areas);
 
 private:
   // solver.cpp
   std::string build_mesh(const double* v, std::size_t n, const std::int64_t* f, std::size_t m, bool& repairable);
   int threads_or_default(int threads) const;
-  // Sets the sources of the next computation (the mutex held).
+  // Sets the sources of the next computation (the mutex held); forgets the kept field of distances() (every
+  // computation of m_solver sets its sources here first: the next one replaces the field).
   void set_sources(const std::vector<Vertex_index>& vertices, const std::vector<Face_location>& points);
+
+  // field.cpp
+  // Throws Invalid_input_error unless the last computation is a distances(..., keep_field=True) (the mutex held).
+  void require_kept_field() const;
+
+  // curves.cpp
+  // The sources of a run for curves (checked): the mesh vertices (every copy of each vertex of V), the points, and
+  // the caller's label of each library source.
+  std::vector<std::int64_t> curve_sources(const Index_array& sources, const Index_array& point_faces,
+                                          const Double_array& point_bary, std::vector<Vertex_index>& mesh_sources,
+                                          std::vector<Face_location>& points) const;
+  // One exact run from these sources that keeps its field (the mutex held).
+  void run_keeping_field(const std::vector<Vertex_index>& mesh_sources, const std::vector<Face_location>& points);
 
   // repair.cpp
   std::string repair_mesh(const double* v, std::size_t n, const std::int64_t* f, std::size_t m);
@@ -213,7 +240,8 @@ private:
   // The field of sources on the vertices of V (repaired mesh; queries.cpp).
   void field_on_caller(const std::vector<std::size_t>& source_vertices, const std::vector<Face_location>& source_points,
                        const std::vector<std::size_t>& target_vertices, double max_distance,
-                       const vtp_support::Method_info& method, double lam, int threads, double* d, std::int64_t* lab);
+                       const vtp_support::Method_info& method, double lam, int threads, double* d, std::int64_t* lab,
+                       bool keep_field);
   std::size_t caller_of(Vertex_index v) const
   {
     return m_caller_of.empty() ? std::size_t(v) : m_caller_of[std::size_t(v)];
@@ -266,6 +294,12 @@ private:
   std::unique_ptr<Solver> m_solver;
   std::unique_ptr<vtp_support::Surface_locator> m_locator;        // of locate(), built on first use
   VTP::Propagation_statistics m_statistics;                       // of the last computation
+  // The field of the last computation of m_solver is that of distances(..., keep_field=True) (set_sources()
+  // clears it), and the caller's label of each of its sources (the library's source index: copies of a vertex
+  // of V, then the points; see field.cpp).
+  bool m_field_kept = false;
+  std::vector<std::int64_t> m_field_labels;
+  std::size_t m_field_sources = 0;                                // the caller's sources of that run
   int m_threads = 0;
   double m_build_seconds = 0.;                                    // checking V, F and building the mesh
   // of read_mesh(), when V and F are the arrays it returned (see take_read()): reading, and checking the faces
@@ -282,6 +316,7 @@ void define_io(py::module_& m);
 void define_straightest(py::class_<Core_solver>& c);
 void define_log_map(py::class_<Core_solver>& c);
 void define_curves(py::class_<Core_solver>& c);
+void define_field(py::class_<Core_solver>& c);
 void define_patches(py::class_<Core_solver>& c);
 
 } // namespace vtp_python

@@ -45,6 +45,7 @@ PYBIND11_MODULE(_core, m)
   vp::define_straightest(solver);
   vp::define_log_map(solver);
   vp::define_curves(solver);
+  vp::define_field(solver);
   vp::define_patches(solver);
   vp::define_io(m);
   m.def("method_table", &method_table);

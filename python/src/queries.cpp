@@ -26,10 +26,12 @@
 
 namespace vtp_python {
 
-// One propagation. Returns (distances (n,), labels (n,) int64 or None, target distances (len(targets),)).
+// One propagation. Returns (distances (n,), labels (n,) int64 or None, target distances (len(targets),)). With
+// keep_field (exact methods, no targets), the solver keeps the field of the run for field_query() (field.cpp).
 py::tuple Core_solver::distances(const Index_array& sources, const Index_array& point_faces,
                                  const Double_array& point_bary, double max_distance, const Index_array& targets,
-                                 const std::string& method_name, double lam, int threads, bool want_labels)
+                                 const std::string& method_name, double lam, int threads, bool want_labels,
+                                 bool keep_field)
 {
   const vtp_support::Method_info& method = method_named(method_name, lam);
   check_limit(max_distance);
@@ -38,6 +40,18 @@ py::tuple Core_solver::distances(const Index_array& sources, const Index_array& 
   const std::vector<std::size_t> target_vertices = vertices_of(targets, "targets");
   if(source_vertices.empty() && source_points.empty())
     value_error("no source: give at least one vertex in sources or one point in points");
+  if(keep_field)
+  {
+    if(method.approximate || method.virtual_sources)
+      value_error(std::string("keep_field=True needs an exact method (\"vtp\" or \"pvtp\"), got method=\"")
+                  + method.name + "\": the field of the approximate methods is not the distance inside the faces");
+    if(!target_vertices.empty())
+      value_error("keep_field=True cannot be used with targets (the run stops once the targets are known: the "
+                  "field would be partial)");
+    if(m_through_pinches && !m_repairs.empty())
+      value_error("keep_field=True: the field is not kept through the vertices that the repair split (the solver "
+                  "was made with through_pinches=True)");
+  }
   const std::size_t n = number_of_vertices();
   py::array_t<double> out(static_cast<py::ssize_t>(n));
   py::array_t<std::int64_t> labels_out(static_cast<py::ssize_t>(want_labels ? n : 0));
@@ -51,7 +65,7 @@ py::tuple Core_solver::distances(const Index_array& sources, const Index_array& 
       py::gil_scoped_release release;
       std::lock_guard<std::mutex> lock(m_mutex);
       field_on_caller(source_vertices, source_points, target_vertices, max_distance, method, lam, threads, d,
-                      want_labels ? lab : nullptr);
+                      want_labels ? lab : nullptr, keep_field);
       for(std::size_t i = 0; i < target_vertices.size(); ++i)
         td[i] = d[target_vertices[i]];
     }
@@ -76,7 +90,8 @@ py::tuple Core_solver::distances(const Index_array& sources, const Index_array& 
       const auto np = method_np.maximum_distance(max_distance)
                         .targets(live_targets)
                         .stop_at_targets(!live_targets.empty())
-                        .statistics(m_statistics);
+                        .statistics(m_statistics)
+                        .keep_field(keep_field);
       if(want_labels)
       {
         labels.assign(n, VTP::no_source);
@@ -87,6 +102,15 @@ py::tuple Core_solver::distances(const Index_array& sources, const Index_array& 
       else
         m_solver->template compute<Tag>(vdm, np);
     });
+    if(keep_field)
+    {
+      // the library's source i is the caller's source i (one mesh vertex per vertex of V, then the points)
+      m_field_labels.resize(source_vertices.size() + source_points.size());
+      for(std::size_t i = 0; i < m_field_labels.size(); ++i)
+        m_field_labels[i] = static_cast<std::int64_t>(i);
+      m_field_sources = m_field_labels.size();
+      m_field_kept = true;
+    }
     if(want_labels)
       for(std::size_t i = 0; i < n; ++i)
         lab[i] = (labels[i] == VTP::no_source || !(d[i] < infinity)) ? -1 : static_cast<std::int64_t>(labels[i]);
@@ -109,7 +133,7 @@ void Core_solver::field_on_caller(const std::vector<std::size_t>& source_vertice
                                   const std::vector<Face_location>& source_points,
                                   const std::vector<std::size_t>& target_vertices, double max_distance,
                                   const vtp_support::Method_info& method, double lam, int threads, double* d,
-                                  std::int64_t* lab)
+                                  std::int64_t* lab, bool keep_field)
 {
   const std::size_t n = number_of_vertices(), nm = m_mesh.number_of_vertices();
   std::vector<Vertex_index> mesh_sources;
@@ -139,6 +163,9 @@ void Core_solver::field_on_caller(const std::vector<std::size_t>& source_vertice
     labels.assign(nm, VTP::no_source);
   const auto index = get(boost::vertex_index, m_mesh);
   const int t = threads_or_default(threads);
+  if(keep_field && label_of_source.empty())
+    throw VTP::Invalid_input_error("keep_field=True: the source vertices are in no face of the mesh (the repair "
+                                   "removed them), there is no field to keep");
   if(!label_of_source.empty())
   {
     set_sources(mesh_sources, source_points);
@@ -148,13 +175,20 @@ void Core_solver::field_on_caller(const std::vector<std::size_t>& source_vertice
       const auto np = method_np.maximum_distance(limit)
                         .targets(live_targets)
                         .stop_at_targets(!live_targets.empty())
-                        .statistics(m_statistics);
+                        .statistics(m_statistics)
+                        .keep_field(keep_field);
       if(lab != nullptr)
         m_solver->template compute<Tag>(vdm, np.nearest_source_map(boost::make_iterator_property_map(
                                                labels.begin(), index)));
       else
         m_solver->template compute<Tag>(vdm, np);
     });
+    if(keep_field)
+    {
+      m_field_labels.assign(label_of_source.begin(), label_of_source.end());
+      m_field_sources = source_vertices.size() + source_points.size();
+      m_field_kept = true;
+    }
     if(lab != nullptr)
       for(std::size_t& l : labels)
         if(l != VTP::no_source)
@@ -309,7 +343,7 @@ double Core_solver::distance(std::int64_t a_vertex, std::int64_t a_face, const D
       sources.push_back(static_cast<std::size_t>(a_vertex));
     else
       points.push_back(al);
-    field_on_caller(sources, points, std::vector<std::size_t>(), infinity, method, lam, 0, d.data(), nullptr);
+    field_on_caller(sources, points, std::vector<std::size_t>(), infinity, method, lam, 0, d.data(), nullptr, false);
     return d[static_cast<std::size_t>(b_vertex)];
   }
   std::vector<Vertex_index> live;
@@ -318,12 +352,10 @@ double Core_solver::distance(std::int64_t a_vertex, std::int64_t a_face, const D
       live.push_back(c);
   if((b_vertex >= 0 && live.empty()) || (a_vertex >= 0 && av.empty()))
     return infinity;
-  m_solver->clear_sources();
   if(a_vertex >= 0)
-    for(Vertex_index c : av)
-      m_solver->add_source(c);
+    set_sources(av, std::vector<Face_location>());
   else
-    m_solver->add_source(al);
+    set_sources(std::vector<Vertex_index>(), std::vector<Face_location>(1, al));
   const CGAL::Constant_property_map<Vertex_index, double> no_map;
   vtp_support::with_method(method, lam, threads_or_default(0), [&](auto tag, const auto& method_np) {
     typedef decltype(tag) Tag;

@@ -8,19 +8,25 @@
 // Author(s) : VTP_geodesics contributors
 
 // Farthest-point sampling with geodesic distances, and the areas of the geodesic Voronoi cells of the samples
-// (see core_solver.h).
+// (see core_solver.h): exact for the exact methods (from a kept field), estimated from the vertices otherwise.
 
 #include "core_solver.h"
 
+#include <CGAL/VTP_geodesics/geodesic_curves.h>
 #include <CGAL/VTP_geodesics/geodesic_voronoi_cells.h>
+
+#include <CGAL/property_map.h>
 
 namespace vtp_python {
 
 // Up to k samples from `first` (-1: the vertex farthest from vertex 0) until the covering radius is <= radius.
 // Returns (samples (s,), radii (s,), distances (n,), labels (n,) with -1 for none, cell areas (s,), cell
-// uncertainty (s,)).
+// uncertainty (s,)). The cell areas of the exact methods come from the exact borders of the cells (one more run
+// from the samples that keeps its field) if exact_cell_areas; otherwise, and for the approximate methods, from
+// the vertex values.
 py::tuple Core_solver::farthest_point_sampling(std::int64_t k, std::int64_t first, double radius,
-                                               const std::string& method_name, double lam, int threads)
+                                               const std::string& method_name, double lam, int threads,
+                                               bool exact_cell_areas)
 {
   const vtp_support::Method_info& method = method_named(method_name, lam);
   if(k < 0)
@@ -54,7 +60,22 @@ py::tuple Core_solver::farthest_point_sampling(std::int64_t k, std::int64_t firs
                     : m_solver->template farthest_point_sampling<Tag>(static_cast<std::size_t>(k), np);
     });
     m_statistics = r.statistics;
-    cells = VTP::geodesic_voronoi_cell_areas(m_mesh, r.samples.size(), r.labels, r.distances);
+    if(exact_cell_areas && !method.approximate && !method.virtual_sources && !r.samples.empty())
+    {
+      // exact methods: the cells cut along their exact borders, from the field of one more run from the samples
+      // that keeps every window (geodesic_curves.h); its statistics are not those of the sampling (kept above)
+      set_sources(r.samples, std::vector<Face_location>());
+      const CGAL::Constant_property_map<Vertex_index, double> no_map;
+      vtp_support::with_method(method, lam, threads_or_default(threads), [&](auto tag, const auto& method_np) {
+        typedef decltype(tag) Tag;
+        m_solver->template compute<Tag>(no_map, method_np.keep_field(true));
+      });
+      cells = VTP::geodesic_voronoi_cell_areas(*m_solver);
+    }
+    else
+      // approximate methods (or exact_cell_areas false): from the labels and distances of the vertices, each
+      // face split where the two distances extended straight along its edges are equal (geodesic_voronoi_cells.h)
+      cells = VTP::geodesic_voronoi_cell_areas(m_mesh, r.samples.size(), r.labels, r.distances);
   }
   const std::size_t n = number_of_vertices(), s = r.samples.size();
   py::array_t<std::int64_t> samples(static_cast<py::ssize_t>(s)), labels(static_cast<py::ssize_t>(n));

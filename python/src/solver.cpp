@@ -208,6 +208,7 @@ int Core_solver::threads_or_default(int threads) const
 
 void Core_solver::set_sources(const std::vector<Vertex_index>& vertices, const std::vector<Face_location>& points)
 {
+  m_field_kept = false;  // the next computation replaces the field (distances(..., keep_field=True) sets it after)
   m_solver->clear_sources();
   for(Vertex_index s : vertices)
     m_solver->add_source(s);

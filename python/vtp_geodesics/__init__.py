@@ -18,7 +18,8 @@ the packages of the same names.
 
 # The package by topic, in private modules: _arguments (conversions and checks of the arguments, the method
 # names, recommended_lambda), _io (read_mesh), _solver (Solver: construction, properties, statistics) with its
-# queries in _queries, _matrices and _sampling; _core is the compiled layer (python/src/).
+# queries in _queries, _field, _matrices, _sampling, _curves, _log_map and _patches; _core is the compiled layer
+# (python/src/).
 from . import _core
 from ._arguments import methods, recommended_lambda
 from ._io import read_mesh

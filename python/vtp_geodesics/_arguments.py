@@ -123,6 +123,27 @@ def surface_points(points, locate, name="points"):
     return locate(xyz)
 
 
+def vertices_or_points(points, locate, name="points"):
+    """Vertex indices (an int or an integer array (k,)), ``(faces, barycentric)`` arrays or xyz positions (k, 3)
+    (their nearest surface points) -> (vertices int64 (k,) or empty, faces int64 (k,), barycentric float64
+    (k, 3)): the vertices if given, else the points."""
+    if isinstance(points, (bool, _np.bool_)):
+        raise TypeError("%s must be vertex indices or points, got a bool" % name)
+    if not (isinstance(points, tuple) and len(points) == 2):
+        a = _np.asarray(points)
+        if a.size == 0:
+            return _np.zeros(0, dtype=_np.int64), _np.zeros(0, dtype=_np.int64), _np.zeros((0, 3), dtype=_np.float64)
+        if a.dtype.kind in "iu" and a.dtype != _np.bool_:
+            if a.ndim > 1:
+                raise ValueError("%s: integer arrays are vertex indices, one index or a 1-D array, got shape %s "
+                                 "(give xyz positions as floats)" % (name, a.shape))
+            vertices = as_index_array(a, name).reshape(-1)
+            return vertices, _np.zeros(0, dtype=_np.int64), _np.zeros((0, 3), dtype=_np.float64)
+        points = a
+    faces, bary = surface_points(points, locate, name)
+    return _np.zeros(0, dtype=_np.int64), faces, bary
+
+
 def one_point(x, locate, name):
     """A vertex index, a (face, barycentric) pair or an xyz position -> (vertex, face, barycentric (1, 3)): the
     vertex, or -1 and the point."""

@@ -1,4 +1,6 @@
-"""Isolines and cell borders as curves on the surface (the C++ geodesic_curves.h; the manual's page on curves)."""
+"""Isolines and cell borders as curves on the surface, and the areas of the cells (the C++ geodesic_curves.h; the
+manual's page on curves): from one run of the given sources, or from the field that ``distances(...,
+keep_field=True)`` kept (the ``field_*`` methods)."""
 
 import math as _math
 
@@ -66,17 +68,72 @@ class Curves:
     def cell_borders(self, sources=SOURCE_DEFAULT, *, points=None, chord_tolerance=None, return_locations=False):
         """The borders between the geodesic Voronoi cells of the sources (vertices of ``sources``, then
         ``points``), as connected curves: a list of dict with ``points`` (k, 3), ``closed``, ``cells`` (i, j)
-        (the two source indices, i < j) and, with ``return_locations``, ``faces`` and ``barycentric``."""
+        (the two source indices, i < j) and, with ``return_locations``, ``faces`` and ``barycentric``. From one
+        exact run that keeps its field: a border point is where the exact distances of its two sources are
+        equal (but for the junctions of three cells, see the manual's page on curves)."""
         return self._curves(_np.zeros(0), True, sources, points, chord_tolerance, 0, return_locations)
 
-    def _curves(self, levels, borders, sources, points, chord_tolerance, exact_refinement, return_locations):
-        tol, refine = _options(chord_tolerance, exact_refinement)
+    def cell_areas(self, sources=SOURCE_DEFAULT, *, points=None, chord_tolerance=None):
+        """The areas of the geodesic Voronoi cells of the sources (the part of the surface nearest to each), the
+        faces cut along the borders of ``cell_borders()``: from one exact run that keeps its field.
+
+        Parameters
+        ----------
+        sources, points
+            As in ``distances()``.
+        chord_tolerance : float, optional
+            Largest distance of a chord of a border to its arc (default: 1e-3 times the mean edge length).
+
+        Returns
+        -------
+        areas : ndarray float64 (s,)
+            One per source, in the order of ``distances(..., return_labels=True)``'s labels (the ``sources``
+            vertices, then the ``points``). They add up to the area of the faces whose corners are all reached.
+        uncertainty : ndarray float64 (s,)
+            ``chord_tolerance`` times the length of the cell's border: a bound of the area between the chords
+            and the borders (the areas are exact where the borders are straight in their faces, as on a
+            plane).
+        """
+        tol, _ = _options(chord_tolerance, 0)
+        src, pf, pb = self._sources(sources, points)
+        return self._core.cell_areas(src, pf, pb, tol, False)
+
+    def field_isolines(self, levels, *, chord_tolerance=None, exact_refinement=0, return_locations=False):
+        """The isolines at ``levels`` (chosen after the run) of the field that ``distances(..., keep_field=True)``
+        kept, without a new propagation; as ``isolines()`` (``levels``, the options and the result), exact at
+        every level. Raises ValueError if the solver holds no kept field (see ``field_distance()``)."""
+        return self._curves(_levels(levels), False, None, None, chord_tolerance, exact_refinement, return_locations,
+                            from_field=True)
+
+    def field_cell_borders(self, *, chord_tolerance=None, return_locations=False):
+        """The borders between the cells of the sources of the kept field (``distances(..., keep_field=True)``),
+        as ``cell_borders()`` (``cells`` numbered as that run's labels), without a new propagation."""
+        return self._curves(_np.zeros(0), True, None, None, chord_tolerance, 0, return_locations, from_field=True)
+
+    def field_cell_areas(self, *, chord_tolerance=None):
+        """The areas of the cells of the sources of the kept field (``distances(..., keep_field=True)``) and their
+        uncertainty, as ``cell_areas()``, without a new propagation."""
+        tol, _ = _options(chord_tolerance, 0)
+        empty = _np.zeros(0, dtype=_np.int64)
+        return self._core.cell_areas(empty, empty, _np.zeros((0, 3)), tol, True)
+
+    def _sources(self, sources, points):
         src = source_vertices(sources, points)
         pf, pb = surface_points(points, self._core.locate)
         if src.size == 0 and pf.size == 0:
             raise ValueError("no source: sources is empty and no points are given")
+        return src, pf, pb
+
+    def _curves(self, levels, borders, sources, points, chord_tolerance, exact_refinement, return_locations,
+                from_field=False):
+        tol, refine = _options(chord_tolerance, exact_refinement)
+        if from_field:
+            src = pf = _np.zeros(0, dtype=_np.int64)
+            pb = _np.zeros((0, 3))
+        else:
+            src, pf, pb = self._sources(sources, points)
         out = []
-        for P, F, B, closed, level, i, j in self._core.curves(src, pf, pb, levels, borders, tol, refine):
+        for P, F, B, closed, level, i, j in self._core.curves(src, pf, pb, levels, borders, tol, refine, from_field):
             c = {"points": P, "closed": bool(closed)}
             if borders:
                 c["cells"] = (int(i), int(j))

@@ -12,7 +12,7 @@ class Queries:
     """The queries of ``Solver`` (which holds the compiled solver ``_core``)."""
 
     def distances(self, sources=SOURCE_DEFAULT, *, points=None, max_distance=_math.inf, targets=None, method="vtp",
-                  lam=recommended_lambda, return_labels=False, threads=0):
+                  lam=recommended_lambda, return_labels=False, threads=0, keep_field=False):
         """Geodesic distances from the nearest source to every vertex.
 
         Parameters
@@ -40,6 +40,12 @@ class Queries:
             Also return the nearest source of each vertex.
         threads : int, default 0
             Threads of the parallel methods (0: the solver's ``threads``).
+        keep_field : bool, default False
+            Keep the field of this run in the solver (every window that crossed a face; exact methods "vtp"
+            and "pvtp" only, not with ``targets``), until its next computation: ``field_distance()``,
+            ``field_nearest_source()``, ``field_isolines()``, ``field_cell_borders()`` and
+            ``field_cell_areas()`` then answer from it, exactly, at any point and any level, without a new
+            propagation. Its memory: ``field_bytes`` (about that of the windows propagated).
 
         Returns
         -------
@@ -53,7 +59,8 @@ class Queries:
         ------
         ValueError
             No source, an index out of range, invalid barycentric coordinates, a negative limit, an
-            unknown method. TypeError for non-integer indices.
+            unknown method; ``keep_field=True`` with an approximate method or with ``targets``. TypeError for
+            non-integer indices.
         """
         src = source_vertices(sources, points)
         pf, pb = surface_points(points, self._core.locate)
@@ -62,7 +69,7 @@ class Queries:
         tgt = vertex_list(targets, "targets")
         d, labels, _ = self._core.distances(src, pf, pb, check_float(max_distance, "max_distance"), tgt,
                                             check_method(method), check_float(lam, "lam"),
-                                            check_threads(threads), bool(return_labels))
+                                            check_threads(threads), bool(return_labels), bool(keep_field))
         return (d, labels) if return_labels else d
 
     def path(self, target, sources=SOURCE_DEFAULT, *, points=None, max_distance=_math.inf, return_locations=False):

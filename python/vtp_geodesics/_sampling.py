@@ -24,11 +24,17 @@ labels : ndarray int64 (n,)
     The index (into ``samples``) of the nearest sample of every vertex: its geodesic Voronoi cell; -1 for a
     vertex no sample reaches.
 cell_areas : ndarray float64 (s,)
-    The area of the part of the surface nearest to each sample. A face whose corners are in different cells
-    is split where the two distances, extended straight along its edges, are equal.
+    The area of the part of the surface nearest to each sample. Exact methods ("vtp", "pvtp"): the faces are
+    cut along the exact borders of the cells (those of ``cell_borders(samples)``), from one more run from the
+    samples that keeps its field (as ``cell_areas(samples)``). Approximate methods (and
+    ``exact_cell_areas=False``): from the vertex values; a face whose corners are in different cells is split
+    where the two distances, extended straight along its edges, are equal (an estimate).
 cell_area_uncertainty : ndarray float64 (s,)
-    The area of the faces each cell shares with other cells, where its border is estimated: a bound of the
-    error of ``cell_areas``.
+    A bound of the error of ``cell_areas``. Exact methods: the chord tolerance of the borders (1e-3 times the
+    mean edge length) times the length of the cell's border, a bound of the area between the chords and the
+    borders (the areas are exact where the borders are straight in their faces, as on a plane).
+    Approximate methods (and ``exact_cell_areas=False``): the area of the faces each cell shares with other
+    cells, where its border is estimated.
 """
 
 
@@ -36,7 +42,7 @@ class Sampling:
     """The farthest-point sampling of ``Solver`` (which holds the compiled solver ``_core``)."""
 
     def farthest_point_sampling(self, k, *, first=None, radius=0.0, method="vtp", lam=recommended_lambda,
-                                threads=0):
+                                threads=0, exact_cell_areas=True):
         """Farthest-point sampling with geodesic distances, and the geodesic Voronoi cells of the samples.
 
         Takes up to ``k`` sample vertices: ``first`` (default: the vertex farthest from vertex 0), then each
@@ -44,7 +50,9 @@ class Sampling:
         until every vertex is within ``radius`` of a sample. Each sample costs only the region it wins (the
         propagation starts from the distances already known), so ``k`` samples cost about ``log k`` full
         computations, not ``k``. The samples, radii, distances and labels are those of a full computation from
-        all the samples so far at every step.
+        all the samples so far at every step. With the exact methods, the cell areas come from one more run from
+        the samples (keeping its field, about the memory of the windows it propagates) and are exact; with the
+        approximate ones they are estimated from the vertex values (see ``FarthestPointSamples``).
 
         Parameters
         ----------
@@ -63,6 +71,11 @@ class Sampling:
             Reset step of the approximate methods.
         threads : int, default 0
             Threads of "pvtp" / "pavtp" / "pvsp" / "pvsp2" (0: the solver's ``threads``).
+        exact_cell_areas : bool, default True
+            With "vtp" or "pvtp": the cell areas from the exact borders, at the cost of one more run from the
+            samples that keeps its field (its memory, about that of the windows it propagates, e.g. 31-62 MB on
+            44,000 vertices, is held until the next computation of the solver). False: the estimate from the
+            vertex values, as the approximate methods (no extra run). Ignored by the approximate methods.
 
         Returns
         -------
@@ -89,5 +102,5 @@ class Sampling:
         # more samples than vertices are never taken: a k beyond 64 bits is as good as the number of vertices
         result = self._core.farthest_point_sampling(min(int(k), self._n), first_index, check_float(radius, "radius"),
                                                     check_method(method), check_float(lam, "lam"),
-                                                    check_threads(threads))
+                                                    check_threads(threads), bool(exact_cell_areas))
         return FarthestPointSamples(*result)

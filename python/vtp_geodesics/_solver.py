@@ -1,6 +1,7 @@
 """The solver of one mesh (private; see ``vtp_geodesics.Solver``): its construction and properties here, its
-queries by topic in ``_queries`` (distances, paths, one distance, locating points), ``_matrices`` (distance
-matrices), ``_sampling`` (farthest-point sampling) and ``_patches`` (polar patches)."""
+queries by topic in ``_queries`` (distances, paths, one distance, locating points), ``_field`` (the kept field of
+a run), ``_matrices`` (distance matrices), ``_sampling`` (farthest-point sampling), ``_curves`` (isolines, cell
+borders and areas) and ``_patches`` (polar patches)."""
 
 import warnings as _warnings
 
@@ -8,13 +9,14 @@ from . import _core
 from ._arguments import check_threads, mesh_arrays
 from ._log_map import LogMap
 from ._curves import Curves
+from ._field import Field
 from ._matrices import Matrices
 from ._patches import Patches
 from ._queries import Queries
 from ._sampling import Sampling
 
 
-class Solver(Queries, Matrices, Sampling, LogMap, Curves, Patches):
+class Solver(Queries, Field, Matrices, Sampling, LogMap, Curves, Patches):
     """Geodesic distances on one triangle mesh: ``Solver(V, F, *, threads=0, repair=True, through_pinches=False)``.
 
     The constructor checks the mesh and does the per-mesh preprocessing once; every query then runs
@@ -73,8 +75,15 @@ class Solver(Queries, Matrices, Sampling, LogMap, Curves, Patches):
     Methods
     -------
     distances(sources=0, *, points=None, max_distance=inf, targets=None, method="vtp", lam=recommended_lambda,
-              return_labels=False, threads=0)
-        distances from the nearest of several sources (vertices and surface points), float64 (n,).
+              return_labels=False, threads=0, keep_field=False)
+        distances from the nearest of several sources (vertices and surface points), float64 (n,); with
+        keep_field=True the solver keeps the field of the run for the field_* queries.
+    field_distance(points, *, return_labels=False), field_nearest_source(points)
+        the exact distance and the nearest source at any vertex or point of the surface, from the kept field.
+    field_isolines(levels), field_cell_borders(), field_cell_areas()
+        isolines at any levels, cell borders and cell areas of the kept field, with no new run.
+    isolines(levels, sources=0), cell_borders(sources), cell_areas(sources)
+        the same from one run of the given sources.
     path(target, sources=0, *, points=None, return_locations=False)
         the geodesic path from the nearest source to a target, (k, 3) points, source first.
     distance(a, b)
