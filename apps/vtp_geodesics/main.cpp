@@ -20,6 +20,7 @@
 //   vtp_support/read_mesh.h (support/)   reading and repair, and the correspondence of file and mesh vertices
 //   request.cpp       the request made from the arguments: file vertices and points to the mesh
 //   locate.cpp        points of the command line located on the mesh (vtp_support/surface_locator.h)
+//   query_points.cpp  the points of --query-points (a file) and their answers (--query-output)
 //   run.cpp           the computation: every call into the library
 //   file_results.cpp  the results back in the file's terms: mesh vertices to file vertices
 //   outputs.cpp       the files: text, PLY (distance_ply.cpp), picture (picture*.cpp), samples, paths

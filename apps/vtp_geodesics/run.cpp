@@ -84,6 +84,29 @@ Curve_request curve_request(const Solver& solver, const Run_request& request, bo
 // Whether `method` can keep its field (keep_field: the exact methods).
 bool keeps_field(const vtp_support::Method_info& method) { return !method.approximate && !method.virtual_sources; }
 
+// The answers at the query points from the field that the solver's last run kept (none if `kept` is false: no
+// source, inf and -1 everywhere); its labels mapped by `label_of_source` (empty: the library's).
+void answer_queries(const Solver& solver, bool kept, const std::vector<Face_location>& points,
+                    const std::vector<std::size_t>& label_of_source, Run_result& r)
+{
+  const double infinity = std::numeric_limits<double>::infinity();
+  r.query_distances.assign(points.size(), infinity);
+  r.query_labels.assign(points.size(), -1);
+  if(!kept)
+    return;
+  CGAL_assertion(solver.has_kept_field());
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    const double d = solver.field_distance(points[i]);
+    if(!(d < infinity))
+      continue;
+    const std::size_t s = solver.field_nearest_source(points[i]);
+    r.query_distances[i] = d;
+    if(s != VTP::no_source)
+      r.query_labels[i] = static_cast<int>(label_of_source.empty() ? s : label_of_source[s]);
+  }
+}
+
 // Farthest-point sampling with `method` (any of the table), then the areas of the Voronoi cells.
 void run_sampling(const vtp_support::Method_info& method, Solver& solver, const vtp_support::Mesh& mesh,
                   const Run_request& request, double lambda, Run_result& r)
@@ -107,10 +130,10 @@ void run_sampling(const vtp_support::Method_info& method, Solver& solver, const 
   for(std::size_t i = 0; i < r.mesh_vertices; ++i)
     r.labels[i] = fps.labels[i] == VTP::no_source ? -1 : static_cast<int>(fps.labels[i]);
   r.statistics = fps.statistics;
-  // the samples as sources, for the curves of their field (one more run): an exact method keeps the field (the
-  // curves exact), the others record their paths
+  // the samples as sources (their labels: the sample numbers), for the curves of their field and the query
+  // points (one more run): an exact method keeps the field (the curves exact), the others record their paths
   const bool keep = keeps_field(method);
-  const bool more = !fps.samples.empty() && request.wants_curves();
+  const bool more = !fps.samples.empty() && (request.wants_curves() || request.keep_field);
   if(more)
   {
     vtp_support::with_method(method, lambda, request.threads, [&](auto tag, const auto& method_np) {
@@ -122,9 +145,11 @@ void run_sampling(const vtp_support::Method_info& method, Solver& solver, const 
     r.statistics.field_pieces = solver.statistics().field_pieces;
     r.statistics.field_bytes = solver.statistics().field_bytes;
   }
-  if(more)
+  if(more && request.wants_curves())
     r.curves = extract_curve_sets(solver, curve_request(solver, request, fps.samples.size() > 1),
                                   std::vector<std::size_t>());
+  if(request.keep_field)
+    answer_queries(solver, more, request.query_locations, std::vector<std::size_t>(), r);
 }
 
 // The run with the log map (vtp, pvtp): the named parameters `np` of the run, and the log map's, into r.log_map
@@ -211,11 +236,12 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
   }
 
   const double infinity = std::numeric_limits<double>::infinity();
-  // One run gives the distances, the trace-back of the paths and what the curves need: with an exact method its
-  // kept field (the curves exact at any level, found after the run), else its record (the curves per vertex).
-  // (Not with runs through the split vertices, which start from known distances: the arguments refuse
-  // --curves-output with them, and the picture then interpolates.)
-  const bool keep = keeps_field(method) && request.joined_copies.empty() && request.wants_curves();
+  // One run gives the distances, the trace-back of the paths and what the curves and the query points need: with
+  // an exact method its kept field (the curves exact at any level, found after the run), else its record (the
+  // curves per vertex). (Not with runs through the split vertices, which start from known distances: the
+  // arguments refuse --keep-field and --curves-output with them, and the picture then interpolates.)
+  const bool keep = keeps_field(method) && request.joined_copies.empty()
+                    && (request.keep_field || request.wants_curves());
   const bool record = !request.paths.empty() || (request.wants_curves() && !keep);
   std::vector<std::size_t> labels;
   if(label_of_source.empty())
@@ -288,10 +314,12 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
     }
   }
 
-  // The curves, from the same run
+  // The curves and the query points, from the same run
   if(request.wants_curves() && !label_of_source.empty() && request.joined_copies.empty())
     r.curves = extract_curve_sets(solver, curve_request(solver, request, label_of_source.size() > 1),
                                   label_of_source);
+  if(request.keep_field)
+    answer_queries(solver, !label_of_source.empty(), request.query_locations, label_of_source, r);
 
   // The paths, from the trace-back recorded by the run; a vertex path from its copy nearest to a source.
   const std::string beyond = request.max_distance < infinity ? " (or it lies beyond --max-distance)" : "";
