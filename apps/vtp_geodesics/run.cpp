@@ -33,6 +33,7 @@
 #include <chrono>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <string>
 
 namespace vtp_geodesics_app {
@@ -186,8 +187,11 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
   const double lambda = request.has_lambda ? request.lambda : vtp_support::default_lambda;
 
   // the preprocessing uses the threads of the parallel methods, whatever the method (same result)
-  Solver solver(mesh, CGAL::VTP_geodesics::parameters::number_of_threads(request.threads));
+  const std::shared_ptr<Solver> kept_solver =
+    std::make_shared<Solver>(mesh, CGAL::VTP_geodesics::parameters::number_of_threads(request.threads));
+  Solver& solver = *kept_solver;
   Run_result r;
+  r.solver = kept_solver;
   r.mesh_vertices = solver.number_of_vertices();
   r.mesh_faces = solver.number_of_faces();
   r.preprocessing_seconds = solver.preprocessing_seconds();

@@ -24,6 +24,7 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -130,6 +131,9 @@ struct Run_result
   // per query location: its distance (+inf if unreached) and its nearest source's label (-1: none)
   std::vector<double> query_distances;
   std::vector<int> query_labels;
+  // The solver of the run, with its kept field: freed with the result, or never (main.cpp leaves the process
+  // without freeing what the OS takes back anyway).
+  std::shared_ptr<const void> solver;
 };
 
 // Runs `request` on `mesh`; throws Tool_error (e.g. a path to a vertex that no source reaches) or the
