@@ -59,7 +59,9 @@ void print_usage(std::ostream& os, const std::string& default_mesh)
         "vertices of a triangle mesh by vertex-oriented triangle propagation (VTP): the distance of a\n"
         "vertex is its distance to the nearest source. Optionally: the nearest source of each vertex,\n"
         "a distance limit, distances at targets, geodesic paths, farthest-point sampling with\n"
-        "its geodesic Voronoi cells, and geodesic polar coordinates (the log map).\n"
+        "its geodesic Voronoi cells, geodesic polar coordinates (the log map), and the exact\n"
+        "distance and nearest source at any points of the surface (--query-points), from the\n"
+        "field that the run keeps.\n"
         "\n";
   const std::size_t column = 25;
   vtp_support::print_help_item(os, "MESH", "mesh file: " + vtp_support::readable_extensions_text() + "\n(default: "

@@ -62,6 +62,11 @@ struct Arguments
   int isolines = 10;
   std::string curves_output;              // --curves-output: empty: none
   std::vector<double> levels;             // --levels (empty: those of --isolines)
+  // The kept field (vtp, pvtp): --keep-field, and the points it answers for, --query-points FILE (one "X Y Z"
+  // per line, located as --target-point) with --query-output FILE ("distance label" per point)
+  bool keep_field = false;
+  std::string query_points;               // empty: none
+  std::string query_output;               // empty: none; "-": standard output
   bool has_view = false;
   std::array<double, 3> view = { { 0., 0., -1. } };
   bool check_cgal = false;
@@ -91,6 +96,8 @@ struct Arguments
   bool has_reference_direction = false;
   std::array<double, 3> reference_direction = { { 1., 0., 0. } };
   bool wants_log_map() const { return !log_map_output.empty() || colour_angle; }
+  // --keep-field, or implied by --query-points
+  bool wants_field() const { return keep_field || !query_points.empty(); }
 
   std::size_t number_of_sources() const { return sources.size() + source_points.size(); }
   // several sources: the outputs tell the nearest one (the labels)

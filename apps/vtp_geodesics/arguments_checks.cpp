@@ -54,6 +54,23 @@ void check_log_map_arguments(const Arguments& a, const vtp_support::Method_info&
                      "--through-pinches");
 }
 
+// The kept field: exact methods, and a field that the last run keeps (the runs through the split vertices of
+// --through-pinches start from known distances, which keep none); --query-points and --query-output go together.
+void check_field_arguments(const Arguments& a, const vtp_support::Method_info& m)
+{
+  if(!a.query_output.empty() && a.query_points.empty())
+    throw Tool_error("--query-output needs --query-points");
+  if(!a.query_points.empty() && a.query_output.empty())
+    throw Tool_error("--query-points needs --query-output");
+  if(!a.wants_field())
+    return;
+  const std::string what = a.keep_field ? "--keep-field" : "--query-points (which keeps the field)";
+  if(m.approximate || m.virtual_sources)
+    throw Tool_error(what + " needs --method vtp or pvtp, not " + m.name + " (the field of an exact run)");
+  if(a.through_pinches)
+    throw Tool_error(what + " takes no --through-pinches");
+}
+
 } // namespace
 
 void check_arguments(const Arguments& a)
@@ -63,6 +80,7 @@ void check_arguments(const Arguments& a)
     throw Tool_error("unknown method '" + a.method + "' (expected " + vtp_support::method_names() + ")");
   check_sampling_arguments(a);
   check_log_map_arguments(a, *m);
+  check_field_arguments(a, *m);
   if((a.has_lambda || a.has_lambda_g) && !m->approximate)
     throw Tool_error("--lambda and --lambda-g need --method avtp or pavtp");
   if(!a.target_output.empty() && !a.has_targets())
@@ -83,9 +101,11 @@ void check_arguments(const Arguments& a)
   if(a.has_paths() && a.path_output.empty() && a.picture.empty())
     throw Tool_error("--path-to and --path-to-point need --path-output (or --picture, which draws the paths)");
   const std::string* files[] = { &a.output, &a.stats_json, &a.picture, &a.labels, &a.target_output, &a.path_output,
-                                 &a.samples_output, &a.log_map_output, &a.curves_output };
+                                 &a.samples_output, &a.log_map_output, &a.curves_output,
+                                 &a.query_output };
   const char* names[] = { "--output", "--stats-json", "--picture", "--labels", "--target-output", "--path-output",
-                          "--samples-output", "--log-map-output", "--curves-output" };
+                          "--samples-output", "--log-map-output", "--curves-output",
+                          "--query-output" };
   const int n = static_cast<int>(sizeof(names) / sizeof(names[0]));
   for(int i = 0; i < n; ++i)
     for(int j = i + 1; j < n; ++j)

@@ -234,6 +234,29 @@ const vtp_support::Option_table<Arguments>& option_table()
           start = end + 1;
         }
       } },
+    { "--keep-field", nullptr,
+      "keep every window that crossed a face (--method vtp or pvtp only):\n"
+      "after the run, the exact distance and nearest source at any point\n"
+      "of the surface (--query-points), and the curves at any level\n"
+      "(memory: about the windows propagated, field_bytes of\n"
+      "--stats-json). With vtp and pvtp, the curves of --picture and\n"
+      "--curves-output come from the kept field anyway: one run gives\n"
+      "the distances and the curves",
+      [](Arguments& a, const std::string&, const std::string&) { a.keep_field = true; } },
+    { "--query-points", "FILE",
+      "points, one \"X Y Z\" per line, each located on the surface as\n"
+      "--target-point locates its point (the nearest point of the\n"
+      "surface); their exact distances and nearest sources, from the\n"
+      "kept field, go to --query-output. A line that is not three finite\n"
+      "numbers is an error (which names it). Implies --keep-field",
+      [](Arguments& a, const std::string& n, const std::string& v) { a.query_points = file_name(n, v); } },
+    { "--query-output", "FILE",
+      "write one line per point of --query-points, in its order:\n"
+      "\"distance label\", the distance as the text of --output and the\n"
+      "nearest source numbered as --labels (with --farthest-points: the\n"
+      "sample); \"inf -1\" where no source reaches the point (or beyond\n"
+      "--max-distance); - for standard output",
+      [](Arguments& a, const std::string& n, const std::string& v) { a.query_output = file_name(n, v); } },
     { "--view", "X,Y,Z",
       "viewing direction of the picture (default: along the shortest side\n"
       "of the bounding box)",

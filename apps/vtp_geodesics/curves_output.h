@@ -46,8 +46,9 @@ std::vector<double> curve_levels(const Curve_solver& solver, const std::vector<d
 // The levels of the picture's isolines: those round values below the largest finite distance (picture.h).
 std::vector<double> picture_levels(const Curve_solver& solver, int isolines);
 
-// What curves to extract from the solver's last run (which recorded paths): the isolines at the levels of
-// --curves-output and of the picture, the borders of the cells for either (with several sources).
+// What curves to extract from the solver's last run (which kept its field, or recorded its paths): the isolines
+// at the levels of --curves-output and of the picture, the borders of the cells for either (with several
+// sources).
 struct Curve_request
 {
   std::vector<double> output_levels, picture_levels;

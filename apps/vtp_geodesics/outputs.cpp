@@ -12,6 +12,7 @@
 #include "colour_map.h"
 #include "distance_ply.h"
 #include "picture.h"
+#include "query_points.h"
 
 #include <vtp_support/mesh_formats.h>
 #include <vtp_support/number_format.h>
@@ -199,6 +200,9 @@ void write_outputs(Output_files& files, const Arguments& args, const vtp_support
     files.write(args.log_map_output, [&](std::ostream& os) { write_log_map(os, results.log_map); });
   if(!args.curves_output.empty())
     files.write(args.curves_output, [&](std::ostream& os) { write_curves_obj(os, run.curves); });
+  if(!args.query_output.empty())
+    files.write(args.query_output,
+                [&](std::ostream& os) { write_query_results(os, run.query_distances, run.query_labels); });
   if(!args.picture.empty())
     files.write(args.picture, [&](std::ostream& os) {
       // the mesh of the computation, with the sources (or the samples) and the paths

@@ -73,7 +73,8 @@ void write_picture(std::ostream& os, const vtp_support::Mesh& mesh, const std::v
 void write_samples(std::ostream& os, const std::vector<std::size_t>& samples, const std::vector<double>& radii);
 
 // Writes the files that the arguments ask for (but --stats-json), in `files`: the distances, the labels, the
-// distances of the targets, the samples, the paths, the picture.
+// distances of the targets, the samples, the paths, the log map, the curves, the answers at the query points, the
+// picture.
 void write_outputs(Output_files& files, const Arguments& args, const vtp_support::Input_mesh& input,
                    const Request& request, const Run_result& run, const File_results& results);
 

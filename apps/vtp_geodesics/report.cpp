@@ -78,6 +78,7 @@ std::string stats_json(const Report& r)
      << ", \"max_distance_limit\": " << json_value_or_null(r.has_max_distance, r.max_distance_limit)
      << ", \"targets\": " << f.target_distances.size()
      << ", \"paths\": " << f.paths.size()
+     << ", \"query_points\": " << s.query_distances.size()
      << ", \"method\": " << json_value(r.method)
      << ", \"preprocessing_threads\": " << s.preprocessing_threads;
   // the stages from the file to the answer, from their description (vtp_support/statistics.h): read_seconds,

@@ -10,6 +10,7 @@
 // The request made from the command line (see request.h).
 
 #include "request.h"
+#include "query_points.h"
 
 #include <vtp_support/number_format.h>
 
@@ -83,8 +84,11 @@ Request make_request(const Arguments& args, const vtp_support::Method_info& meth
     check_vertices(std::vector<std::size_t>(1, args.first), input, "--first");
 
   // Points, located on the mesh of the computation (the repaired mesh, if the file needed a repair).
+  const std::vector<std::array<double, 3> > query_points =
+    args.query_points.empty() ? std::vector<std::array<double, 3> >() : read_query_points(args.query_points);
   std::unique_ptr<Point_locator> locator;
-  if(!args.source_points.empty() || !args.target_points.empty() || !args.path_to_points.empty())
+  if(!args.source_points.empty() || !args.target_points.empty() || !args.path_to_points.empty()
+     || !query_points.empty())
     locator.reset(new Point_locator(input.mesh));
   auto locate_all = [&locator](const std::vector<std::array<double, 3> >& points, const char* option) {
     std::vector<Located_point> located;
@@ -96,6 +100,9 @@ Request make_request(const Arguments& args, const vtp_support::Method_info& meth
   r.source_points = locate_all(args.source_points, "--source-point");
   const std::vector<Located_point> target_points = locate_all(args.target_points, "--target-point");
   const std::vector<Located_point> path_points = locate_all(args.path_to_points, "--path-to-point");
+  for(std::size_t i = 0; i < query_points.size(); ++i)
+    r.run.query_locations.push_back(
+      locator->locate(query_points[i], "--query-points (line " + std::to_string(i + 1) + ")").location);
 
   // The mesh vertices standing for a file vertex: one, several if the repair duplicated it (as a source or a
   // target, all are), none if the repair removed it (a vertex in no face: only itself is reachable).
@@ -122,6 +129,7 @@ Request make_request(const Arguments& args, const vtp_support::Method_info& meth
   run.picture_isolines = picture_curves && !args.colour_labels && args.isolines > 0;
   run.picture_borders = picture_curves && args.colour_labels;
   run.curve_levels = args.levels;
+  run.keep_field = args.wants_field();
   run.curve_isolines = args.isolines;
   run.want_labels = args.several_sources() || !args.labels.empty() || args.farthest_points > 0 || args.colour_labels;
   run.max_distance = args.max_distance;

@@ -33,6 +33,7 @@
 #include <chrono>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <string>
 
 namespace vtp_geodesics_app {
@@ -81,6 +82,32 @@ Curve_request curve_request(const Solver& solver, const Run_request& request, bo
   return c;
 }
 
+// Whether `method` can keep its field (keep_field: the exact methods).
+bool keeps_field(const vtp_support::Method_info& method) { return !method.approximate && !method.virtual_sources; }
+
+// The answers at the query points from the field that the solver's last run kept (none if `kept` is false: no
+// source, inf and -1 everywhere); its labels mapped by `label_of_source` (empty: the library's).
+void answer_queries(const Solver& solver, bool kept, const std::vector<Face_location>& points,
+                    const std::vector<std::size_t>& label_of_source, Run_result& r)
+{
+  const double infinity = std::numeric_limits<double>::infinity();
+  r.query_distances.assign(points.size(), infinity);
+  r.query_labels.assign(points.size(), -1);
+  if(!kept)
+    return;
+  CGAL_assertion(solver.has_kept_field());
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    const double d = solver.field_distance(points[i]);
+    if(!(d < infinity))
+      continue;
+    const std::size_t s = solver.field_nearest_source(points[i]);
+    r.query_distances[i] = d;
+    if(s != VTP::no_source)
+      r.query_labels[i] = static_cast<int>(label_of_source.empty() ? s : label_of_source[s]);
+  }
+}
+
 // Farthest-point sampling with `method` (any of the table), then the areas of the Voronoi cells.
 void run_sampling(const vtp_support::Method_info& method, Solver& solver, const vtp_support::Mesh& mesh,
                   const Run_request& request, double lambda, Run_result& r)
@@ -104,17 +131,26 @@ void run_sampling(const vtp_support::Method_info& method, Solver& solver, const 
   for(std::size_t i = 0; i < r.mesh_vertices; ++i)
     r.labels[i] = fps.labels[i] == VTP::no_source ? -1 : static_cast<int>(fps.labels[i]);
   r.statistics = fps.statistics;
-  if(request.wants_curves() && !fps.samples.empty())
+  // the samples as sources (their labels: the sample numbers), for the curves of their field and the query
+  // points (one more run): an exact method keeps the field (the curves exact), the others record their paths
+  const bool keep = keeps_field(method);
+  const bool more = !fps.samples.empty() && (request.wants_curves() || request.keep_field);
+  if(more)
   {
-    // the samples as sources, recorded, for the curves of their field (one more run)
     vtp_support::with_method(method, lambda, request.threads, [&](auto tag, const auto& method_np) {
       typedef decltype(tag) Tag;
       const CGAL::Constant_property_map<vtp_support::Vertex_index, double> no_map;
-      solver.compute<Tag>(no_map, fps.samples, method_np.lambda_g(request.lambda_g).record_paths(true));
+      solver.compute<Tag>(no_map, fps.samples,
+                          method_np.lambda_g(request.lambda_g).record_paths(!keep).keep_field(keep));
     });
+    r.statistics.field_pieces = solver.statistics().field_pieces;
+    r.statistics.field_bytes = solver.statistics().field_bytes;
+  }
+  if(more && request.wants_curves())
     r.curves = extract_curve_sets(solver, curve_request(solver, request, fps.samples.size() > 1),
                                   std::vector<std::size_t>());
-  }
+  if(request.keep_field)
+    answer_queries(solver, more, request.query_locations, std::vector<std::size_t>(), r);
 }
 
 // The run with the log map (vtp, pvtp): the named parameters `np` of the run, and the log map's, into r.log_map
@@ -151,8 +187,11 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
   const double lambda = request.has_lambda ? request.lambda : vtp_support::default_lambda;
 
   // the preprocessing uses the threads of the parallel methods, whatever the method (same result)
-  Solver solver(mesh, CGAL::VTP_geodesics::parameters::number_of_threads(request.threads));
+  const std::shared_ptr<Solver> kept_solver =
+    std::make_shared<Solver>(mesh, CGAL::VTP_geodesics::parameters::number_of_threads(request.threads));
+  Solver& solver = *kept_solver;
   Run_result r;
+  r.solver = kept_solver;
   r.mesh_vertices = solver.number_of_vertices();
   r.mesh_faces = solver.number_of_faces();
   r.preprocessing_seconds = solver.preprocessing_seconds();
@@ -201,6 +240,13 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
   }
 
   const double infinity = std::numeric_limits<double>::infinity();
+  // One run gives the distances, the trace-back of the paths and what the curves and the query points need: with
+  // an exact method its kept field (the curves exact at any level, found after the run), else its record (the
+  // curves per vertex). (Not with runs through the split vertices, which start from known distances: the
+  // arguments refuse --keep-field and --curves-output with them, and the picture then interpolates.)
+  const bool keep = keeps_field(method) && request.joined_copies.empty()
+                    && (request.keep_field || request.wants_curves());
+  const bool record = !request.paths.empty() || (request.wants_curves() && !keep);
   std::vector<std::size_t> labels;
   if(label_of_source.empty())
   {
@@ -227,7 +273,8 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
                         .maximum_distance(join ? infinity : request.max_distance)
                         .targets(targets)
                         .stop_at_targets(request.stop_at_targets && !join)
-                        .record_paths(!request.paths.empty() || request.wants_curves());
+                        .record_paths(record)
+                        .keep_field(keep);
       if(request.log_map)
         compute_log_map<Tag>(solver, mesh, request, np, labels, r);
       else if(request.want_labels)
@@ -271,43 +318,12 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
     }
   }
 
-  // The curves, from the same record (not after runs through the split vertices: the arguments refuse
-  // --curves-output with them, and the picture then interpolates its isolines)
+  // The curves and the query points, from the same run
   if(request.wants_curves() && !label_of_source.empty() && request.joined_copies.empty())
-  {
-    const Curve_request all = curve_request(solver, request, label_of_source.size() > 1);
-    std::vector<double> levels(all.output_levels);
-    levels.insert(levels.end(), all.picture_levels.begin(), all.picture_levels.end());
-    if(levels.empty() || method.virtual_sources || method.approximate)
-      r.curves = extract_curve_sets(solver, all, label_of_source);
-    else
-    {
-      // The borders from this run's record (per vertex); the isolines exact, from a second run with the same
-      // sources, stop and limit that keeps the windows crossing the faces at their levels (curve_levels(),
-      // geodesic_curves.h), and the trace-back for the paths below.
-      Curve_request borders = all, isolines = all;
-      borders.output_levels.clear();
-      borders.picture_levels.clear();
-      isolines.output_borders = isolines.picture_borders = false;
-      std::vector<Curve_set> border_sets;
-      if(borders.output_borders || borders.picture_borders)
-        border_sets = extract_curve_sets(solver, borders, label_of_source);
-      std::sort(levels.begin(), levels.end());
-      levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
-      vtp_support::with_method(method, lambda, request.threads, [&](auto tag, const auto& method_np) {
-        typedef decltype(tag) Tag;
-        const CGAL::Constant_property_map<vtp_support::Vertex_index, double> no_map;
-        solver.compute<Tag>(no_map, method_np.lambda_g(request.lambda_g)
-                                      .maximum_distance(request.max_distance)
-                                      .targets(targets)
-                                      .stop_at_targets(request.stop_at_targets)
-                                      .record_paths(!request.paths.empty())
-                                      .keep_field(true));
-      });
-      r.curves = extract_curve_sets(solver, isolines, label_of_source);
-      r.curves.insert(r.curves.end(), border_sets.begin(), border_sets.end());
-    }
-  }
+    r.curves = extract_curve_sets(solver, curve_request(solver, request, label_of_source.size() > 1),
+                                  label_of_source);
+  if(request.keep_field)
+    answer_queries(solver, !label_of_source.empty(), request.query_locations, label_of_source, r);
 
   // The paths, from the trace-back recorded by the run; a vertex path from its copy nearest to a source.
   const std::string beyond = request.max_distance < infinity ? " (or it lies beyond --max-distance)" : "";

@@ -24,6 +24,7 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,11 @@ struct Run_request
   bool picture_isolines = false;
   bool picture_borders = false;
   bool wants_curves() const { return want_curves || picture_isolines || picture_borders; }
+  // --keep-field (--query-points): the run keeps its field (exact methods), which answers at the query points
+  // (located as the target points). With an exact method the curves come from the kept field too (else from the
+  // run's trace-back record, per vertex).
+  bool keep_field = false;
+  std::vector<Face_location> query_locations;
   // The sources: mesh vertices, then points of the surface, each with the index of the source of the command
   // line it stands for (its label; the copies of a vertex share one). None: nothing is computed (all +inf).
   std::vector<vtp_support::Vertex_index> source_vertices;
@@ -122,6 +128,12 @@ struct Run_result
   std::vector<std::array<double, 2> > log_map;
   std::vector<long long> log_map_via;
   std::vector<Curve_set> curves;          // --curves-output and --picture (Curve_set::in_output, in_picture)
+  // per query location: its distance (+inf if unreached) and its nearest source's label (-1: none)
+  std::vector<double> query_distances;
+  std::vector<int> query_labels;
+  // The solver of the run, with its kept field: freed with the result, or never (main.cpp leaves the process
+  // without freeing what the OS takes back anyway).
+  std::shared_ptr<const void> solver;
 };
 
 // Runs `request` on `mesh`; throws Tool_error (e.g. a path to a vertex that no source reaches) or the

@@ -31,7 +31,16 @@
 //       the first one FIRST ("-": any), distinct vertices, radii non-increasing, the last one the largest of DIST;
 //       each sample at distance 0 and labelled with its own number; every label in range, -1 exactly where DIST
 //       is inf; every sample labels some vertex.
+//   plane_query OUTPUT POINTS [limit=R] X_0,Y_0 X_1,Y_1 ...
+//       OUTPUT (--query-output of a run on the unit square [0,1]^2 of the plane z = 0, from sources at (X_k, Y_k),
+//       labelled k, with --max-distance R if given) has one line "distance label" per line "X Y Z" of POINTS: the
+//       point of the square nearest to (X, Y, Z) is (clamp(X), clamp(Y)); its distance is the Euclidean distance
+//       to the nearest source, within 1e-9, and the label that source's (either where two are within 1e-6);
+//       beyond R, "inf -1" (either within 1e-9 of R). Every source must label some point; with a limit, some
+//       point must be beyond it.
 
+#include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -430,13 +439,80 @@ void check_samples(const std::vector<std::string>& args)
       throw Check_failure("sample " + std::to_string(i) + " labels no vertex");
 }
 
+void check_plane_query(const std::vector<std::string>& args)
+{
+  if(args.size() < 3)
+    throw Check_failure("plane_query: expected OUTPUT POINTS [limit=R] X_0,Y_0 ...");
+  const std::vector<std::string> out = read_lines(args[0]);
+  const std::vector<std::string> points = read_lines(args[1]);
+  same_size(out.size(), points.size(), args[0] + " and " + args[1]);
+  std::size_t first_source = 2;
+  double limit = infinity;
+  if(args[2].compare(0, 6, "limit=") == 0)
+  {
+    limit = to_number(args[2].substr(6), "R");
+    ++first_source;
+  }
+  std::vector<std::array<double, 2> > sources;
+  for(std::size_t k = first_source; k < args.size(); ++k)
+  {
+    const std::size_t comma = args[k].find(',');
+    if(comma == std::string::npos)
+      throw Check_failure("source '" + args[k] + "' is not X,Y");
+    sources.push_back({ { to_number(args[k].substr(0, comma), "X"), to_number(args[k].substr(comma + 1), "Y") } });
+  }
+  if(sources.empty())
+    throw Check_failure("plane_query: no source");
+  std::vector<std::size_t> count(sources.size(), 0);
+  std::size_t beyond = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    const std::string at = args[0] + " line " + std::to_string(i + 1) + " ('" + out[i] + "')";
+    const std::vector<double> p = numbers_of_line(points[i], args[1] + " line " + std::to_string(i + 1));
+    if(p.size() != 3)
+      throw Check_failure(args[1] + " line " + std::to_string(i + 1) + ": not 'X Y Z'");
+    const double x = std::min(1., std::max(0., p[0])), y = std::min(1., std::max(0., p[1]));
+    std::vector<double> d;
+    for(const std::array<double, 2>& s : sources)
+      d.push_back(std::hypot(x - s[0], y - s[1]));
+    const std::size_t nearest = static_cast<std::size_t>(std::min_element(d.begin(), d.end()) - d.begin());
+    std::istringstream in(out[i]);
+    std::string distance_text, rest;
+    long label = 0;
+    if(!(in >> distance_text >> label) || (in >> rest))
+      throw Check_failure(at + ": not 'distance label'");
+    const double distance = to_number(distance_text, at);
+    if(std::abs(d[nearest] - limit) <= 1e-9)
+      continue;
+    if(d[nearest] > limit)
+    {
+      ++beyond;
+      if(!std::isinf(distance) || label != -1)
+        throw Check_failure(at + ": beyond the limit (" + text(d[nearest]) + "), expected 'inf -1'");
+      continue;
+    }
+    if(!(std::abs(distance - d[nearest]) <= 1e-9))
+      throw Check_failure(at + ": the distance of (" + text(x) + ", " + text(y) + ") is " + text(d[nearest]));
+    if(label < 0 || static_cast<std::size_t>(label) >= sources.size()
+       || !(d[static_cast<std::size_t>(label)] <= d[nearest] + 1e-6))
+      throw Check_failure(at + ": the nearest source of (" + text(x) + ", " + text(y) + ") is "
+                          + std::to_string(nearest));
+    ++count[static_cast<std::size_t>(label)];
+  }
+  for(std::size_t k = 0; k < count.size(); ++k)
+    if(count[k] == 0)
+      throw Check_failure("source " + std::to_string(k) + " labels no point: not a test");
+  if(limit < infinity && beyond == 0)
+    throw Check_failure("no point beyond the limit: not a test");
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
   if(argc < 2)
   {
-    std::cerr << "usage: vtp_geodesics_cli_check nearest|limit|values|paths|samples ARGUMENTS... (see cli_check.cpp)\n";
+    std::cerr << "usage: vtp_geodesics_cli_check nearest|limit|values|paths|samples|plane_query ARGUMENTS... (see cli_check.cpp)\n";
     return 2;
   }
   const std::string mode = argv[1];
@@ -453,6 +529,8 @@ int main(int argc, char** argv)
       check_paths(args);
     else if(mode == "samples")
       check_samples(args);
+    else if(mode == "plane_query")
+      check_plane_query(args);
     else
       throw Check_failure("unknown check '" + mode + "'");
   }

@@ -11,7 +11,7 @@ set(cli_script "${CMAKE_CURRENT_SOURCE_DIR}/run_cli_test.cmake")
 set(cli_data "${CMAKE_CURRENT_SOURCE_DIR}/data")
 file(STRINGS "${VTP_GEODESICS_DEFAULT_MESH}" default_mesh_header LIMIT_COUNT 2 REGEX "^[0-9]")
 string(REGEX MATCH "^[0-9]+" default_mesh_vertices "${default_mesh_header}")
-set(stats_keys "vertices|faces|sources|source|max_distance_limit|targets|paths|stopped_early|method|threads|seconds|read_seconds|repair_seconds|propagation_seconds|write_seconds|total_seconds|other_seconds|outside_propagation_ratio|peak_rss_mb|windows_created|windows_propagated|peak_live_windows|peak_window_bytes|max_distance|preprocessing_seconds|mean_edge_length|anisotropy")
+set(stats_keys "vertices|faces|sources|source|max_distance_limit|targets|paths|stopped_early|method|threads|seconds|read_seconds|repair_seconds|propagation_seconds|write_seconds|total_seconds|other_seconds|outside_propagation_ratio|peak_rss_mb|windows_created|windows_propagated|peak_live_windows|peak_window_bytes|max_distance|preprocessing_seconds|mean_edge_length|anisotropy|field_pieces|field_bytes|query_points")
 
 # vtp_cli_test(<name> <expected exit code> <output file> <json file>
 #              [LINES <n>] [SOURCE_LINE <n>|none] [VALUES "<line>=<text>|..."] [NOTE <regex>] [ERROR <regex>]
