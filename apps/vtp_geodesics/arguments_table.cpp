@@ -156,8 +156,9 @@ const vtp_support::Option_table<Arguments>& option_table()
       "exact with vtp / pvtp, upper bounds with avtp / pavtp and the vsp\n"
       "family; ties: the lowest index), which then are the sources of\n"
       "--output, --labels (the geodesic Voronoi cells), --picture and\n"
-      "--stats-json. Not with --source, --source-point, targets, paths\n"
-      "nor --max-distance",
+      "--stats-json (the cells' areas: with vtp / pvtp from their exact\n"
+      "borders, one more run that keeps its field). Not with --source,\n"
+      "--source-point, targets, paths nor --max-distance",
       [](Arguments& a, const std::string& n, const std::string& v) {
         a.farthest_points = parse_index(n, v);
         if(a.farthest_points == 0)

@@ -13,6 +13,7 @@
 #include "arguments.h"
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
+#include <CGAL/VTP_geodesics/geodesic_curves.h>
 #include <CGAL/VTP_geodesics/geodesic_voronoi_cells.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
@@ -108,7 +109,9 @@ void answer_queries(const Solver& solver, bool kept, const std::vector<Face_loca
   }
 }
 
-// Farthest-point sampling with `method` (any of the table), then the areas of the Voronoi cells.
+// Farthest-point sampling with `method` (any of the table), then the areas of the Voronoi cells (the exact methods:
+// from the exact borders of one more run from the samples that keeps its field; the others: estimated from the
+// vertex values).
 void run_sampling(const vtp_support::Method_info& method, Solver& solver, const vtp_support::Mesh& mesh,
                   const Run_request& request, double lambda, Run_result& r)
 {
@@ -131,10 +134,11 @@ void run_sampling(const vtp_support::Method_info& method, Solver& solver, const 
   for(std::size_t i = 0; i < r.mesh_vertices; ++i)
     r.labels[i] = fps.labels[i] == VTP::no_source ? -1 : static_cast<int>(fps.labels[i]);
   r.statistics = fps.statistics;
-  // the samples as sources (their labels: the sample numbers), for the curves of their field and the query
-  // points (one more run): an exact method keeps the field (the curves exact), the others record their paths
+  // the samples as sources (their labels: the sample numbers), for the cell areas, the curves of their field
+  // and the query points (one more run): an exact method keeps the field (the cells' areas from their exact
+  // borders, as the Python module's, and the curves exact), the others record their paths for the curves
   const bool keep = keeps_field(method);
-  const bool more = !fps.samples.empty() && (request.wants_curves() || request.keep_field);
+  const bool more = !fps.samples.empty() && (request.wants_curves() || request.keep_field || keep);
   if(more)
   {
     vtp_support::with_method(method, lambda, request.threads, [&](auto tag, const auto& method_np) {
@@ -145,6 +149,14 @@ void run_sampling(const vtp_support::Method_info& method, Solver& solver, const 
     });
     r.statistics.field_pieces = solver.statistics().field_pieces;
     r.statistics.field_bytes = solver.statistics().field_bytes;
+    if(keep)
+    {
+      const VTP::Voronoi_cell_areas exact = VTP::geodesic_voronoi_cell_areas(solver);
+      r.cell_areas = exact.areas;
+      r.cell_uncertainty = exact.uncertainty;
+      r.cell_areas.resize(fps.samples.size(), 0.);
+      r.cell_uncertainty.resize(fps.samples.size(), 0.);
+    }
   }
   if(more && request.wants_curves())
     r.curves = extract_curve_sets(solver, curve_request(solver, request, fps.samples.size() > 1),

@@ -3,6 +3,7 @@
 # distance, areas adding up to the area of the mesh), against the tool (same samples and radii, bit for bit),
 # and bad input.
 
+import json
 import math
 import subprocess
 
@@ -119,13 +120,18 @@ def test_components_and_more_samples_than_vertices():
 
 def test_equals_tool(tool, tmp_path):
     samples_file = tmp_path / "s.txt"
+    stats_file = tmp_path / "s.json"
     subprocess.run([tool, data_file("elephant.off"), "--farthest-points", "20", "--first", "7",
-                    "--samples-output", str(samples_file)], check=True, capture_output=True)
+                    "--samples-output", str(samples_file), "--stats-json", str(stats_file)],
+                   check=True, capture_output=True)
     lines = [l.split() for l in open(samples_file) if not l.startswith("#")]
     V, F = vtp_geodesics.read_mesh(data_file("elephant.off"))
     r = vtp_geodesics.Solver(V, F).farthest_point_sampling(20, first=7)
     assert r.samples.tolist() == [int(l[0]) for l in lines]
     assert r.radii.tolist() == [float(l[1]) for l in lines]
+    # the cells' areas, from their exact borders in both (vtp)
+    stats = json.load(open(stats_file))
+    assert stats["min_cell_area"] == r.cell_areas.min() and stats["max_cell_area"] == r.cell_areas.max()
 
 
 def test_bad_input():
