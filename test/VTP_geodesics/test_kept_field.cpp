@@ -360,6 +360,7 @@ TEST(KeptField, BadInput)
   EXPECT_THROW(s.compute(discard, Vertex_index(0), VG::parameters::keep_field(true).lambda(8.)), VG::Invalid_input_error);
   EXPECT_THROW(s.compute(discard, Vertex_index(0), VG::parameters::keep_field(true).virtual_sources(true)),
                VG::Invalid_input_error);
+  EXPECT_THROW(s.farthest_point_sampling(2, VG::parameters::keep_field(true)), VG::Invalid_input_error);
   EXPECT_TRUE(s.has_kept_field());  // (a refused run changes nothing: the field of the run before answers)
   EXPECT_NO_THROW(s.field_distance(inside));
 }

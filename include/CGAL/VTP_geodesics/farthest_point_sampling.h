@@ -107,7 +107,7 @@ void write_radii(const Samples& r, OutputIterator out)
 ///   `number_of_threads`, `vertex_point_map` and `geom_traits`, as in `compute_geodesic_distances()`.
 /// \returns the output iterator after the last sample.
 /// \throws Invalid_input_error if `tm` is not a valid triangle mesh, `first_sample` is not one of its vertices,
-/// or a parameter is invalid (`maximum_distance`, `targets`, `record_paths` and `initial_distances` are not
+/// or a parameter is invalid (`maximum_distance`, `targets`, `record_paths`, `keep_field` and `initial_distances` are not
 /// taken).
 template <class ConcurrencyTag = CGAL::Sequential_tag,
           class TriangleMesh,

@@ -234,11 +234,11 @@ farthest_point_samples_of(const MeshIndex& mesh, std::size_t k, const NamedParam
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
   typedef typename MeshIndex::vertex_descriptor vertex_descriptor;
-  if(settings.limit < std::numeric_limits<double>::infinity() || settings.record_paths
+  if(settings.limit < std::numeric_limits<double>::infinity() || settings.record_paths || settings.keep_field
      || !is_default_parameter<NamedParameters, internal_np::targets_t>::value
      || !is_default_parameter<NamedParameters, internal_np::initial_distances_t>::value)
-    throw Invalid_input_error("farthest_point_sampling() takes no maximum_distance, targets, record_paths nor "
-                              "initial_distances");
+    throw Invalid_input_error("farthest_point_sampling() takes no maximum_distance, targets, record_paths, "
+                              "keep_field nor initial_distances");
   const Index first = first_sample_index(mesh, get_parameter(np, internal_np::first_sample));
   const double radius = choose_parameter(get_parameter(np, internal_np::sampling_radius), 0.);
   if(!(radius >= 0.))

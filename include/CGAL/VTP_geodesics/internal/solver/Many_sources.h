@@ -121,6 +121,7 @@ void compute_each_row(const MeshIndex& mesh, const SourceRange& sources, RowSink
   Propagation_settings settings = settings_from_parameters(np, mesh, threads);
   settings.want_labels = false;
   settings.record_paths = false;
+  settings.keep_field = false;  // (a row keeps no field)
   settings.stop_at_targets = false;
   compute_rows(mesh.arrays, mesh.position, items, seeds, sink, settings, parallel, threads, workspaces, statistics);
 }

@@ -86,6 +86,7 @@ void compute_patch_rows(const MeshIndex& mesh, VertexPointMap vpm, const CentreR
     throw Invalid_input_error("polar patches need the exact method (VTP): the log map is refused by AVTP and VSP");
   settings.want_labels = false;
   settings.record_paths = false;
+  settings.keep_field = false;
   settings.stop_at_targets = false;
   settings.limit = radius / mesh.length_scale;  // as maximum_distance(radius)
   settings.log_map = true;
