@@ -15,6 +15,7 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/internal/field/Curve_field.h>
+#include <CGAL/VTP_geodesics/internal/curves/Curve_envelope.h>
 #include <CGAL/VTP_geodesics/internal/curves/Curve_polylines.h>
 #include <CGAL/VTP_geodesics/internal/curves/Curve_roots.h>
 
@@ -345,6 +346,101 @@ public:
     }
   }
 
+  // The changes of the label of the least candidate along the lower half-edge c (abscissae from source(c), in
+  // order), from the candidates of its two faces (Label_envelope: exact), where its vertices have labels la and
+  // lb: a change is added at an end where the least has another label (a tie at the vertex). False if the
+  // sweep gave up (rounding: `out` holds what it found, with the ends' changes).
+  bool border_changes(Index c, Index la, Index lb, std::vector<Label_change>& out)
+  {
+    const Index o = m_mesh.opposite[c];
+    double line[2][4];
+    edge_candidates(c, line);
+    const double length = m_mesh.geometry[c].length;
+    const double scale = (std::max)(m_field.distance(m_mesh.source[c]), m_field.distance(m_mesh.source[Mesh_arrays::next(c)]))
+                         + length;
+    m_envelope.reset(0., 1., length * length, scale);
+    m_envelope.add(m_cf, line[0][0], line[0][1], line[0][2], line[0][3]);
+    if(o != NO_INDEX)
+      m_envelope.add(m_cg, line[1][0], line[1][1], line[1][2], line[1][3]);
+    Index first, last;
+    const bool done = m_envelope.changes(la, out, first, last);
+    if(first == NO_INDEX)  // (no candidate: cannot happen with reached corners)
+    {
+      if(la != lb)
+        out.push_back(Label_change{ 0.5, la, lb });
+      return false;
+    }
+    if(first != la)
+      out.insert(out.begin(), Label_change{ 0., la, first });
+    if(last != lb)
+      out.push_back(Label_change{ 1., last, lb });
+    return done;
+  }
+
+  // The place where the segment (px, py) + u (dx, dy), u in [0, 1], of a face (candidates c) crosses the border
+  // of cells y and x, from y to x, the nearest to abscissa `near` (Label_envelope: exact); `scale`: the size of the
+  // distances there. False if it does not.
+  bool border_on_segment(const std::vector<Curve_candidate>& c, double px, double py, double dx, double dy, Index x,
+                         Index y, double near, double scale, double& u)
+  {
+    m_envelope.reset(0., 1., dx * dx + dy * dy, scale);
+    m_envelope.add(c, px, py, dx, dy);
+    Index first, last;
+    m_envelope.changes(NO_INDEX, m_changes, first, last);
+    bool found = false;
+    for(const Label_change& ch : m_changes)
+      if(ch.from == y && ch.to == x && (!found || std::abs(ch.u - near) < std::abs(u - near)))
+      {
+        u = ch.u;
+        found = true;
+      }
+    return found;
+  }
+
+  // The junction of the cells of labels l[0..2] in face f (candidates c): where their least candidates are
+  // equal, from (x, y): each step takes the circles that hold at the point for the three labels and solves
+  // three_circle_point() (exact once these circles hold at the point found). True if found inside the face (to
+  // 1e-9 of its barycentric coordinates), the three equal and no label less there (to 1e-10 of the distances).
+  bool exact_junction(Index f, const std::vector<Curve_candidate>& c, const Index l[3], double& x, double& y)
+  {
+    double px = x, py = y, last[3][3] = { { 0., 0., 0. }, { 0., 0., 0. }, { 0., 0., 0. } };
+    bool stable = false;
+    for(int step = 0; step < 24 && !stable; ++step)
+    {
+      double cc[3][2], b[3];
+      stable = step > 0;
+      for(int i = 0; i < 3; ++i)
+      {
+        int which;
+        Curve_field::value(c, px, py, l[i], which);
+        if(which < 0)
+          return false;
+        c[static_cast<std::size_t>(which)].active_circle(px, py, cc[i][0], cc[i][1], b[i]);
+        stable = stable && cc[i][0] == last[i][0] && cc[i][1] == last[i][1] && b[i] == last[i][2];
+        last[i][0] = cc[i][0];
+        last[i][1] = cc[i][1];
+        last[i][2] = b[i];
+      }
+      if(!stable && !three_circle_point(cc, b, px, py, px, py))
+        return false;
+    }
+    const Face_frame fr(m_mesh, f);
+    const Curve_point p = point_in_face(f, fr, px, py);
+    if(!(p.b[0] >= -1e-9 && p.b[1] >= -1e-9 && p.b[2] >= -1e-9))
+      return false;
+    double v[3];
+    for(int i = 0; i < 3; ++i)
+      v[i] = Curve_field::value(c, px, py, l[i]);
+    const double high = (std::max)({ v[0], v[1], v[2] }), low = (std::min)({ v[0], v[1], v[2] });
+    const double size = std::abs(fr.x[1]) + std::abs(fr.x[2]) + std::abs(fr.y[2]);
+    const double tolerance = 1e-10 * (high + size);
+    if(!(high - low <= tolerance) || !(Curve_field::value(c, px, py) >= high - tolerance))
+      return false;
+    x = px;
+    y = py;
+    return true;
+  }
+
   // the point (x, y) of the frame of f as a curve point
   static Curve_point point_in_face(Index f, const Face_frame& fr, double x, double y)
   {
@@ -394,6 +490,8 @@ private:
   double m_tolerance_g = 0.;
   std::vector<Curve_candidate> m_cf, m_cg;
   std::vector<std::pair<double, double> > m_intervals;
+  Label_envelope m_envelope;
+  std::vector<Label_change> m_changes;
 };
 
 } // namespace internal
