@@ -47,10 +47,12 @@ namespace internal {
 //    the search are those the cells poke into from a face with several corner labels.
 //  - in a face, the changes on its edges (counterclockwise, each from a label to the next) are joined inside
 //    it: two -> one piece; three (three labels) -> a junction where the three labels' least are equal
-//    (Curve_pieces::exact_junction(), from the circles that hold there: exact); more -> every planar way to
+//    (Curve_pieces::exact_junction(), from the circles that hold there: exact); more -> the planar ways to
 //    join them (an arc whose two neighbours have one label closed by a piece, or by a junction if they differ,
-//    again on what is left), each scored by its junctions (found inside the face or not) and by the label it
-//    gives at probe points against the field's, the best kept. Then each piece runs between its ends along the
+//    again on what is left; searched depth first, a way dropped where a junction is not found in the face;
+//    every way if none is left), each scored by its junctions (found inside the face or not), by the arcs of one
+//    label it puts in two regions where the straight segment between them has that label all along (exact),
+//    and by the label it gives at probe points against the field's; the best kept. Then each piece runs between its ends along the
 //    points where its two labels change along lines across its chord (exact).
 //  - the cells' areas in a face: per label, the area enclosed by its arcs of the face's border and the pieces
 //    that have it on one side (Green's formula: they add up to the face's area to rounding).
@@ -134,6 +136,7 @@ private:
     std::vector<std::vector<Curve_point> > points;  // per link, from a to b
     int bad_junctions = 0;
     std::size_t undecided = 0;
+    std::vector<int> region;  // per arc of the face's border, its region (the least arc in it)
   };
 
   bool labels(Index f, Index l[3]) const
@@ -226,13 +229,14 @@ private:
     for(std::size_t i = 0; i < n; ++i)
       CGAL_assertion(m_crossings[i].to == m_crossings[(i + 1) % n].from);
     field.candidates(f, m_c);
-    // the ways to join the changes inside the face
+    // the ways to join the changes inside the face: those whose junctions are all found in it, else every way
     std::vector<std::vector<int> > ways;
     if(n <= 3)
       ways.emplace_back();
     else
     {
       ++many_ends;
+      find_witnesses(fr);
       std::map<std::vector<int>, std::vector<int> > found;
       std::vector<End> ends(n);
       for(std::size_t i = 0; i < n; ++i)
@@ -240,8 +244,14 @@ private:
       std::vector<int> parent(n), choice;
       std::iota(parent.begin(), parent.end(), 0);
       std::vector<std::array<int, 3> > triples;
+      std::vector<Node> nodes(m_nodes);
       std::size_t explored = 0;
-      enumerate(ends, parent, triples, choice, found, explored);
+      search(f, fr, ends, parent, triples, nodes, choice, found, explored);
+      if(found.empty())
+      {
+        explored = 0;
+        enumerate(ends, parent, triples, choice, found, explored);
+      }
       for(auto& w : found)
         ways.push_back(std::move(w.second));
     }
@@ -253,7 +263,11 @@ private:
       build(f, fr, ways[w], m_plans[w]);
       if(ways.size() == 1)
         break;
-      const double score = 1000. * m_plans[w].bad_junctions + 100. * disagreements(f, fr, m_plans[w])
+      std::size_t split = 0;  // (arcs that are one region, in two)
+      for(const auto& pair : m_witnesses)
+        split += m_plans[w].region[pair.first] != m_plans[w].region[pair.second] ? 1 : 0;
+      const double score = 1000. * (static_cast<double>(m_plans[w].bad_junctions) + static_cast<double>(split))
+                           + 100. * static_cast<double>(disagreements(f, fr, m_plans[w]))
                            + static_cast<double>(m_plans[w].undecided);
       if(score < best_score)
       {
@@ -376,26 +390,7 @@ private:
       return;
     if(ends.size() <= 3)
     {
-      std::vector<int> p(parent);
-      std::vector<std::array<int, 3> > t(triples);
-      if(ends.size() == 3)
-        t.push_back({ { ends[0].region, ends[1].region, ends[2].region } });
-      std::vector<int> key;
-      for(std::size_t i = 0; i < p.size(); ++i)
-        key.push_back(find(p, static_cast<int>(i)));
-      std::vector<std::array<int, 3> > sorted;
-      for(std::array<int, 3> a : t)
-      {
-        for(int& r : a)
-          r = find(p, r);
-        std::sort(a.begin(), a.end());
-        sorted.push_back(a);
-      }
-      std::sort(sorted.begin(), sorted.end());
-      key.push_back(-1);
-      for(const auto& a : sorted)
-        key.insert(key.end(), a.begin(), a.end());
-      found.emplace(std::move(key), choice);
+      found.emplace(topology(ends, parent, triples), choice);
       return;
     }
     for(std::size_t p = 0; p < ends.size(); ++p)
@@ -409,6 +404,125 @@ private:
       choice.push_back(static_cast<int>(p));
       enumerate(e, pa, t, choice, found, explored);
       choice.pop_back();
+    }
+  }
+
+  // As enumerate(), each junction solved where it is made (as build() does), the ways where one is not found in
+  // the face dropped there; the arcs closed first are those whose two sides are one region for sure
+  // (find_witnesses()), then those of a label met once. At most 8 ways.
+  void search(Index f, const Face_frame& fr, const std::vector<End>& ends, const std::vector<int>& parent,
+              const std::vector<std::array<int, 3> >& triples, std::vector<Node>& nodes, std::vector<int>& choice,
+              std::map<std::vector<int>, std::vector<int> >& found, std::size_t& explored)
+  {
+    if(found.size() >= 8 || ++explored > 400)
+      return;
+    if(ends.size() <= 3)
+    {
+      if(ends.size() == 3)
+      {
+        const Index l[3] = { ends[0].from, ends[1].from, ends[2].from };
+        double gx = 0., gy = 0.;
+        for(const End& e : ends)
+        {
+          gx += nodes[e.node].x / 3.;
+          gy += nodes[e.node].y / 3.;
+        }
+        Node node;
+        if(!junction_node(f, fr, l, gx, gy, nodes[ends[0].node], nodes[ends[1].node], nodes[ends[2].node], nodes,
+                          node))
+          return;
+      }
+      found.emplace(topology(ends, parent, triples), choice);
+      return;
+    }
+    const std::size_t n = ends.size();
+    int rank[64];
+    for(std::size_t p = 0; p < n && p < 64; ++p)
+    {
+      const std::size_t before = (p + n - 1) % n, q = (p + 1) % n;
+      int count = 0;
+      for(const End& e : ends)
+        count += e.to == ends[p].to ? 1 : 0;
+      bool witnessed = false;
+      for(const auto& w : m_witnesses)
+      {
+        const int a = find_const(parent, static_cast<int>(w.first)), b = find_const(parent, static_cast<int>(w.second));
+        const int r0 = find_const(parent, ends[before].region), r1 = find_const(parent, ends[q].region);
+        witnessed = witnessed || (a == r0 && b == r1) || (a == r1 && b == r0);
+      }
+      rank[p] = ends[p].from == ends[q].to ? (witnessed ? 0 : 2) : (count == 1 ? 1 : 3);
+    }
+    for(int r = 0; r < 4; ++r)
+      for(std::size_t p = 0; p < n && p < 64; ++p)
+      {
+        if(rank[p] != r)
+          continue;
+        std::vector<End> e(ends);
+        std::vector<int> pa(parent);
+        std::vector<std::array<int, 3> > t(triples);
+        const std::size_t size = nodes.size();
+        bool failed = false;
+        const double cx = (fr.x[0] + fr.x[1] + fr.x[2]) / 3., cy = (fr.y[0] + fr.y[1] + fr.y[2]) / 3.;
+        reduce(e, p, pa, t, [](std::size_t, std::size_t, Index, Index) {},
+               [&](std::size_t a, std::size_t b) {
+                 const Node na = nodes[e[a].node], nb = nodes[e[b].node];
+                 const Index l[3] = { e[a].from, e[a].to, e[b].to };
+                 Node node;
+                 failed = !junction_node(f, fr, l, (na.x + nb.x + cx) / 3., (na.y + nb.y + cy) / 3., na, nb, nb,
+                                         nodes, node);
+                 nodes.push_back(node);
+                 return nodes.size() - 1;
+               });
+        if(!failed)
+        {
+          choice.push_back(static_cast<int>(p));
+          search(f, fr, e, pa, t, nodes, choice, found, explored);
+          choice.pop_back();
+        }
+        nodes.resize(size);
+      }
+  }
+
+  static int find_const(const std::vector<int>& parent, int i)
+  {
+    while(parent[static_cast<std::size_t>(i)] != i)
+      i = parent[static_cast<std::size_t>(i)];
+    return i;
+  }
+
+  // The topology of a way to join the ends, as a key: each arc's region (named by its least arc), then the
+  // regions around each junction.
+  static std::vector<int> topology(const std::vector<End>& ends, const std::vector<int>& parent,
+                                   const std::vector<std::array<int, 3> >& triples)
+  {
+    {
+      std::vector<int> p(parent);
+      std::vector<std::array<int, 3> > t(triples);
+      if(ends.size() == 3)
+        t.push_back({ { ends[0].region, ends[1].region, ends[2].region } });
+      // (each region named by the least arc in it)
+      std::vector<int> least(p.size(), static_cast<int>(p.size()));
+      for(std::size_t i = 0; i < p.size(); ++i)
+      {
+        int& l = least[static_cast<std::size_t>(find(p, static_cast<int>(i)))];
+        l = (std::min)(l, static_cast<int>(i));
+      }
+      std::vector<int> key;
+      for(std::size_t i = 0; i < p.size(); ++i)
+        key.push_back(least[static_cast<std::size_t>(find(p, static_cast<int>(i)))]);
+      std::vector<std::array<int, 3> > sorted;
+      for(std::array<int, 3> a : t)
+      {
+        for(int& r : a)
+          r = least[static_cast<std::size_t>(find(p, r))];
+        std::sort(a.begin(), a.end());
+        sorted.push_back(a);
+      }
+      std::sort(sorted.begin(), sorted.end());
+      key.push_back(-1);
+      for(const auto& a : sorted)
+        key.insert(key.end(), a.begin(), a.end());
+      return key;
     }
   }
 
@@ -431,18 +545,10 @@ private:
       plan.links.push_back(Link{ a, b, left, right });
     };
     // a junction of labels (x, y, z), from a guess
-    auto solve = [&](const Index l[3], double gx, double gy) {
+    auto solve = [&](const Index l[3], double gx, double gy, std::size_t a, std::size_t b, std::size_t c) {
       Node node;
-      node.x = gx;
-      node.y = gy;
-      node.key = -1;
-      if(!m_pieces.exact_junction(f, m_c, l, node.x, node.y))
-      {
+      if(!junction_node(f, fr, l, gx, gy, plan.nodes[a], plan.nodes[b], plan.nodes[c], plan.nodes, node))
         ++plan.bad_junctions;
-        node.x = gx;
-        node.y = gy;
-      }
-      node.point = Curve_pieces::point_in_face(f, fr, node.x, node.y);
       plan.nodes.push_back(node);
       return plan.nodes.size() - 1;
     };
@@ -453,7 +559,7 @@ private:
       reduce(ends, p, parent, triples, link, [&](std::size_t a, std::size_t b) {
         const Node &na = plan.nodes[ends[a].node], &nb = plan.nodes[ends[b].node];
         const Index l[3] = { ends[a].from, ends[a].to, ends[b].to };
-        return solve(l, (na.x + nb.x + cx) / 3., (na.y + nb.y + cy) / 3.);
+        return solve(l, (na.x + nb.x + cx) / 3., (na.y + nb.y + cy) / 3., ends[a].node, ends[b].node, ends[b].node);
       });
     }
     if(ends.size() == 3)
@@ -465,7 +571,7 @@ private:
         gx += plan.nodes[e.node].x / 3.;
         gy += plan.nodes[e.node].y / 3.;
       }
-      const std::size_t j = solve(l, gx, gy);
+      const std::size_t j = solve(l, gx, gy, ends[0].node, ends[1].node, ends[2].node);
       for(const End& e : ends)
         link(e.node, j, e.from, e.to);
     }
@@ -474,10 +580,109 @@ private:
     plan.points.resize(plan.links.size());
     for(std::size_t i = 0; i < plan.links.size(); ++i)
       link_points(f, fr, plan, plan.links[i], plan.points[i]);
+    plan.region.assign(n, static_cast<int>(n));
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      int& r = plan.region[static_cast<std::size_t>(find(parent, static_cast<int>(i)))];
+      r = (std::min)(r, static_cast<int>(i));
+    }
+    for(std::size_t i = 0; i < n; ++i)
+      plan.region[i] = plan.region[static_cast<std::size_t>(find(parent, static_cast<int>(i)))];
+  }
+
+  // The pairs of arcs of the face's border with one label that are one region for sure: the segment between
+  // their middles (moved by 1% towards the middle of the face) has that label all along (Label_envelope).
+  void find_witnesses(const Face_frame& fr)
+  {
+    const std::size_t n = m_crossings.size();
+    const double cx = (fr.x[0] + fr.x[1] + fr.x[2]) / 3., cy = (fr.y[0] + fr.y[1] + fr.y[2]) / 3.;
+    const double size = std::abs(fr.x[1]) + std::abs(fr.x[2]) + std::abs(fr.y[2]);
+    m_middles.resize(n);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      m_arc.clear();
+      arc(fr, i, m_arc);
+      double length = 0.;
+      for(std::size_t j = 0; j + 1 < m_arc.size(); ++j)
+        length += std::hypot(m_arc[j + 1].first - m_arc[j].first, m_arc[j + 1].second - m_arc[j].second);
+      double x = m_arc.front().first, y = m_arc.front().second, left = 0.5 * length;
+      for(std::size_t j = 0; j + 1 < m_arc.size(); ++j)
+      {
+        const double l = std::hypot(m_arc[j + 1].first - m_arc[j].first, m_arc[j + 1].second - m_arc[j].second);
+        if(l >= left && l > 0.)
+        {
+          x = m_arc[j].first + left / l * (m_arc[j + 1].first - m_arc[j].first);
+          y = m_arc[j].second + left / l * (m_arc[j + 1].second - m_arc[j].second);
+          break;
+        }
+        left -= l;
+      }
+      m_middles[i] = std::make_pair(0.99 * x + 0.01 * cx, 0.99 * y + 0.01 * cy);
+    }
+    m_witnesses.clear();
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t j = i + 1; j < n; ++j)
+      {
+        const Index label = m_crossings[i].to;
+        if(m_crossings[j].to != label)
+          continue;
+        const double x = m_middles[i].first, y = m_middles[i].second;
+        const double scale = Curve_field::value(m_c, x, y) + size;
+        if(m_pieces.has_one_label(m_c, x, y, m_middles[j].first - x, m_middles[j].second - y, label, scale))
+          m_witnesses.emplace_back(i, j);
+      }
+  }
+
+  // The junction of labels l (x, y, z) in face f from the guess (gx, gy), else from points between the nodes of
+  // its ends a, b, c (a junction near an edge, between two of its crossings, is found from there); false if
+  // not found in the face (then at the guess).
+  // A point found where another junction of the way is (`made`: the nodes so far, the junctions after the
+  // crossings) does not count: two junctions of one way are apart (the point is that of the other, from the
+  // same circles; this one is where other circles of the labels hold).
+  bool junction_node(Index f, const Face_frame& fr, const Index l[3], double gx, double gy, const Node& a,
+                     const Node& b, const Node& c, const std::vector<Node>& made, Node& node)
+  {
+    const double cx = (fr.x[0] + fr.x[1] + fr.x[2]) / 3., cy = (fr.y[0] + fr.y[1] + fr.y[2]) / 3.;
+    const double size = std::abs(fr.x[1]) + std::abs(fr.x[2]) + std::abs(fr.y[2]);
+    auto solved = [&]() {
+      if(!m_pieces.exact_junction(f, m_c, l, node.x, node.y))
+        return false;
+      for(std::size_t i = m_crossings.size(); i < made.size(); ++i)
+        if(std::hypot(made[i].x - node.x, made[i].y - node.y) <= 1e-9 * size)
+          return false;
+      return true;
+    };
+    node.x = gx;
+    node.y = gy;
+    node.key = -1;
+    bool found = solved();
+    const Node* around[3] = { &a, &b, &c };
+    for(int i = 0; i < 3 && !found; ++i)
+      for(int j = i + 1; j < 3 && !found; ++j)
+        for(double pull : { 0.01, 0.1 })
+        {
+          const Node &ni = *around[i], &nj = *around[j];
+          if(found || (ni.x == nj.x && ni.y == nj.y))
+            continue;
+          node.x = (1. - pull) * 0.5 * (ni.x + nj.x) + pull * cx;
+          node.y = (1. - pull) * 0.5 * (ni.y + nj.y) + pull * cy;
+          found = solved();
+        }
+    if(!found)
+    {
+      node.x = gx;
+      node.y = gy;
+    }
+    node.point = Curve_pieces::point_in_face(f, fr, node.x, node.y);
+    return found;
   }
 
   // The points of a link: its ends, and between them, on lines across its chord, where the label changes from
-  // its right one to its left one (the nearest to the chord).
+  // its right one to its left one (the nearest to the chord); then, between two points, the point found so on
+  // the line across their chord at its middle is added where it is farther from that chord than the chord
+  // tolerance (a kink: the border crosses the cut locus of one of its labels), and the two halves done again
+  // (at most 6 times deep). (From the field's values only: two runs whose windows differ to rounding give the
+  // same points.)
   void link_points(Index f, const Face_frame& fr, Plan& plan, const Link& k, std::vector<Curve_point>& points)
   {
     const Node &a = plan.nodes[k.a], &b = plan.nodes[k.b];
@@ -486,45 +691,102 @@ private:
     const double dx = b.x - a.x, dy = b.y - a.y, len = std::sqrt(dx * dx + dy * dy);
     const double r = (std::min)(Curve_field::value(m_c, a.x, a.y), Curve_field::value(m_c, b.x, b.y));
     const int chords = len > 0. ? m_pieces.number_of_chords(len, r) : 1;
-    const double nx = len > 0. ? -dy / len : 0., ny = len > 0. ? dx / len : 0.;  // (towards the left label)
-    const double size = std::abs(fr.x[1]) + std::abs(fr.x[2]) + std::abs(fr.y[2]);
-    for(int i = 1; i < chords; ++i)
+    double x0 = a.x, y0 = a.y;
+    bool found0 = true;
+    for(int i = 1; i <= chords; ++i)
     {
-      const double s = static_cast<double>(i) / chords;
-      const double qx = a.x + s * dx, qy = a.y + s * dy;
-      // the line q + u (nx, ny) inside the face: left of each edge
-      double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
-      for(int e = 0; e < 3; ++e)
+      double x = b.x, y = b.y;
+      bool found = true;
+      if(i < chords)
       {
-        const int j = (e + 1) % 3;
-        const double ex = fr.x[j] - fr.x[e], ey = fr.y[j] - fr.y[e];
-        const double alpha = ex * (qy - fr.y[e]) - ey * (qx - fr.x[e]), beta = ex * ny - ey * nx;
-        if(beta > 0.)
-          lo = (std::max)(lo, -alpha / beta);
-        else if(beta < 0.)
-          hi = (std::min)(hi, -alpha / beta);
+        const double s = static_cast<double>(i) / chords;
+        found = border_across(f, fr, k.left, k.right, a.x, a.y, b.x, b.y, a.x + s * dx, a.y + s * dy, r, x, y);
+        plan.undecided += found ? 0 : 1;
       }
-      double px = qx, py = qy, u = 0.;
-      if(lo < hi && std::isfinite(lo) && std::isfinite(hi)
-         && m_pieces.border_on_segment(m_c, qx + lo * nx, qy + lo * ny, (hi - lo) * nx, (hi - lo) * ny, k.left,
-                                       k.right, -lo / (hi - lo), r + size, u))
-      {
-        px = qx + (lo + u * (hi - lo)) * nx;
-        py = qy + (lo + u * (hi - lo)) * ny;
-      }
-      else
-        ++plan.undecided;
-      points.push_back(Curve_pieces::point_in_face(f, fr, px, py));
+      if(found0 && found)
+        refine(f, fr, k.left, k.right, x0, y0, x, y, r, 0, points);
+      if(i < chords)
+        points.push_back(Curve_pieces::point_in_face(f, fr, x, y));
+      x0 = x;
+      y0 = y;
+      found0 = found;
     }
     points.push_back(b.point);
   }
 
-  // The probe points (the middle of the crossings, and the middles of two crossings) where the label the plan
-  // gives (the region whose boundary winds around the point) is not the field's, where the field's is clear.
+  // The point of the border of `left` | `right` on the line across the chord (ax, ay) - (bx, by) through its
+  // point (qx, qy), inside the face (Curve_pieces::border_on_segment(): the change from the right label to the
+  // left one nearest to the chord); else (qx, qy) if it is on the border (the border along the chord: along an
+  // edge, where the line starts); false if neither (then (qx, qy)). `r`: the distances there.
+  bool border_across(Index f, const Face_frame& fr, Index left, Index right, double ax, double ay, double bx,
+                     double by, double qx, double qy, double r, double& x, double& y)
+  {
+    CGAL_USE(f);
+    const double dx = bx - ax, dy = by - ay, len = std::sqrt(dx * dx + dy * dy);
+    const double size = std::abs(fr.x[1]) + std::abs(fr.x[2]) + std::abs(fr.y[2]);
+    x = qx;
+    y = qy;
+    if(!(len > 0.))
+      return false;
+    const double nx = -dy / len, ny = dx / len;  // (towards the left label)
+    // the line q + u (nx, ny) inside the face: left of each edge
+    double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+    for(int e = 0; e < 3; ++e)
+    {
+      const int j = (e + 1) % 3;
+      const double ex = fr.x[j] - fr.x[e], ey = fr.y[j] - fr.y[e];
+      const double alpha = ex * (qy - fr.y[e]) - ey * (qx - fr.x[e]), beta = ex * ny - ey * nx;
+      if(beta > 0.)
+        lo = (std::max)(lo, -alpha / beta);
+      else if(beta < 0.)
+        hi = (std::min)(hi, -alpha / beta);
+    }
+    double u = 0.;
+    if(lo < hi && std::isfinite(lo) && std::isfinite(hi)
+       && m_pieces.border_on_segment(m_c, qx + lo * nx, qy + lo * ny, (hi - lo) * nx, (hi - lo) * ny, left, right,
+                                     -lo / (hi - lo), r + size, u))
+    {
+      x = qx + (lo + u * (hi - lo)) * nx;
+      y = qy + (lo + u * (hi - lo)) * ny;
+      return true;
+    }
+    return on_border(left, right, qx, qy, size);
+  }
+
+  // The points strictly between two points of the border (x0, y0) and (x1, y1), appended: the border on the
+  // line across their chord at its middle, if farther from it than the chord tolerance, and again on either
+  // side (see link_points()).
+  void refine(Index f, const Face_frame& fr, Index left, Index right, double x0, double y0, double x1, double y1,
+              double r, int depth, std::vector<Curve_point>& points)
+  {
+    if(depth >= 6)
+      return;
+    const double mx = 0.5 * (x0 + x1), my = 0.5 * (y0 + y1);
+    double x, y;
+    if(!border_across(f, fr, left, right, x0, y0, x1, y1, mx, my, r, x, y) || !(std::hypot(x - mx, y - my) > m_tolerance))
+      return;
+    refine(f, fr, left, right, x0, y0, x, y, r, depth + 1, points);
+    points.push_back(Curve_pieces::point_in_face(f, fr, x, y));
+    refine(f, fr, left, right, x, y, x1, y1, r, depth + 1, points);
+  }
+
+  // whether (x, y) is on the border of `left` | `right`: the two labels' least equal and least of all, to 1e-10 of
+  // the distances (`size`: of the face)
+  bool on_border(Index left, Index right, double x, double y, double size) const
+  {
+    const double vl = Curve_field::value(m_c, x, y, left), vr = Curve_field::value(m_c, x, y, right);
+    const double tolerance = 1e-10 * ((std::max)(vl, vr) + size);
+    return std::abs(vl - vr) <= tolerance && Curve_field::value(m_c, x, y) >= (std::max)(vl, vr) - tolerance;
+  }
+
+  // The probe points (the middle of the crossings, and the middles of two crossings on different edges, each
+  // moved by 1% towards the middle of the face) where the label the plan gives (the region whose boundary winds
+  // around the point) is not the field's, where the field's is clear.
   std::size_t disagreements(Index f, const Face_frame& fr, const Plan& plan)
   {
     CGAL_USE(f);
     const std::size_t n = m_crossings.size();
+    const double cx = (fr.x[0] + fr.x[1] + fr.x[2]) / 3., cy = (fr.y[0] + fr.y[1] + fr.y[2]) / 3.;
     std::vector<std::pair<double, double> > probes;
     double mx = 0., my = 0.;
     for(std::size_t i = 0; i < n; ++i)
@@ -532,9 +794,11 @@ private:
       mx += m_nodes[i].x / static_cast<double>(n);
       my += m_nodes[i].y / static_cast<double>(n);
       for(std::size_t j = i + 1; j < n; ++j)
-        probes.emplace_back(0.5 * (m_nodes[i].x + m_nodes[j].x), 0.5 * (m_nodes[i].y + m_nodes[j].y));
+        if(m_crossings[i].edge != m_crossings[j].edge)
+          probes.emplace_back(0.99 * 0.5 * (m_nodes[i].x + m_nodes[j].x) + 0.01 * cx,
+                              0.99 * 0.5 * (m_nodes[i].y + m_nodes[j].y) + 0.01 * cy);
     }
-    probes.emplace_back(mx, my);
+    probes.emplace_back(0.99 * mx + 0.01 * cx, 0.99 * my + 0.01 * cy);
     const double size = std::abs(fr.x[1]) + std::abs(fr.x[2]) + std::abs(fr.y[2]);
     std::size_t wrong = 0;
     for(const auto& q : probes)
@@ -620,6 +884,8 @@ private:
   std::vector<std::pair<Index, std::pair<double, double> > > m_twice;
   std::vector<std::pair<double, double> > m_arc;
   std::vector<std::pair<Index, double> > m_winding;
+  std::vector<std::pair<double, double> > m_middles;   // (find_witnesses(): per arc, its middle)
+  std::vector<std::pair<std::size_t, std::size_t> > m_witnesses;
 };
 
 } // namespace internal

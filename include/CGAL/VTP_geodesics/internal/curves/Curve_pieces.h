@@ -397,11 +397,23 @@ public:
     return found;
   }
 
+  // whether the least candidate of `c` has label `label` all along the segment (px, py) + u (dx, dy), u in
+  // [0, 1] (Label_envelope: exact); `scale`: the size of the distances there
+  bool has_one_label(const std::vector<Curve_candidate>& c, double px, double py, double dx, double dy, Index label,
+                     double scale)
+  {
+    m_envelope.reset(0., 1., dx * dx + dy * dy, scale);
+    m_envelope.add(c, px, py, dx, dy);
+    Index first, last;
+    m_envelope.changes(NO_INDEX, m_changes, first, last);
+    return m_changes.empty() && first == label;
+  }
+
   // The junction of the cells of labels l[0..2] in face f (candidates c): where their least candidates are
   // equal, from (x, y): each step takes the circles that hold at the point for the three labels and solves
   // three_circle_point() (exact once these circles hold at the point found); where these have no common point
   // near (the circles that hold at the junction are others), a Newton step on them (at most half the face's
-  // size). True if found inside the face (to 1e-9 of its barycentric coordinates), the three equal and no label
+  // size); each step is kept in the face. True if found inside the face (to 1e-9 of its barycentric coordinates), the three equal and no label
   // less there (to 1e-10 of the distances).
   bool exact_junction(Index f, const std::vector<Curve_candidate>& c, const Index l[3], double& x, double& y)
   {
@@ -449,6 +461,17 @@ public:
         }
         nx = px + sx;
         ny = py + sy;
+      }
+      // (kept in the face: the junction is in it, maybe within rounding of an edge, and beyond the edge the
+      // candidates are not those of the face)
+      Curve_point q = point_in_face(f, fr, nx, ny);
+      if(!(q.b[0] >= 0. && q.b[1] >= 0. && q.b[2] >= 0.))
+      {
+        double sum = 0.;
+        for(double& w : q.b)
+          sum += (w = (std::max)(w, 0.));
+        nx = (q.b[1] * fr.x[1] + q.b[2] * fr.x[2]) / sum;
+        ny = q.b[2] * fr.y[2] / sum;
       }
       px = nx;
       py = ny;
