@@ -377,122 +377,6 @@ public:
     return done;
   }
 
-  // The place where the segment (px, py) + u (dx, dy), u in [0, 1], of a face (candidates c) crosses the border
-  // of cells y and x, from y to x, the nearest to abscissa `near` (Label_envelope: exact); `scale`: the size of the
-  // distances there. False if it does not.
-  bool border_on_segment(const std::vector<Curve_candidate>& c, double px, double py, double dx, double dy, Index x,
-                         Index y, double near, double scale, double& u)
-  {
-    m_envelope.reset(0., 1., dx * dx + dy * dy, scale);
-    m_envelope.add(c, px, py, dx, dy);
-    Index first, last;
-    m_envelope.changes(NO_INDEX, m_changes, first, last);
-    bool found = false;
-    for(const Label_change& ch : m_changes)
-      if(ch.from == y && ch.to == x && (!found || std::abs(ch.u - near) < std::abs(u - near)))
-      {
-        u = ch.u;
-        found = true;
-      }
-    return found;
-  }
-
-  // whether the least candidate of `c` has label `label` all along the segment (px, py) + u (dx, dy), u in
-  // [0, 1] (Label_envelope: exact); `scale`: the size of the distances there
-  bool has_one_label(const std::vector<Curve_candidate>& c, double px, double py, double dx, double dy, Index label,
-                     double scale)
-  {
-    m_envelope.reset(0., 1., dx * dx + dy * dy, scale);
-    m_envelope.add(c, px, py, dx, dy);
-    Index first, last;
-    m_envelope.changes(NO_INDEX, m_changes, first, last);
-    return m_changes.empty() && first == label;
-  }
-
-  // The junction of the cells of labels l[0..2] in face f (candidates c): where their least candidates are
-  // equal, from (x, y): each step takes the circles that hold at the point for the three labels and solves
-  // three_circle_point() (exact once these circles hold at the point found); where these have no common point
-  // near (the circles that hold at the junction are others), a Newton step on them (at most half the face's
-  // size); each step is kept in the face. True if found inside the face (to 1e-9 of its barycentric coordinates), the three equal and no label
-  // less there (to 1e-10 of the distances).
-  bool exact_junction(Index f, const std::vector<Curve_candidate>& c, const Index l[3], double& x, double& y)
-  {
-    const Face_frame fr(m_mesh, f);
-    const double size = std::abs(fr.x[1]) + std::abs(fr.x[2]) + std::abs(fr.y[2]);
-    double px = x, py = y, last[3][3] = { { 0., 0., 0. }, { 0., 0., 0. }, { 0., 0., 0. } };
-    bool stable = false, solved = false;
-    for(int step = 0; step < 32; ++step)
-    {
-      double cc[3][2], b[3], v[3], gx[3], gy[3];
-      stable = step > 0;
-      for(int i = 0; i < 3; ++i)
-      {
-        int which;
-        Curve_field::value(c, px, py, l[i], which);
-        if(which < 0)
-          return false;
-        c[static_cast<std::size_t>(which)].active_circle(px, py, cc[i][0], cc[i][1], b[i]);
-        stable = stable && cc[i][0] == last[i][0] && cc[i][1] == last[i][1] && b[i] == last[i][2];
-        last[i][0] = cc[i][0];
-        last[i][1] = cc[i][1];
-        last[i][2] = b[i];
-        const double dx = px - cc[i][0], dy = py - cc[i][1], r = std::sqrt(dx * dx + dy * dy);
-        v[i] = b[i] + r;
-        gx[i] = r > 0. ? dx / r : 0.;
-        gy[i] = r > 0. ? dy / r : 0.;
-      }
-      if(stable && solved)
-        break;
-      double nx, ny;
-      solved = three_circle_point(cc, b, px, py, nx, ny) && std::hypot(nx - px, ny - py) <= size;
-      if(!solved)
-      {
-        // Newton on (v1 - v0, v2 - v0) = 0 with the gradients of these circles
-        const double a00 = gx[1] - gx[0], a01 = gy[1] - gy[0], a10 = gx[2] - gx[0], a11 = gy[2] - gy[0];
-        const double det = a00 * a11 - a01 * a10, r0 = v[0] - v[1], r1 = v[0] - v[2];
-        if(!(std::abs(det) > 0.) || !std::isfinite(det))
-          return false;
-        double sx = (a11 * r0 - a01 * r1) / det, sy = (-a10 * r0 + a00 * r1) / det;
-        const double length = std::hypot(sx, sy);
-        if(length > 0.5 * size)
-        {
-          sx *= 0.5 * size / length;
-          sy *= 0.5 * size / length;
-        }
-        nx = px + sx;
-        ny = py + sy;
-      }
-      // (kept in the face: the junction is in it, maybe within rounding of an edge, and beyond the edge the
-      // candidates are not those of the face)
-      Curve_point q = point_in_face(f, fr, nx, ny);
-      if(!(q.b[0] >= 0. && q.b[1] >= 0. && q.b[2] >= 0.))
-      {
-        double sum = 0.;
-        for(double& w : q.b)
-          sum += (w = (std::max)(w, 0.));
-        nx = (q.b[1] * fr.x[1] + q.b[2] * fr.x[2]) / sum;
-        ny = q.b[2] * fr.y[2] / sum;
-      }
-      px = nx;
-      py = ny;
-    }
-    if(!solved)
-      return false;
-    const Curve_point p = point_in_face(f, fr, px, py);
-    if(!(p.b[0] >= -1e-9 && p.b[1] >= -1e-9 && p.b[2] >= -1e-9))
-      return false;
-    double v[3];
-    for(int i = 0; i < 3; ++i)
-      v[i] = Curve_field::value(c, px, py, l[i]);
-    const double high = (std::max)({ v[0], v[1], v[2] }), low = (std::min)({ v[0], v[1], v[2] });
-    const double tolerance = 1e-10 * (high + size);
-    if(!(high - low <= tolerance) || !(Curve_field::value(c, px, py) >= high - tolerance))
-      return false;
-    x = px;
-    y = py;
-    return true;
-  }
-
   // the point (x, y) of the frame of f as a curve point
   static Curve_point point_in_face(Index f, const Face_frame& fr, double x, double y)
   {
@@ -543,7 +427,6 @@ private:
   std::vector<Curve_candidate> m_cf, m_cg;
   std::vector<std::pair<double, double> > m_intervals;
   Label_envelope m_envelope;
-  std::vector<Label_change> m_changes;
 };
 
 } // namespace internal
