@@ -409,20 +409,17 @@ std::size_t points_near(const std::vector<Curve>& curves, std::size_t i, std::si
   return n;
 }
 
-// The area of the part of the unit square nearer to sources[i] than to the others (a convex polygon: the square
-// clipped by the half-planes of the bisectors)
-double flat_cell_area(const std::vector<Point_3>& sources, std::size_t i)
+// The area of the part of the rectangle [x0, x1] x [y0, y1] nearer to `site` than to the points `others` (of
+// the plane: a convex polygon, the rectangle clipped by the half-planes of the bisectors)
+double clipped_cell_area(double x0, double y0, double x1, double y1, const std::array<double, 2>& a,
+                         const std::vector<std::array<double, 2> >& others)
 {
-  std::vector<std::array<double, 2> > poly = { { { 0., 0. } }, { { 1., 0. } }, { { 1., 1. } }, { { 0., 1. } } };
-  const Point_3& a = sources[i];
-  for(std::size_t j = 0; j < sources.size(); ++j)
+  std::vector<std::array<double, 2> > poly = { { { x0, y0 } }, { { x1, y0 } }, { { x1, y1 } }, { { x0, y1 } } };
+  for(const auto& b : others)
   {
-    if(j == i)
-      continue;
-    const Point_3& b = sources[j];
     // kept: 2 x . (b - a) <= |b|^2 - |a|^2
-    const double nx = 2. * (b.x() - a.x()), ny = 2. * (b.y() - a.y());
-    const double c = b.x() * b.x() + b.y() * b.y() - a.x() * a.x() - a.y() * a.y();
+    const double nx = 2. * (b[0] - a[0]), ny = 2. * (b[1] - a[1]);
+    const double c = b[0] * b[0] + b[1] * b[1] - a[0] * a[0] - a[1] * a[1];
     std::vector<std::array<double, 2> > out;
     for(std::size_t k = 0; k < poly.size(); ++k)
     {
@@ -443,6 +440,16 @@ double flat_cell_area(const std::vector<Point_3>& sources, std::size_t i)
   for(std::size_t k = 0; k < poly.size(); ++k)
     twice += poly[k][0] * poly[(k + 1) % poly.size()][1] - poly[(k + 1) % poly.size()][0] * poly[k][1];
   return 0.5 * twice;
+}
+
+// The area of the part of the unit square nearer to sources[i] than to the others (z = 0)
+double flat_cell_area(const std::vector<Point_3>& sources, std::size_t i)
+{
+  std::vector<std::array<double, 2> > others;
+  for(std::size_t j = 0; j < sources.size(); ++j)
+    if(j != i)
+      others.push_back({ { sources[j].x(), sources[j].y() } });
+  return clipped_cell_area(0., 0., 1., 1., { { sources[i].x(), sources[i].y() } }, others);
 }
 
 // The borders from the kept field follow every change of the nearest source, not only the edges whose corners'
@@ -630,8 +637,16 @@ TEST(Curves, ExactBordersOnAPrismCellAcrossAnEdgeOfOneLabel)
   const double u_cut = abscissa(b);
   for(double u : { u_cut - x, u_cut + x })
     EXPECT_EQ(points_near(borders, 0, 1, on_strip(u, 1.), 1e-12), 1u) << "the border on the ring edge at " << u;
-  // the areas add up to the strip's
-  const VG::Voronoi_cell_areas cells = VG::geodesic_voronoi_cell_areas(s);
+  // the areas: B's cell is, unrolled around B, the strip's period clipped by the bisectors of B and A's images
+  // (it has corners where B's border crosses A's cut line: kinks, followed to the chord tolerance); they add up
+  const VG::Voronoi_cell_areas cells = VG::geodesic_voronoi_cell_areas(s, VG::parameters::chord_tolerance(1e-6));
+  ASSERT_EQ(cells.areas.size(), 2u);
+  std::vector<std::array<double, 2> > images;
+  for(int k = -1; k <= 2; ++k)
+    images.push_back({ { abscissa(a) + k * perimeter, a.z() } });
+  const double ub = abscissa(b);
+  const double cell_b = clipped_cell_area(ub - 0.5 * perimeter, 0., ub + 0.5 * perimeter, height, { { ub, b.z() } }, images);
+  EXPECT_NEAR(cells.areas[1], cell_b, cells.uncertainty[1] + 1e-12);
   EXPECT_NEAR(cells.areas[0] + cells.areas[1], perimeter * height, 1e-12 * perimeter * height);
 }
 
