@@ -234,7 +234,8 @@ int main(int argc, char** argv)
   const auto isolines = VG::geodesic_isolines(solver, levels);
   const double isoline_time = cpu_seconds() - c0;
   c0 = cpu_seconds();
-  const auto borders = VG::geodesic_cell_borders(solver);
+  VG::Geodesic_curves_report border_report;
+  const auto borders = VG::geodesic_cell_borders(solver, VG::parameters::default_values(), &border_report);
   const double border_time = cpu_seconds() - c0;
   std::vector<Solver::Face_location> at;
   std::vector<double> level_of;
@@ -292,7 +293,9 @@ int main(int argc, char** argv)
     for(std::size_t i = 0; i < here.size(); ++i)
       error.push_back(std::abs(d[0][i] - d[1][i]) / largest);
   }
-  std::cout << borders.size() << " cell borders, " << total << " points in " << border_time << " s\n";
+  std::cout << borders.size() << " cell borders, " << total << " points in " << border_time << " s (points left on "
+            << "their chord " << border_report.undecided << ", edge fallbacks " << border_report.edge_fallbacks
+            << ", junction fallbacks " << border_report.junction_fallbacks << ")\n";
   print_errors("border points equidistant from their two sources (targeted exact runs)", error, 1e-9);
   const VG::Voronoi_cell_areas cells = VG::geodesic_voronoi_cell_areas(solver);
   double sum = 0., area = 0.;

@@ -1,6 +1,8 @@
 // Isolines and geodesic Voronoi borders as curves (geodesic_curves.h): on the plane (circles, straight
 // bisectors), a source inside a face, several components, curves that end on the border, the prism (an
 // unrolled cylinder), and real meshes checked point by point by exact runs that have the points as targets;
+// the exact borders from the kept field where cells meet or poke across edges (the elephant with three cells,
+// a plane and a prism, analytic);
 // consecutive points share a face; bad input.
 
 #include "vtp_test_meshes.h"
@@ -373,6 +375,279 @@ TEST(Curves, VoronoiAreasFromTheBorders)
   for(double x : ecells.areas)
     sum += x;
   EXPECT_NEAR(sum, total, 1e-12 * total);
+}
+
+// The location of a point of the surface (within 1e-12 of a face's plane, inside it to 1e-12)
+Curve_solver::Face_location locate_point(const Surface_mesh& m, const Point_3& p)
+{
+  for(Face_index f : m.faces())
+  {
+    const auto h = m.halfedge(f);
+    const Point_3 a = m.point(m.source(h)), b = m.point(m.target(h)), c = m.point(m.target(m.next(h)));
+    const Vector_3 u = b - a, v = c - a, w = p - a, n = CGAL::cross_product(u, v);
+    const double n2 = n.squared_length();
+    if(!(n2 > 0.) || std::abs(w * n) > 1e-12 * std::sqrt(n2))
+      continue;
+    const double l1 = CGAL::cross_product(w, v) * n / n2, l2 = CGAL::cross_product(u, w) * n / n2;
+    const double l0 = 1. - l1 - l2;
+    if(l0 >= -1e-12 && l1 >= -1e-12 && l2 >= -1e-12)
+      return Curve_solver::Face_location(f, { { l0, l1, l2 } });
+  }
+  ADD_FAILURE() << "no face holds " << p;
+  return Curve_solver::Face_location(*m.faces().begin(), { { 1., 0., 0. } });
+}
+
+// The points of the curves of cells (i, j) within `tolerance` of p
+std::size_t points_near(const std::vector<Curve>& curves, std::size_t i, std::size_t j, const Point_3& p,
+                        double tolerance)
+{
+  std::size_t n = 0;
+  for(const Curve& k : curves)
+    if(k.cells[0] == (std::min)(i, j) && k.cells[1] == (std::max)(i, j))
+      for(const Point_3& q : k.points)
+        n += distance(p, q) <= tolerance ? 1 : 0;
+  return n;
+}
+
+// The area of the part of the rectangle [x0, x1] x [y0, y1] nearer to `site` than to the points `others` (of
+// the plane: a convex polygon, the rectangle clipped by the half-planes of the bisectors)
+double clipped_cell_area(double x0, double y0, double x1, double y1, const std::array<double, 2>& a,
+                         const std::vector<std::array<double, 2> >& others)
+{
+  std::vector<std::array<double, 2> > poly = { { { x0, y0 } }, { { x1, y0 } }, { { x1, y1 } }, { { x0, y1 } } };
+  for(const auto& b : others)
+  {
+    // kept: 2 x . (b - a) <= |b|^2 - |a|^2
+    const double nx = 2. * (b[0] - a[0]), ny = 2. * (b[1] - a[1]);
+    const double c = b[0] * b[0] + b[1] * b[1] - a[0] * a[0] - a[1] * a[1];
+    std::vector<std::array<double, 2> > out;
+    for(std::size_t k = 0; k < poly.size(); ++k)
+    {
+      const auto& p = poly[k];
+      const auto& q = poly[(k + 1) % poly.size()];
+      const double fp = nx * p[0] + ny * p[1] - c, fq = nx * q[0] + ny * q[1] - c;
+      if(fp <= 0.)
+        out.push_back(p);
+      if((fp < 0.) != (fq < 0.) && fp != fq)
+      {
+        const double t = fp / (fp - fq);
+        out.push_back({ { p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]) } });
+      }
+    }
+    poly = out;
+  }
+  double twice = 0.;
+  for(std::size_t k = 0; k < poly.size(); ++k)
+    twice += poly[k][0] * poly[(k + 1) % poly.size()][1] - poly[(k + 1) % poly.size()][0] * poly[k][1];
+  return 0.5 * twice;
+}
+
+// The area of the part of the unit square nearer to sources[i] than to the others (z = 0)
+double flat_cell_area(const std::vector<Point_3>& sources, std::size_t i)
+{
+  std::vector<std::array<double, 2> > others;
+  for(std::size_t j = 0; j < sources.size(); ++j)
+    if(j != i)
+      others.push_back({ { sources[j].x(), sources[j].y() } });
+  return clipped_cell_area(0., 0., 1., 1., { { sources[i].x(), sources[i].y() } }, others);
+}
+
+// The borders from the kept field follow every change of the nearest source, not only the edges whose corners'
+// labels differ: on the elephant with three sources (cells meeting in a face where the corner labels do not say
+// so), every border point is equidistant from its two cells' sources to 1e-9 of the largest distance (exact
+// targeted runs), and the cells' areas add up to the area of the mesh.
+TEST(Curves, ExactBordersOfThreeCells)
+{
+  const Surface_mesh m = elephant();
+  Curve_solver s(m);
+  const std::vector<Vertex_index> sources = { Vertex_index(0), Vertex_index(99), Vertex_index(1000) };
+  CGAL::Constant_property_map<Vertex_index, double> discard;
+  s.compute(discard, sources, VG::parameters::keep_field(true));
+  const double r = largest(s);
+  VG::Geodesic_curves_report report;
+  const auto borders = VG::geodesic_cell_borders(s, VG::parameters::default_values(), &report);
+  ASSERT_EQ(borders.size(), 3u);
+  expect_no_gaps(m, borders);
+  check_borders_by_targets(m, sources, borders, 1e-9 * r);
+  EXPECT_EQ(report.undecided, 0u);
+  EXPECT_EQ(report.edge_fallbacks, 0u);
+  EXPECT_EQ(report.junction_fallbacks, 0u);
+  // the three borders meet at one point (the junction, an end of each)
+  std::vector<Point_3> ends;
+  for(const Curve& k : borders)
+  {
+    EXPECT_FALSE(k.closed);
+    ends.push_back(k.points.front());
+    ends.push_back(k.points.back());
+  }
+  std::size_t meeting = 0;
+  for(const Point_3& p : ends)
+  {
+    std::size_t same = 0;
+    for(const Point_3& q : ends)
+      same += distance(p, q) <= 1e-12 ? 1 : 0;
+    meeting = (std::max)(meeting, same);
+  }
+  EXPECT_EQ(meeting, 3u);
+  const VG::Voronoi_cell_areas cells = VG::geodesic_voronoi_cell_areas(s);
+  double total = 0., sum = 0.;
+  for(Face_index f : m.faces())
+    total += std::sqrt(CGAL::squared_area(m.point(m.source(m.halfedge(f))), m.point(m.target(m.halfedge(f))),
+                                          m.point(m.target(m.next(m.halfedge(f))))));
+  for(double x : cells.areas)
+    sum += x;
+  EXPECT_NEAR(sum, total, 1e-13 * total);
+}
+
+// On a flat jittered grid the cells are the Voronoi cells of the sources (straight bisectors): three sources
+// around a point J just beyond an edge pq, so that the cell of the third (C, below) reaches across pq between
+// p (in cell A) and q (in cell B), and the three cells meet at J, the circumcentre of the sources, in a face
+// whose corners are in A and B only. Every border point lies on its bisector and in no nearer cell, the A|C and
+// B|C borders cross pq where the bisectors do, the three borders end at the circumcentre, to 1e-12; the cells'
+// areas are those of the Voronoi cells clipped to the square, to 1e-12.
+TEST(Curves, ExactBordersOnAPlaneThirdCellAcrossAnEdge)
+{
+  const int n = 20;
+  const Surface_mesh m = to_mesh<Surface_mesh>(planar_grid(n, n, 1., 1., 0.2, 11));
+  const Vertex_index p(static_cast<Surface_mesh::size_type>(grid_vertex(n, 10, 10)));
+  const Vertex_index q(static_cast<Surface_mesh::size_type>(grid_vertex(n, 11, 10)));
+  const Point_3 pp = m.point(p), pq = m.point(q);
+  const double h = 1. / n, len = distance(pp, pq);
+  const double ex = (pq.x() - pp.x()) / len, ey = (pq.y() - pp.y()) / len;  // along pq, and (-ey, ex) across
+  const double delta = 0.15 * h, radius = 3. * h;
+  const double jx = 0.5 * (pp.x() + pq.x()) - delta * ey, jy = 0.5 * (pp.y() + pq.y()) + delta * ex;
+  std::vector<Curve_solver::Face_location> at;
+  std::vector<Point_3> src;
+  for(double angle : { 150., 30., 270. })  // A, B, C (in the frame of pq)
+  {
+    const double a = angle * PI / 180., c = std::cos(a), d = std::sin(a);
+    at.push_back(locate_point(m, Point_3(jx + radius * (c * ex - d * ey), jy + radius * (c * ey + d * ex), 0.)));
+    src.push_back(point_of(m, at.back()));
+  }
+  const Point_3 j = CGAL::circumcenter(src[0], src[1], src[2]);
+  Curve_solver s(m);
+  CGAL::Constant_property_map<Vertex_index, double> discard;
+  s.compute(discard, at, VG::parameters::keep_field(true));
+  // p in A, q in B; the face beyond pq (holding the junction) has no corner in C
+  ASSERT_EQ(s.field_nearest_source(p), 0u);
+  ASSERT_EQ(s.field_nearest_source(q), 1u);
+  const auto hpq = m.halfedge(p, q);
+  ASSERT_TRUE(hpq != Surface_mesh::null_halfedge());
+  const auto beyond = (CGAL::orientation(Point_2(pp.x(), pp.y()), Point_2(pq.x(), pq.y()), Point_2(jx, jy)) == CGAL::LEFT_TURN)
+                        ? hpq : m.opposite(hpq);
+  EXPECT_NE(s.field_nearest_source(m.target(m.next(beyond))), 2u);
+  VG::Geodesic_curves_report report;
+  const auto borders = VG::geodesic_cell_borders(s, VG::parameters::default_values(), &report);
+  EXPECT_EQ(borders.size(), 3u);
+  expect_no_gaps(m, borders);
+  EXPECT_EQ(report.undecided + report.edge_fallbacks + report.junction_fallbacks, 0u);
+  for(const Curve& k : borders)
+  {
+    ASSERT_FALSE(k.closed);
+    const std::size_t a = k.cells[0], b = k.cells[1], c = 3 - a - b;
+    for(const Point_3& x : k.points)
+    {
+      const double da = distance(x, src[a]), db = distance(x, src[b]), dc = distance(x, src[c]);
+      EXPECT_NEAR(da, db, 1e-12) << "border " << a << "|" << b << " at " << x;
+      EXPECT_LE(da, dc + 1e-12) << "border " << a << "|" << b << " at " << x;
+    }
+    // one end at the junction, the other on the square's side
+    const double to_j = (std::min)(distance(k.points.front(), j), distance(k.points.back(), j));
+    EXPECT_LE(to_j, 1e-12) << "border " << a << "|" << b;
+  }
+  // where the bisectors of A, C and of B, C cross pq: inside it, both borders through there
+  for(std::size_t a : { std::size_t(0), std::size_t(1) })
+  {
+    const Point_3& x = src[a];
+    const Point_3& c = src[2];
+    // |pp + t (pq - pp) - x| = |... - c|: linear in t
+    const Vector_3 d = pq - pp, cx = c - x;
+    const double t = ((c - CGAL::ORIGIN).squared_length() - (x - CGAL::ORIGIN).squared_length() - 2. * ((pp - CGAL::ORIGIN) * cx))
+                     / (2. * (d * cx));
+    ASSERT_GT(t, 0.);
+    ASSERT_LT(t, 1.);
+    EXPECT_EQ(points_near(borders, a, 2, pp + t * d, 1e-12), 1u) << "border " << a << "|2 on pq";
+  }
+  const VG::Voronoi_cell_areas cells = VG::geodesic_voronoi_cell_areas(s);
+  ASSERT_EQ(cells.areas.size(), 3u);
+  for(std::size_t i = 0; i < 3; ++i)
+    EXPECT_NEAR(cells.areas[i], flat_cell_area(src, i), 1e-12) << "cell " << i;
+}
+
+// The lateral surface of a prism is a flat strip rolled up (distances: Euclidean in the strip, around the
+// shorter way). Source A low, B high on the line opposite A (A's cut line): below some height the cut line
+// separates the two ways to A; above it, B's cell is a wedge, here narrower than the ring edge it crosses, so
+// that both corners of that edge are nearest to A (each the other way around) and B's cell pokes across it
+// between them. Every border point is equidistant to 1e-12, and the border crosses that edge where the two
+// bisectors of B and the two images of A do.
+TEST(Curves, ExactBordersOnAPrismCellAcrossAnEdgeOfOneLabel)
+{
+  const int sides = 12, bands = 6;
+  const double radius = 0.5, height = 3.;
+  const Surface_mesh m = to_mesh<Surface_mesh>(open_prism(sides, bands, radius, height));
+  const double side = 2. * radius * std::sin(PI / sides), perimeter = sides * side;
+  auto abscissa = [&](const Point_3& x) {
+    double angle = std::atan2(x.y(), x.x());
+    if(angle < 0.)
+      angle += 2. * PI;
+    const int k = static_cast<int>(std::floor(angle / (2. * PI / sides) + 1e-12)) % sides;
+    const double c = 2. * PI * k / sides;
+    return k * side + std::hypot(x.x() - radius * std::cos(c), x.y() - radius * std::sin(c));
+  };
+  auto on_strip = [&](double u, double z) {  // the point at abscissa u (in [0, perimeter)), height z
+    const int k = static_cast<int>(std::floor(u / side));
+    const double t = u / side - k, a0 = 2. * PI * k / sides, a1 = 2. * PI * (k + 1) / sides;
+    return Point_3(radius * ((1. - t) * std::cos(a0) + t * std::cos(a1)),
+                   radius * ((1. - t) * std::sin(a0) + t * std::sin(a1)), z);
+  };
+  // A at abscissa 2.5 sides; its cut line at 8.5 sides, the middle of the ring edges between corners 8 and 9;
+  // the tip of B's cell just below ring 2 (height 1): z* = zb - sqrt((z* - za)^2 + (perimeter / 2)^2)
+  const double za = 0.1, tip = 0.96, ua = 2.5 * side, uc = ua + 0.5 * perimeter;
+  const double zb = tip + std::sqrt((tip - za) * (tip - za) + 0.25 * perimeter * perimeter);
+  ASSERT_LT(zb, height);
+  const std::vector<Curve_solver::Face_location> at = { locate_point(m, on_strip(ua, za)),
+                                                        locate_point(m, on_strip(uc, zb)) };
+  const Point_3 a = point_of(m, at[0]), b = point_of(m, at[1]);
+  auto strip_distance = [&](const Point_3& x, const Point_3& o) {
+    const double du = std::abs(abscissa(x) - abscissa(o));
+    return std::hypot((std::min)(du, perimeter - du), x.z() - o.z());
+  };
+  Curve_solver s(m);
+  CGAL::Constant_property_map<Vertex_index, double> discard;
+  s.compute(discard, at, VG::parameters::keep_field(true));
+  // the ring edge at height 1 across the cut line: both corners in A
+  const Vertex_index v8(static_cast<Surface_mesh::size_type>(2 * sides + 8)), v9(static_cast<Surface_mesh::size_type>(2 * sides + 9));
+  ASSERT_EQ(s.field_nearest_source(v8), 0u);
+  ASSERT_EQ(s.field_nearest_source(v9), 0u);
+  ASSERT_NE(m.halfedge(v8, v9), Surface_mesh::null_halfedge());
+  VG::Geodesic_curves_report report;
+  const auto borders = VG::geodesic_cell_borders(s, VG::parameters::default_values(), &report);
+  ASSERT_FALSE(borders.empty());
+  expect_no_gaps(m, borders);
+  EXPECT_EQ(report.undecided + report.edge_fallbacks + report.junction_fallbacks, 0u);
+  for(const Curve& k : borders)
+    for(const Point_3& x : k.points)
+      EXPECT_NEAR(strip_distance(x, a), strip_distance(x, b), 1e-12) << x;
+  // at height 1, the bisector of B and the image of A on either side is off the cut line by
+  // x = (perimeter^2 / 4 + (1 - za)^2 - (zb - 1)^2) / perimeter, less than half the edge
+  const double za1 = a.z(), zb1 = b.z();
+  const double x = (0.25 * perimeter * perimeter + (1. - za1) * (1. - za1) - (zb1 - 1.) * (zb1 - 1.)) / perimeter;
+  ASSERT_GT(x, 0.);
+  ASSERT_LT(x, 0.5 * side);
+  const double u_cut = abscissa(b);
+  for(double u : { u_cut - x, u_cut + x })
+    EXPECT_EQ(points_near(borders, 0, 1, on_strip(u, 1.), 1e-12), 1u) << "the border on the ring edge at " << u;
+  // the areas: B's cell is, unrolled around B, the strip's period clipped by the bisectors of B and A's images
+  // (it has corners where B's border crosses A's cut line: kinks, followed to the chord tolerance); they add up
+  const VG::Voronoi_cell_areas cells = VG::geodesic_voronoi_cell_areas(s, VG::parameters::chord_tolerance(1e-6));
+  ASSERT_EQ(cells.areas.size(), 2u);
+  std::vector<std::array<double, 2> > images;
+  for(int k = -1; k <= 2; ++k)
+    images.push_back({ { abscissa(a) + k * perimeter, a.z() } });
+  const double ub = abscissa(b);
+  const double cell_b = clipped_cell_area(ub - 0.5 * perimeter, 0., ub + 0.5 * perimeter, height, { { ub, b.z() } }, images);
+  EXPECT_NEAR(cells.areas[1], cell_b, cells.uncertainty[1] + 1e-12);
+  EXPECT_NEAR(cells.areas[0] + cells.areas[1], perimeter * height, 1e-12 * perimeter * height);
 }
 
 TEST(Curves, BadInput)

@@ -228,10 +228,14 @@ std::vector<double> geodesic_isoline_levels(const Solver& solver, double step)
 /// \ingroup PkgVTPGeodesicsRef
 /// The borders between the geodesic Voronoi cells of the sources of the last computation of `solver`, as
 /// connected curves (`cells`: the two labels), each closed or open with its ends on the border of the mesh
-/// or at a junction of three cells. Which edges a border crosses is decided by the nearest-source labels of
-/// the vertices; where it crosses and how it runs inside faces, by the candidates of the faces (as
-/// `geodesic_isolines()`): a point of a border is where the least candidate distances of the two labels are
-/// equal. Parameters, report and exceptions as `geodesic_isolines()`.
+/// or at a junction of three cells. A point of a border is where the least candidate distances of the two
+/// labels are equal and least of all (the candidates of the faces, as `geodesic_isolines()`). With the kept
+/// field (`keep_field(true)`: exact) the borders follow every change of the nearest source, found exactly on
+/// the edges (also where a cell pokes across an edge whose two vertices are in another cell), the junctions of
+/// three cells where the three are equal, and the points inside faces where the two labels change along lines
+/// across the chords, added where a border bends away from its chords by more than the tolerance; from the
+/// per-vertex record (`record_paths(true)`), which edges a border crosses is decided by the nearest-source
+/// labels of the vertices. Parameters, report and exceptions as `geodesic_isolines()`.
 template <class Solver, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<Geodesic_curve<typename Solver::face_descriptor, typename Solver::Point_3> >
 geodesic_cell_borders(const Solver& solver, const NamedParameters& np = parameters::default_values(),
@@ -242,10 +246,10 @@ geodesic_cell_borders(const Solver& solver, const NamedParameters& np = paramete
 
 /// \ingroup PkgVTPGeodesicsRef
 /// The area of the geodesic Voronoi cell of each source of the last computation of `solver` (which used
-/// `keep_field(true)`, or `record_paths(true)`), from the split of the faces by the borders of `geodesic_cell_borders()`: a face whose
-/// corners have one label is in that cell; a face with two or three labels is cut along the border pieces (the
-/// polygons of its corners). The areas add up to the area of the faces whose corners are all reached (to
-/// rounding). `uncertainty[i]`: the chord tolerance times the length of the border of cell i, a bound of the
+/// `keep_field(true)`, or `record_paths(true)`), from the split of the faces by the borders of
+/// `geodesic_cell_borders()`: a face that no border enters is in the cell of its corners; a face that borders
+/// enter is cut along their pieces (per cell, the area enclosed by its arcs of the face's boundary and the
+/// pieces beside it). The areas add up to the area of the faces whose corners are all reached (to rounding). `uncertainty[i]`: the chord tolerance times the length of the border of cell i, a bound of the
 /// area between the chords and the borders (where the borders are exact; see the manual, curves).
 /// \param solver a solver whose last computation kept its field or its paths, from several sources.
 /// \param np optional: `chord_tolerance`, `vertex_point_map` (as `geodesic_isolines()`)

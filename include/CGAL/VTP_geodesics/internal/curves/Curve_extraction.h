@@ -14,6 +14,7 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
+#include <CGAL/VTP_geodesics/internal/curves/Curve_borders.h>
 #include <CGAL/VTP_geodesics/internal/curves/Curve_pieces.h>
 
 #include <algorithm>
@@ -245,6 +246,18 @@ public:
     std::vector<Curve_piece> pieces;
     std::vector<Curve_candidate> c;
     m_pieces.set_value_tolerance(0.);
+    if(field.from_crossings())
+    {
+      // (exact: every change of label along the edges, Curve_borders.h)
+      Exact_borders exact(m_pieces, m_tolerance);
+      exact.run(pieces, set_index, [this](Index label, double area, double bound) { add_area(label, area, bound); });
+      m_border_fallbacks += exact.edge_fallbacks;
+      m_pieces.junction_fallbacks += exact.junction_fallbacks;
+      border_faces = exact.faces;
+      poked_faces = exact.poked_faces;
+      many_ends = exact.many_ends;
+      return chain_pieces(pieces);
+    }
     for(Index f = 0; f < m.nf; ++f)
     {
       Index l[3];
@@ -411,6 +424,9 @@ public:
 
 public:
   std::size_t m_border_fallbacks = 0;
+  // after borders() from the kept field: the faces searched, of which with one corner label (a cell pokes into
+  // them), and with more than three changes of label on their edges
+  std::size_t border_faces = 0, poked_faces = 0, many_ends = 0;
 };
 
 } // namespace internal

@@ -15,6 +15,7 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/internal/field/Curve_field.h>
+#include <CGAL/VTP_geodesics/internal/curves/Curve_envelope.h>
 #include <CGAL/VTP_geodesics/internal/curves/Curve_polylines.h>
 #include <CGAL/VTP_geodesics/internal/curves/Curve_roots.h>
 
@@ -345,6 +346,37 @@ public:
     }
   }
 
+  // The changes of the label of the least candidate along the lower half-edge c (abscissae from source(c), in
+  // order), from the candidates of its two faces (Label_envelope: exact), where its vertices have labels la and
+  // lb: a change is added at an end where the least has another label (a tie at the vertex). False if the
+  // sweep gave up (rounding: `out` holds what it found, with the ends' changes).
+  bool border_changes(Index c, Index la, Index lb, std::vector<Label_change>& out)
+  {
+    const Index o = m_mesh.opposite[c];
+    double line[2][4];
+    edge_candidates(c, line);
+    const double length = m_mesh.geometry[c].length;
+    const double scale = (std::max)(m_field.distance(m_mesh.source[c]), m_field.distance(m_mesh.source[Mesh_arrays::next(c)]))
+                         + length;
+    m_envelope.reset(0., 1., length * length, scale);
+    m_envelope.add(m_cf, line[0][0], line[0][1], line[0][2], line[0][3]);
+    if(o != NO_INDEX)
+      m_envelope.add(m_cg, line[1][0], line[1][1], line[1][2], line[1][3]);
+    Index first, last;
+    const bool done = m_envelope.changes(la, out, first, last);
+    if(first == NO_INDEX)  // (no candidate: cannot happen with reached corners)
+    {
+      if(la != lb)
+        out.push_back(Label_change{ 0.5, la, lb });
+      return false;
+    }
+    if(first != la)
+      out.insert(out.begin(), Label_change{ 0., la, first });
+    if(last != lb)
+      out.push_back(Label_change{ 1., last, lb });
+    return done;
+  }
+
   // the point (x, y) of the frame of f as a curve point
   static Curve_point point_in_face(Index f, const Face_frame& fr, double x, double y)
   {
@@ -394,6 +426,7 @@ private:
   double m_tolerance_g = 0.;
   std::vector<Curve_candidate> m_cf, m_cg;
   std::vector<std::pair<double, double> > m_intervals;
+  Label_envelope m_envelope;
 };
 
 } // namespace internal

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -44,7 +45,7 @@ struct Curve_point
 struct Curve_piece
 {
   Index set;
-  Index key[2];
+  std::int64_t key[2];
   std::vector<Curve_point> points;
 };
 
@@ -123,7 +124,7 @@ inline std::vector<Extracted_curve> chain_pieces(std::vector<Curve_piece>& piece
                    [](const Curve_piece& a, const Curve_piece& b) { return a.set < b.set; });
   std::vector<Extracted_curve> curves;
   std::vector<char> used(pieces.size(), 0);
-  std::unordered_map<Index, std::vector<std::size_t> > at;  // key -> 2 * piece + end
+  std::unordered_map<std::int64_t, std::vector<std::size_t> > at;  // key -> 2 * piece + end
   for(std::size_t begin = 0; begin < pieces.size();)
   {
     std::size_t end = begin;
@@ -145,7 +146,7 @@ inline std::vector<Extracted_curve> chain_pieces(std::vector<Curve_piece>& piece
         if(e == 1)
           std::reverse(p.begin(), p.end());
         curve.points.insert(curve.points.end(), p.begin() + (curve.points.empty() ? 0 : 1), p.end());
-        const Index key = pieces[i].key[1 - e];
+        const std::int64_t key = pieces[i].key[1 - e];
         std::size_t next = pieces.size();
         int next_end = 0;
         for(std::size_t x : at[key])

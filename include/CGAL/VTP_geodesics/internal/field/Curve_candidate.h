@@ -98,24 +98,8 @@ struct Curve_candidate
   {
     if(!window)
       return circle_interval(px, py, dx, dy, x, y, level - base, lo, hi);
-    // where the window sees the line: the ray from the image through p(u) crosses the window at
-    // num(u) / den(u) of it (den has one sign over the face, which is beyond the window)
-    const double ex = gx1 - gx0, ey = gy1 - gy0, rx = gx0 - x, ry = gy0 - y, qx = px - x, qy = py - y;
-    const double den0 = qx * ey - qy * ex, den1 = dx * ey - dy * ex;
-    const double num0 = rx * qy - ry * qx, num1 = rx * dy - ry * dx;
-    const double sign = den0 + 0.5 * den1 < 0. ? -1. : 1.;
-    // visible: sign num >= 0 and sign (den - num) >= 0, each linear in u
-    double v_lo = -std::numeric_limits<double>::infinity(), v_hi = std::numeric_limits<double>::infinity();
-    const double a[2][2] = { { sign * num0, sign * num1 }, { sign * (den0 - num0), sign * (den1 - num1) } };
-    for(const auto& l : a)  // l[0] + u l[1] >= 0
-    {
-      if(l[1] > 0.)
-        v_lo = (std::max)(v_lo, -l[0] / l[1]);
-      else if(l[1] < 0.)
-        v_hi = (std::min)(v_hi, -l[0] / l[1]);
-      else if(l[0] < 0.)
-        v_lo = std::numeric_limits<double>::infinity();
-    }
+    double v_lo, v_hi;
+    seen_on_line(px, py, dx, dy, v_lo, v_hi);
     lo = std::numeric_limits<double>::infinity();
     hi = -std::numeric_limits<double>::infinity();
     auto hull = [&](double a0, double a1) {
@@ -141,6 +125,31 @@ struct Curve_candidate
         }
       }
     return lo < hi;
+  }
+
+  // The abscissae u of the line (px, py) + u (dx, dy) (a line through the face, beyond the window) where a
+  // window sees it, the path from the image straight (v_lo, v_hi): empty (v_lo >= v_hi) if nowhere.
+  void seen_on_line(double px, double py, double dx, double dy, double& v_lo, double& v_hi) const
+  {
+    // the ray from the image through p(u) crosses the window at num(u) / den(u) of it (den has one sign over
+    // the face, which is beyond the window)
+    const double ex = gx1 - gx0, ey = gy1 - gy0, rx = gx0 - x, ry = gy0 - y, qx = px - x, qy = py - y;
+    const double den0 = qx * ey - qy * ex, den1 = dx * ey - dy * ex;
+    const double num0 = rx * qy - ry * qx, num1 = rx * dy - ry * dx;
+    const double sign = den0 + 0.5 * den1 < 0. ? -1. : 1.;
+    // visible: sign num >= 0 and sign (den - num) >= 0, each linear in u
+    v_lo = -std::numeric_limits<double>::infinity();
+    v_hi = std::numeric_limits<double>::infinity();
+    const double a[2][2] = { { sign * num0, sign * num1 }, { sign * (den0 - num0), sign * (den1 - num1) } };
+    for(const auto& l : a)  // l[0] + u l[1] >= 0
+    {
+      if(l[1] > 0.)
+        v_lo = (std::max)(v_lo, -l[0] / l[1]);
+      else if(l[1] < 0.)
+        v_hi = (std::min)(v_hi, -l[0] / l[1]);
+      else if(l[0] < 0.)
+        v_lo = std::numeric_limits<double>::infinity();
+    }
   }
 
   // the abscissae u of the line (px, py) + u (dx, dy) at distance less than r from (cx, cy): (lo, hi)

@@ -220,6 +220,12 @@ public:
   {
     return std::binary_search(m_face_seeds.begin(), m_face_seeds.end(), std::make_pair(f, i));
   }
+  // whether a seed lies in face f or on its edges
+  bool has_seeds(Index f) const
+  {
+    const auto it = std::lower_bound(m_face_seeds.begin(), m_face_seeds.end(), std::make_pair(f, Index(-1)));
+    return it != m_face_seeds.end() && it->first == f;
+  }
 
   // the least candidate distance at (x, y), over the candidates of label `label` (any if NO_INDEX); sets
   // `which` to the index of the least one (-1: none)
