@@ -22,6 +22,8 @@
 #include <CGAL/VTP_geodesics.h>
 #include <vtp_support/read_mesh.h>
 
+#include "error_report.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -37,21 +39,10 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef Mesh::Vertex_index Vertex;
 typedef CGAL::VTP_geodesics::Geodesic_distance_solver<Mesh> Solver;
 namespace VG = CGAL::VTP_geodesics;
+using vtp_benchmark_report::cpu_seconds;
+using vtp_benchmark_report::print_errors;
 
 namespace {
-
-double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
-
-void print_errors(const char* what, std::vector<double> e, double threshold)
-{
-  std::sort(e.begin(), e.end());
-  const std::size_t n = e.size();
-  std::size_t within = 0;
-  for(double x : e)
-    within += x <= threshold ? 1 : 0;
-  std::cout << what << ": " << n << " points, " << within << " within " << threshold << " (" << 100. * within / (n ? n : 1)
-            << "%), median " << (n ? e[n / 2] : 0.) << ", max " << (n ? e[n - 1] : 0.) << " (of the largest distance)\n";
-}
 
 // `every`-th location of the curves, at most `samples`
 std::vector<std::size_t> sample_indices(std::size_t total, std::size_t samples)
