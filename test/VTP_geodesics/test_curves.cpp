@@ -533,8 +533,9 @@ TEST(Curves, ExactBordersOnAPlaneThirdCellAcrossAnEdge)
   ASSERT_EQ(s.field_nearest_source(q), 1u);
   const auto hpq = m.halfedge(p, q);
   ASSERT_TRUE(hpq != Surface_mesh::null_halfedge());
-  const auto beyond = (CGAL::orientation(Point_2(pp.x(), pp.y()), Point_2(pq.x(), pq.y()), Point_2(jx, jy)) == CGAL::LEFT_TURN)
-                        ? hpq : m.opposite(hpq);
+  const bool left =
+    CGAL::orientation(Point_2(pp.x(), pp.y()), Point_2(pq.x(), pq.y()), Point_2(jx, jy)) == CGAL::LEFT_TURN;
+  const auto beyond = left ? hpq : m.opposite(hpq);
   EXPECT_NE(s.field_nearest_source(m.target(m.next(beyond))), 2u);
   VG::Geodesic_curves_report report;
   const auto borders = VG::geodesic_cell_borders(s, VG::parameters::default_values(), &report);
@@ -562,8 +563,8 @@ TEST(Curves, ExactBordersOnAPlaneThirdCellAcrossAnEdge)
     const Point_3& c = src[2];
     // |pp + t (pq - pp) - x| = |... - c|: linear in t
     const Vector_3 d = pq - pp, cx = c - x;
-    const double t = ((c - CGAL::ORIGIN).squared_length() - (x - CGAL::ORIGIN).squared_length() - 2. * ((pp - CGAL::ORIGIN) * cx))
-                     / (2. * (d * cx));
+    const double t = ((c - CGAL::ORIGIN).squared_length() - (x - CGAL::ORIGIN).squared_length()
+                      - 2. * ((pp - CGAL::ORIGIN) * cx)) / (2. * (d * cx));
     ASSERT_GT(t, 0.);
     ASSERT_LT(t, 1.);
     EXPECT_EQ(points_near(borders, a, 2, pp + t * d, 1e-12), 1u) << "border " << a << "|2 on pq";
@@ -616,7 +617,8 @@ TEST(Curves, ExactBordersOnAPrismCellAcrossAnEdgeOfOneLabel)
   CGAL::Constant_property_map<Vertex_index, double> discard;
   s.compute(discard, at, VG::parameters::keep_field(true));
   // the ring edge at height 1 across the cut line: both corners in A
-  const Vertex_index v8(static_cast<Surface_mesh::size_type>(2 * sides + 8)), v9(static_cast<Surface_mesh::size_type>(2 * sides + 9));
+  const Vertex_index v8(static_cast<Surface_mesh::size_type>(2 * sides + 8));
+  const Vertex_index v9(static_cast<Surface_mesh::size_type>(2 * sides + 9));
   ASSERT_EQ(s.field_nearest_source(v8), 0u);
   ASSERT_EQ(s.field_nearest_source(v9), 0u);
   ASSERT_NE(m.halfedge(v8, v9), Surface_mesh::null_halfedge());
@@ -645,7 +647,8 @@ TEST(Curves, ExactBordersOnAPrismCellAcrossAnEdgeOfOneLabel)
   for(int k = -1; k <= 2; ++k)
     images.push_back({ { abscissa(a) + k * perimeter, a.z() } });
   const double ub = abscissa(b);
-  const double cell_b = clipped_cell_area(ub - 0.5 * perimeter, 0., ub + 0.5 * perimeter, height, { { ub, b.z() } }, images);
+  const double cell_b =
+    clipped_cell_area(ub - 0.5 * perimeter, 0., ub + 0.5 * perimeter, height, { { ub, b.z() } }, images);
   EXPECT_NEAR(cells.areas[1], cell_b, cells.uncertainty[1] + 1e-12);
   EXPECT_NEAR(cells.areas[0] + cells.areas[1], perimeter * height, 1e-12 * perimeter * height);
 }

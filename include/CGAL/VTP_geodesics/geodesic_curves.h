@@ -60,7 +60,8 @@ struct Geodesic_curves_report
 {
   std::size_t points = 0;           ///< points written
   std::size_t undecided = 0;        ///< points inside faces left on the chord (no sign change across it)
-  std::size_t edge_fallbacks = 0;   ///< edge points placed by interpolation of the vertex values
+  std::size_t edge_fallbacks = 0;   ///< edge points placed by interpolation of the vertex values (borders from
+                                    ///< the kept field: edges whose exact search of the changes gave up)
   std::size_t junction_fallbacks = 0; ///< junctions of three cells not solved inside their face
   /// with `exact_refinement(n)`: the largest |exact distance - level| of the points before the moves of the
   /// last refinement run (NaN without refinement)

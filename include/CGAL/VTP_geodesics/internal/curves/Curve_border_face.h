@@ -54,6 +54,7 @@ public:
     const Face_frame fr(field.mesh(), f);
     const std::size_t n = crossings.size();
     field.candidates(f, m_c);
+    clear_junctions();
     // the ways to join the changes inside the face: those whose junctions are all found in it, else every way
     std::vector<std::vector<int> > ways;
     if(n <= 3)

@@ -103,7 +103,7 @@ protected:
     const double cx = (fr.x[0] + fr.x[1] + fr.x[2]) / 3., cy = (fr.y[0] + fr.y[1] + fr.y[2]) / 3.;
     const double size = std::abs(fr.x[1]) + std::abs(fr.x[2]) + std::abs(fr.y[2]);
     auto solved = [&]() {
-      if(!exact_junction(f, m_c, l, node.x, node.y))
+      if(!memo_junction(f, l, node.x, node.y))
         return false;
       for(std::size_t i = crossings.size(); i < made.size(); ++i)
         if(std::hypot(made[i].x - node.x, made[i].y - node.y) <= 1e-9 * size)
@@ -134,6 +134,26 @@ protected:
     node.point = Curve_pieces::point_in_face(f, fr, node.x, node.y);
     return found;
   }
+
+  // exact_junction() from (x, y), the answers kept for the face (the search of the ways and the way kept solve
+  // the same junctions from the same points; clear_junctions() when the face changes)
+  bool memo_junction(Index f, const Index l[3], double& x, double& y)
+  {
+    for(const Junction_memo& j : m_junctions)
+      if(j.l[0] == l[0] && j.l[1] == l[1] && j.l[2] == l[2] && j.from[0] == x && j.from[1] == y)
+      {
+        x = j.at[0];
+        y = j.at[1];
+        return j.found;
+      }
+    Junction_memo j{ { l[0], l[1], l[2] }, { x, y }, { x, y }, false };
+    j.found = exact_junction(f, m_c, l, j.at[0], j.at[1]);
+    m_junctions.push_back(j);
+    x = j.at[0];
+    y = j.at[1];
+    return j.found;
+  }
+  void clear_junctions() { m_junctions.clear(); }
 
   // The points of a link: its ends, and between them, on lines across its chord, where the label changes from
   // its right one to its left one (the nearest to the chord); then, between two points, the point found so on
@@ -202,7 +222,7 @@ protected:
     if(lo < hi && std::isfinite(lo) && std::isfinite(hi))
     {
       // first within w of the chord (a change found there at d <= w from it is the nearest), then all across
-      const double w = 0.25 * len + m_tolerance;
+      const double w = 0.1 * len + m_tolerance;
       for(int pass = 0; pass < 2; ++pass)
       {
         const double a = pass == 0 ? (std::max)(lo, -w) : lo, b = pass == 0 ? (std::min)(hi, w) : hi;
@@ -232,7 +252,8 @@ protected:
       return;
     const double mx = 0.5 * (x0 + x1), my = 0.5 * (y0 + y1);
     double x, y;
-    if(!border_across(f, fr, left, right, x0, y0, x1, y1, mx, my, r, x, y) || !(std::hypot(x - mx, y - my) > m_tolerance))
+    if(!border_across(f, fr, left, right, x0, y0, x1, y1, mx, my, r, x, y)
+       || !(std::hypot(x - mx, y - my) > m_tolerance))
       return;
     refine(f, fr, left, right, x0, y0, x, y, r, depth + 1, points);
     points.push_back(Curve_pieces::point_in_face(f, fr, x, y));
@@ -284,14 +305,16 @@ protected:
   // equal, from (x, y): each step takes the circles that hold at the point for the three labels and solves
   // three_circle_point() (exact once these circles hold at the point found); where these have no common point
   // near (the circles that hold at the junction are others), a Newton step on them (at most half the face's
-  // size); each step is kept in the face. True if found inside the face (to 1e-9 of its barycentric coordinates), the three equal and no label
-  // less there (to 1e-10 of the distances).
+  // size); each step is kept in the face (false if held back three times in a row). True if found inside the
+  // face (to 1e-9 of its barycentric coordinates), the three equal and no label less there (to 1e-10 of the
+  // distances).
   bool exact_junction(Index f, const std::vector<Curve_candidate>& c, const Index l[3], double& x, double& y)
   {
     const Face_frame fr(m_pieces.field().mesh(), f);
     const double size = std::abs(fr.x[1]) + std::abs(fr.x[2]) + std::abs(fr.y[2]);
     double px = x, py = y, last[3][3] = { { 0., 0., 0. }, { 0., 0., 0. }, { 0., 0., 0. } };
     bool stable = false, solved = false;
+    int outside = 0;
     for(int step = 0; step < 32; ++step)
     {
       double cc[3][2], b[3], v[3], gx[3], gy[3];
@@ -338,12 +361,16 @@ protected:
       Curve_point q = Curve_pieces::point_in_face(f, fr, nx, ny);
       if(!(q.b[0] >= 0. && q.b[1] >= 0. && q.b[2] >= 0.))
       {
+        if(++outside == 3)
+          return false;  // (held back three times in a row: the point is beyond the face)
         double sum = 0.;
         for(double& w : q.b)
           sum += (w = (std::max)(w, 0.));
         nx = (q.b[1] * fr.x[1] + q.b[2] * fr.x[2]) / sum;
         ny = q.b[2] * fr.y[2] / sum;
       }
+      else
+        outside = 0;
       px = nx;
       py = ny;
     }
@@ -368,6 +395,13 @@ protected:
   double m_tolerance;
   Label_envelope m_envelope;
   std::vector<Label_change> m_changes;
+  struct Junction_memo
+  {
+    Index l[3];
+    double from[2], at[2];
+    bool found;
+  };
+  std::vector<Junction_memo> m_junctions;  // (memo_junction())
   std::vector<Curve_candidate> m_c;  // (the candidates of the face)
   std::vector<std::pair<double, double> > m_arc;
 };

@@ -386,10 +386,14 @@ private:
           x = left;  // (below from `left` on: a tie there)
           return true;
         }
+        // (Newton steps on the difference, kept in the bracket, else Illinois steps)
         x = circle_zero(
           [&](double t, double& next) {
-            next = std::numeric_limits<double>::quiet_NaN();
-            return g(t);
+            const double v = g(t), dr = t - r.m, dw = t - w.m;
+            const double sr = std::sqrt(m_l2 * dr * dr + r.h2), sw = std::sqrt(m_l2 * dw * dw + w.h2);
+            const double slope = (sr > 0. ? m_l2 * dr / sr : 0.) - (sw > 0. ? m_l2 * dw / sw : 0.);
+            next = slope != 0. ? t - v / slope : std::numeric_limits<double>::quiet_NaN();
+            return v;
           },
           left, mid, g_left, g_mid, 1e-16 * (std::abs(left) + std::abs(mid)) + 1e-300, 0.);
         return true;

@@ -356,8 +356,8 @@ public:
     double line[2][4];
     edge_candidates(c, line);
     const double length = m_mesh.geometry[c].length;
-    const double scale = (std::max)(m_field.distance(m_mesh.source[c]), m_field.distance(m_mesh.source[Mesh_arrays::next(c)]))
-                         + length;
+    const double scale = (std::max)(m_field.distance(m_mesh.source[c]),
+                                    m_field.distance(m_mesh.source[Mesh_arrays::next(c)])) + length;
     m_envelope.reset(0., 1., length * length, scale);
     m_envelope.add(m_cf, line[0][0], line[0][1], line[0][2], line[0][3]);
     if(o != NO_INDEX)
