@@ -435,6 +435,10 @@ public:
   std::size_t vertex_id(vertex_descriptor v) const { return m_mesh.position_of(get(m_mesh.vertex_id, v)); }
   /// the vertices, in the order of their dense indices.
   const std::vector<vertex_descriptor>& vertex_list() const { return m_mesh.vertices_in_order; }
+  /// the vertices in the order in which the solver stores their per-vertex data: along a Morton (Z-order)
+  /// curve of their points, ties in the order of `vertices(tm)`, so that neighbours on the surface are near in
+  /// memory (a mesh renumbered in this order is read a few cache lines at a time by other programs too).
+  const std::vector<vertex_descriptor>& vertices_in_storage_order() const { return m_mesh.vertices; }
   /// number of vertices and faces of the mesh.
   std::size_t number_of_vertices() const { return m_mesh.vertices.size(); }
   std::size_t number_of_faces() const { return static_cast<std::size_t>(m_mesh.arrays.nf); }

@@ -22,7 +22,8 @@ namespace VTP_geodesics {
 namespace internal {
 
 // Morton (Z-order) codes of points in a box: 21 bits per axis, interleaved. The solver numbers the vertices
-// by them (solver/Mesh_import.h); the benchmark's --morton renumbers its input files the same way.
+// by them (solver/Mesh_import.h; Geodesic_distance_solver::vertices_in_storage_order(), which the benchmark's
+// --morton follows).
 struct Morton_code
 {
   static constexpr double cells = double((1 << 21) - 1);
