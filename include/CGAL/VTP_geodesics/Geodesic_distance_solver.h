@@ -23,18 +23,18 @@
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
 #include <CGAL/VTP_geodesics/internal/field/Field_queries.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
-#include <CGAL/VTP_geodesics/internal/solver/Log_map_output.h>
+#include <CGAL/VTP_geodesics/internal/log_map/Log_map_output.h>
 #include <CGAL/VTP_geodesics/internal/solver/Many_sources.h>
-#include <CGAL/VTP_geodesics/internal/solver/Mesh_import.h>
-#include <CGAL/VTP_geodesics/internal/solver/Mesh_index.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_import.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_index.h>
 #include <CGAL/VTP_geodesics/internal/solver/Output_maps.h>
-#include <CGAL/VTP_geodesics/internal/solver/Path_queries.h>
-#include <CGAL/VTP_geodesics/internal/solver/Polar_patch_rows.h>
+#include <CGAL/VTP_geodesics/internal/paths/Path_queries.h>
+#include <CGAL/VTP_geodesics/internal/log_map/Polar_patch_rows.h>
 #include <CGAL/VTP_geodesics/internal/solver/Settings_from_parameters.h>
 #include <CGAL/VTP_geodesics/internal/solver/Solver_run.h>
-#include <CGAL/VTP_geodesics/internal/solver/Straightest_queries.h>
+#include <CGAL/VTP_geodesics/internal/straightest/Straightest_queries.h>
 #include <CGAL/VTP_geodesics/internal/sampling/Farthest_point_sampler.h>
-#include <CGAL/VTP_geodesics/internal/source_forms.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Source_forms.h>
 
 #include <CGAL/disable_warnings.h>
 #include <CGAL/assertions.h>
