@@ -109,7 +109,9 @@ TEST(Vocabulary, ShortestPathIsASurfacePolyline)
   std::vector<Point_3> points;
   s.shortest_path_points(at, std::back_inserter(points));
   EXPECT_TRUE(path.points == points);
-  EXPECT_EQ(path.locations.front(), at);
+  EXPECT_EQ(path.locations.front().first, at.first);
+  for(std::size_t k = 0; k < 3; ++k)
+    EXPECT_NEAR(path.locations.front().second[k], at.second[k], 1e-12);
   EXPECT_THROW(s.shortest_path(Vertex_index(static_cast<Surface_mesh::size_type>(m.number_of_vertices()))),
                VG::Invalid_input_error);
 }
