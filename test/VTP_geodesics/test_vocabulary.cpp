@@ -17,8 +17,58 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <string>
 #include <type_traits>
 #include <vector>
+
+namespace vtp_vocabulary_huge {
+
+// A Surface_mesh that says it has 2^31 vertices (no more memory): the solver numbers vertices with 32 bits (so do
+// the vertex indices of Polar_patches) and must refuse it with Invalid_input_error, not wrap around.
+struct Huge_mesh : vtp_test::Surface_mesh
+{
+};
+
+inline std::size_t num_vertices(const Huge_mesh&) { return std::size_t(1) << 31; }
+
+} // namespace vtp_vocabulary_huge
+
+namespace boost {
+template <>
+struct graph_traits<vtp_vocabulary_huge::Huge_mesh> : graph_traits<vtp_test::Surface_mesh>
+{
+};
+template <class Tag>
+struct property_map<vtp_vocabulary_huge::Huge_mesh, Tag> : property_map<vtp_test::Surface_mesh, Tag>
+{
+};
+#define VTP_VOCABULARY_DYNAMIC(TAG)                                                                          \
+  template <class T>                                                                                       \
+  struct property_map<vtp_vocabulary_huge::Huge_mesh, CGAL::TAG<T> >                                       \
+    : property_map<vtp_test::Surface_mesh, CGAL::TAG<T> >                                                  \
+  {                                                                                                        \
+  };
+VTP_VOCABULARY_DYNAMIC(dynamic_vertex_property_t)
+VTP_VOCABULARY_DYNAMIC(dynamic_halfedge_property_t)
+VTP_VOCABULARY_DYNAMIC(dynamic_face_property_t)
+VTP_VOCABULARY_DYNAMIC(dynamic_edge_property_t)
+#undef VTP_VOCABULARY_DYNAMIC
+} // namespace boost
+
+namespace vtp_vocabulary_huge {
+#define VTP_VOCABULARY_DYNAMIC_GET(TAG)                                                                      \
+  template <class T>                                                                                       \
+  typename boost::property_map<vtp_test::Surface_mesh, CGAL::TAG<T> >::const_type get(const CGAL::TAG<T>& t,  \
+                                                                                   const Huge_mesh& m)     \
+  {                                                                                                        \
+    return get(t, static_cast<const vtp_test::Surface_mesh&>(m));                                          \
+  }
+VTP_VOCABULARY_DYNAMIC_GET(dynamic_vertex_property_t)
+VTP_VOCABULARY_DYNAMIC_GET(dynamic_halfedge_property_t)
+VTP_VOCABULARY_DYNAMIC_GET(dynamic_face_property_t)
+VTP_VOCABULARY_DYNAMIC_GET(dynamic_edge_property_t)
+#undef VTP_VOCABULARY_DYNAMIC_GET
+} // namespace vtp_vocabulary_huge
 
 using namespace vtp_test;
 namespace VG = CGAL::VTP_geodesics;
@@ -200,4 +250,25 @@ TEST(Vocabulary, VoronoiUncertaintyIsABoundForBothFunctions)
   }
   // the field's borders are exact here: its bound is far tighter than that of the split faces
   EXPECT_LT(from_field.uncertainty[0], from_labels.uncertainty[0]);
+}
+
+// 32-bit vertex indices (the solver's arrays, Polar_patches::vertices): a mesh of 2^31 vertices or more is refused
+// at construction with a clear Invalid_input_error (the number of entries of polar patches is a std::size_t: it
+// has no such bound).
+TEST(Vocabulary, MoreThan2To31VerticesIsAClearError)
+{
+  vtp_vocabulary_huge::Huge_mesh m;
+  static_cast<Surface_mesh&>(m) = to_mesh<Surface_mesh>(planar_grid(2, 2, 1., 1.));
+  try
+  {
+    VG::Geodesic_distance_solver<vtp_vocabulary_huge::Huge_mesh> s(m, get(CGAL::vertex_point, m));
+    FAIL() << "no error for 2^31 vertices";
+  }
+  catch(const VG::Invalid_input_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("the mesh is too large (more than 2147483647 vertices"), std::string::npos)
+      << e.what();
+  }
+  static_assert(std::is_same<decltype(VG::Polar_patches().offsets)::value_type, std::size_t>::value,
+                "the entries of polar patches are counted with std::size_t");
 }
