@@ -63,9 +63,9 @@ namespace VTP_geodesics {
 /// the runs (`reached_vertices`: the number of entries).
 ///
 /// Index widths: a vertex index is a `std::uint32_t` because the solver takes at most 2^31 - 1 vertices (its
-/// constructor throws `Invalid_input_error` beyond, "the mesh is too large"), so every vertex index fits, and an entry then takes 20 bytes
-/// instead of 24 (patches of a large mesh hold billions of entries). The offsets are `std::size_t`: the number of
-/// entries of all patches is not bounded by 2^31 (nor 2^32), only by memory.
+/// constructor throws `Invalid_input_error` beyond, "the mesh is too large"), so every vertex index fits, and an
+/// entry then takes 20 bytes instead of 24 (patches of a large mesh hold billions of entries). The offsets are
+/// `std::size_t`: the number of entries of all patches is not bounded by 2^31 (nor 2^32), only by memory.
 struct Polar_patches
 {
   std::vector<std::size_t> offsets;     ///< `number_of_patches() + 1` row offsets; `offsets[0] = 0`
