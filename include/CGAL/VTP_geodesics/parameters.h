@@ -50,11 +50,12 @@ constexpr std::size_t no_source = (std::numeric_limits<std::size_t>::max)();
   X(log_map_strict) X(reference_direction) X(chord_tolerance) X(exact_refinement) \
   X(keep_field)
 
-// The names of CGAL's named parameters that a chain of this package can hold: X(NAME, TAG_TYPE).
-// The extra results: X(NAME, TYPE), a link NAME(TYPE& r) that keeps &r (the function writes into r).
+// The extra results: X(NAME, TYPE), a link NAME(TYPE& r) that keeps &r (the function writes into r). Every
+// result besides the main one (the return value or the output map) comes back this way.
 #define CGAL_VTP_GEODESICS_FOR_EACH_RESULT_PARAMETER(X)                                                  \
   X(statistics, Propagation_statistics) X(curves_report, Geodesic_curves_report)
 
+// The names of CGAL's named parameters that a chain of this package can hold: X(NAME, TAG_TYPE).
 #define CGAL_VTP_GEODESICS_FOR_EACH_CGAL_NAMED_PARAMETER(X)                                              \
   X(vertex_point_map, CGAL::internal_np::vertex_point_t) X(geom_traits, CGAL::internal_np::geom_traits_t)
 
