@@ -432,17 +432,32 @@ set(bad_sets
   "path_output_without_paths|--path-output|${bad_output}.p"
   "paths_without_output|--path-to|5")
 vtp_cli_bad_sets(30 "${bad_sets}")
-# Straightest geodesics (--trace): bad values and a --trace without --path-output are refused (the polylines
-# themselves are checked against the Python module in test/python/test_straightest.py)
+# Straightest geodesics (--straightest-geodesic, and --trace, its former name kept as an alias): bad values and a
+# walk without --path-output are refused, under either name (the polylines themselves are checked against the
+# Python module in test/python/test_straightest.py); the two names write the same file, byte for byte.
 vtp_cli_test(trace_zero_direction 2 "${bad_output}.50" "" ERROR "direction must be finite and not zero"
              --trace 5,0,0,0,1 --path-output "${bad_output}.50")
 vtp_cli_test(trace_negative_length 2 "${bad_output}.51" "" ERROR "length must be finite and >= 0"
              --trace 5,1,0,0,-1 --path-output "${bad_output}.51")
 vtp_cli_test(trace_four_values 2 "${bad_output}.52" "" ERROR "expected V,X,Y,Z,LENGTH"
              --trace 5,1,0,0 --path-output "${bad_output}.52")
-vtp_cli_test(trace_out_of_range 2 "${bad_output}.53" "" ERROR "--trace vertex 99999999 is out of range"
+vtp_cli_test(trace_out_of_range 2 "${bad_output}.53" "" ERROR "--straightest-geodesic vertex 99999999 is out of range"
              --trace 99999999,1,0,0,1 --path-output "${bad_output}.53")
-vtp_cli_test(trace_without_output 2 "" "" ERROR "--trace needs --path-output" --trace 5,1,0,0,1)
+vtp_cli_test(trace_without_output 2 "" "" ERROR "--straightest-geodesic .--trace. needs --path-output"
+             --trace 5,1,0,0,1)
+vtp_cli_test(straightest_geodesic_zero_direction 2 "${bad_output}.54" "" ERROR "direction must be finite and not zero"
+             --straightest-geodesic 5,0,0,0,1 --path-output "${bad_output}.54")
+vtp_cli_test(straightest_geodesic_without_output 2 "" "" ERROR "needs --path-output" --straightest-geodesic 5,1,0,0,1)
+set(walks "${cli_dir}/walks")
+vtp_cli_test(straightest_geodesic 0 "" "" --straightest-geodesic 5,1,0,0,0.3 --straightest-geodesic 100,0,1,0,0.2
+             --path-output "${walks}.new.txt")
+vtp_cli_test(straightest_geodesic_alias_trace 0 "" "" --trace 5,1,0,0,0.3 --trace 100,0,1,0,0.2
+             --path-output "${walks}.old.txt")
+add_test(NAME cli_straightest_geodesic_alias_same
+         COMMAND "${CMAKE_COMMAND}" -E compare_files "${walks}.new.txt" "${walks}.old.txt")
+set_tests_properties(cli_straightest_geodesic_alias_same PROPERTIES FIXTURES_REQUIRED cli_straightest_alias_runs)
+set_property(TEST cli_straightest_geodesic cli_straightest_geodesic_alias_trace APPEND
+             PROPERTY FIXTURES_SETUP cli_straightest_alias_runs)
 vtp_cli_test(labels_same_file_as_output 2 "${bad_output}.24" "" ERROR "must name different files"
              --labels "${bad_output}.24" --output "${bad_output}.24")
 #   nonmanifold_vertex.off from vertex 1: the other tetrahedron (vertices 4, 5, 6) is unreachable, vertex 7 is in no

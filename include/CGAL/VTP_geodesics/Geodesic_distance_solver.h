@@ -19,6 +19,7 @@
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/Polar_patches.h>
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
+#include <CGAL/VTP_geodesics/Surface_polyline.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
 #include <CGAL/VTP_geodesics/internal/field/Field_queries.h>
@@ -104,8 +105,10 @@ public:
   /// A point of the surface: a face and the barycentric coordinates of the point with respect to
   /// `source(halfedge(f))`, `target(halfedge(f))` and `target(next(halfedge(f)))` (the type of
   /// `CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>`). Locations with another number
-  /// type are accepted too.
-  typedef std::pair<face_descriptor, std::array<double, 3> > Face_location;
+  /// type are accepted too. The one location type of the package: `CGAL::VTP_geodesics::Face_location<face_descriptor>`.
+  typedef VTP_geodesics::Face_location<face_descriptor> Face_location;
+  /// A polyline on the surface (a shortest path: `shortest_path()`), `Surface_polyline<face_descriptor, Point_3>`.
+  typedef Surface_polyline<face_descriptor, Point_3> Polyline;
   /// @}
 
 private:
@@ -381,6 +384,23 @@ public:
   /// distance (a numerical failure: none is known; the tests check every path of every method on random,
   /// degenerate and real meshes); no partial path is written then.
   /// @{
+
+  /// the path from `p` to its nearest source, `p` first, as a `Surface_polyline`: the points of
+  /// `shortest_path_points()` and, one each, the face locations of `shortest_path_locations()` (one trace-back).
+  /// `p` is a `vertex_descriptor` or a face location (any number type `FT` convertible to `double`).
+  /// \throws Invalid_input_error as the two below (and for a source vertex without a face, which has no location).
+  template <class VertexOrLocation>
+  Polyline shortest_path(const VertexOrLocation& p)
+  {
+    Polyline r;
+    for(const internal::Trace_point& q : m_paths.trace(m_mesh.arrays, m_engine, m_mesh.target_of(p, "the start of the path"),
+                                                         m_mesh.position))
+    {
+      r.points.push_back(internal::point_of<Point_3>(m_mesh, m_vpm, q));
+      r.locations.push_back(internal::location_of(m_mesh, q));
+    }
+    return r;
+  }
 
   /// writes the points of the path from `p` to its nearest source, `p` first, to `out` (value type
   /// `Point_3`): the vertices, the crossings of edges, and the source. `p` is a `vertex_descriptor` or a face
