@@ -204,7 +204,8 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
   r.mesh_vertices = solver.number_of_vertices();
   r.mesh_faces = solver.number_of_faces();
   r.preprocessing_seconds = solver.preprocessing_seconds();
-  r.preprocessing_threads = !vtp_support::rows_on_threads ? 1 : request.threads > 0 ? request.threads : vtp_support::default_threads();
+  r.preprocessing_threads = !vtp_support::rows_on_threads ? 1
+                            : request.threads > 0 ? request.threads : vtp_support::default_threads();
   r.mean_edge_length = solver.mean_edge_length();
   r.anisotropy = solver.anisotropy();
   if(request.farthest_points > 0)
