@@ -31,7 +31,9 @@ class LogMap:
             The direction of theta = 0, projected onto the tangent plane of each source. By default: at a
             vertex v, the edge from v to ``source(halfedge(v))`` of the library (the frame of ``trace()`` at a
             vertex); at a point of a face, F[face][0] -> F[face][1] (the frame of ``trace()`` there), so that
-            ``trace(c, log[v] / rho[v], rho[v])`` walks from the source c towards v.
+            ``trace(c, log[v] / rho[v], rho[v])`` ends at v (to 1e-9 of the largest distance) for every
+            vertex v with ``via[v] == -1`` (reached, not a source), exactly those whose geodesic passes
+            through no vertex; behind a vertex it need not.
         strict : bool, default False
             False: behind a saddle or boundary vertex s, the coordinates go on from those of s, turned at s as
             a straightest geodesic (a wedge of directions stays a wedge). True: the strict polyhedral angle,
