@@ -34,7 +34,7 @@ direct = inside[(via[inside] == -1) & (rho > 0)]
 d = log[direct] / np.linalg.norm(log[direct], axis=1)[:, None]
 paths, _, _ = solver.trace(np.full(direct.size, centre), d, np.linalg.norm(log[direct], axis=1))
 errors = np.array([np.linalg.norm(p[-1] - V[v]) for p, v in zip(paths, direct)])
-print("walked back to %d vertices, largest miss %.3g (a vertex whose geodesic grazes another vertex can miss)"
+print("walked back to %d vertices (all those with via -1), largest miss %.3g"
       % (direct.size, errors.max()))
 
 plt.figure(figsize=(5, 5))

@@ -32,7 +32,9 @@ class LogMap:
             named parameter and of the tool's ``--reference-direction``; ``reference``: its alias, kept). By
             default: at a vertex v, the edge from v to ``source(halfedge(v))`` of the library (the frame of
             ``straightest_geodesic()`` at a vertex); at a point of a face, F[face][0] -> F[face][1] (its frame
-            there), so that ``trace(c, log[v] / rho[v], rho[v])`` walks from the source c towards v.
+            there), so that ``trace(c, log[v] / rho[v], rho[v])`` ends at v (to 1e-9 of the largest distance)
+            for every vertex v with ``via[v] == -1`` (reached, not a source), exactly those whose geodesic passes
+            through no vertex; behind a vertex it need not.
         log_map_strict : bool, default False
             (The name of the C++ named parameter and of the tool's ``--log-map-strict``; ``strict``: its alias,
             kept.) False: behind a saddle or boundary vertex s, the coordinates go on from those of s, turned at s

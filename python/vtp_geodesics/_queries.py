@@ -165,8 +165,9 @@ class Queries:
             2D: in the tangent frame of the start, that of ``log_map()`` (at a vertex: angles from the edge to
             ``source(halfedge(v))``, counter-clockwise, scaled by 2 pi / the vertex's angle sum, pi / sum at the
             border; at a point of a face: x along F[face][0] -> F[face][1], y towards F[face][2]), so that
-            ``straightest_geodesic(c, direction=log[v] / rho[v], length=rho[v])`` walks towards v. 3D: projected
-            onto the tangent plane.
+            ``straightest_geodesic(c, direction=log[v] / rho[v], length=rho[v])`` ends at v where
+            ``log_map(c, return_via=True)`` gives ``via[v] == -1`` (its geodesic passes through no vertex). 3D:
+            projected onto the tangent plane.
         length : float >= 0, or one per start (n,)
         threads : int, default 0 (the solver's)
             The walks of a batch are shared among the threads.
