@@ -456,10 +456,10 @@ vtp_cli_test(trace_without_output 2 "" "" ERROR "--trace needs --path-output" --
 # the geodesic paths of --path-to, each from its target (the header of paths alone is that of the paths tests).
 set(trace_obj "${cli_dir}/trace")
 vtp_cli_test(trace_obj_header 0 "${trace_obj}.obj" "" LINES 8 SOURCE_LINE none
-             VALUES "0=# vtp_geodesics: 1 straightest geodesic (--trace), each from its start point; one 'l' element each|1=# 'l' element 1: straightest geodesic from vertex 0, direction (1, 1, 0) projected onto the tangent plane, length 0.5 (less if it reaches the border)|2=v 0 0 0|6=v 0.35355339059327373 0.35355339059327373 0|7=l 1 2 3 4 5"
+             VALUES "0=# vtp_geodesics: 1 straightest geodesic (--trace), each from its start point, one 'l' element each|1=# 'l' element 1: straightest geodesic from vertex 0, direction (1, 1, 0) projected onto the tangent plane, length 0.5 (less if it reaches the border)|2=v 0 0 0|6=v 0.35355339059327373 0.35355339059327373 0|7=l 1 2 3 4 5"
              "${cli_data}/plane_grid.off" --trace 0,1,1,0,0.5 --path-output "${trace_obj}.obj")
 vtp_cli_test(trace_obj_header_after_paths 0 "${trace_obj}.2.obj" "" LINES 28 SOURCE_LINE none
-             VALUES "0=# vtp_geodesics: 1 geodesic path, from the target to the source, then 2 straightest geodesics (--trace), each from its start point; one 'l' element each|1=# 'l' element 2: straightest geodesic from vertex 0, direction (1, 1, 0) projected onto the tangent plane, length 0.5 (less if it reaches the border)|2=# 'l' element 3: straightest geodesic from vertex 60, direction (0, 1, 0) projected onto the tangent plane, length 2 (less if it reaches the border)"
+             VALUES "0=# vtp_geodesics: 1 geodesic path, from the target to the source, then 2 straightest geodesics (--trace), each from its start point, one 'l' element each|1=# 'l' element 2: straightest geodesic from vertex 0, direction (1, 1, 0) projected onto the tangent plane, length 0.5 (less if it reaches the border)|2=# 'l' element 3: straightest geodesic from vertex 60, direction (0, 1, 0) projected onto the tangent plane, length 2 (less if it reaches the border)"
              "${cli_data}/plane_grid.off" --source 0 --path-to 120 --trace 0,1,1,0,0.5 --trace 60,0,1,0,2
              --path-output "${trace_obj}.2.obj")
 vtp_cli_test(paths_obj_header 0 "${trace_obj}.3.obj" "" LINES 13 SOURCE_LINE none
