@@ -16,6 +16,7 @@
 #ifndef VTP_DISTANCE_MATRIX_POLAR_ROWS_H
 #define VTP_DISTANCE_MATRIX_POLAR_ROWS_H
 
+#include <vtp_support/methods.h>
 #include <vtp_support/read_mesh.h>
 
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
@@ -99,12 +100,8 @@ void compute_polar_rows(const vtp_support::Input_mesh& input, const std::vector<
     sink(batch_rows[i], static_cast<const std::vector<std::int64_t>&>(indices),
          static_cast<const std::vector<double>&>(rho), static_cast<const std::vector<double>&>(theta));
   };
-#ifdef _OPENMP
-  solver.compute_each_polar_patch<CGAL::Parallel_tag>(batch_sources, radius, patch_sink,
-                                                      VP::number_of_threads((std::max)(threads, 1)));
-#else
-  solver.compute_each_polar_patch<CGAL::Sequential_tag>(batch_sources, radius, patch_sink);
-#endif
+  solver.compute_each_polar_patch<vtp_support::Rows_tag>(batch_sources, radius, patch_sink,
+                                                         VP::number_of_threads((std::max)(threads, 1)));
 
   // The other rows (sources cut by the repair, removed by it, or isolated), one run with several sources each.
   std::vector<double> d(input.mesh.number_of_vertices());

@@ -45,9 +45,6 @@
 
 #include <unistd.h> // isatty
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #ifndef VTP_GEODESICS_VERSION
 #define VTP_GEODESICS_VERSION "unknown"
@@ -56,16 +53,6 @@
 using namespace vtp_matrix;
 
 namespace {
-
-// The number of threads when none is asked for: OpenMP's default.
-int default_thread_count()
-{
-#ifdef _OPENMP
-  return omp_get_max_threads();
-#else
-  return 1;
-#endif
-}
 
 std::string number_text(double v)
 {
@@ -115,7 +102,7 @@ int run(Job& job, int argc, char** argv)
     args = parse_arguments(argc, argv);
     if(!args.help)
     {
-      read_mesh_input(args.mesh, input, args.threads > 0 ? args.threads : default_thread_count());
+      read_mesh_input(args.mesh, input, args.threads > 0 ? args.threads : vtp_support::default_threads());
       sources = parse_sources(args.sources, static_cast<std::int64_t>(input.file_vertices));
     }
   }
@@ -176,7 +163,7 @@ int run(Job& job, int argc, char** argv)
   method.method = args.method;
   method.lambda = args.lambda;
   method.max_distance = args.max_distance;  // +inf without --max-distance
-  const int threads = args.threads > 0 ? args.threads : default_thread_count();
+  const int threads = args.threads > 0 ? args.threads : vtp_support::default_threads();
   try
   {
     auto count_row = [&]() {

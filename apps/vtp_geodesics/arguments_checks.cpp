@@ -31,8 +31,8 @@ void check_sampling_arguments(const Arguments& a)
   if(a.number_of_sources() > 0)
     throw Tool_error("--farthest-points chooses the sources: it takes no --source nor --source-point");
   if(a.has_targets() || a.has_paths() || a.has_traces() || a.has_max_distance)
-    throw Tool_error("--farthest-points takes no --target, --target-point, --path-to, --path-to-point, --trace nor "
-                     "--max-distance");
+    throw Tool_error("--farthest-points takes no --target, --target-point, --path-to, --path-to-point, "
+                     "--straightest-geodesic nor --max-distance");
   if(a.check_cgal)
     throw Tool_error("--farthest-points takes no --check-cgal");
 }
@@ -86,9 +86,9 @@ void check_arguments(const Arguments& a)
   if(!a.target_output.empty() && !a.has_targets())
     throw Tool_error("--target-output needs --target or --target-point");
   if(!a.path_output.empty() && !a.has_paths() && !a.has_traces())
-    throw Tool_error("--path-output needs --path-to, --path-to-point or --trace");
+    throw Tool_error("--path-output needs --path-to, --path-to-point or --straightest-geodesic");
   if(a.has_traces() && a.path_output.empty())
-    throw Tool_error("--trace needs --path-output");
+    throw Tool_error("--straightest-geodesic (--trace) needs --path-output");
   if(a.through_pinches && (a.has_paths() || !a.target_points.empty() || a.farthest_points > 0 || a.check_cgal))
     throw Tool_error("--through-pinches takes no --path-to, --path-to-point, --target-point, --farthest-points nor "
                      "--check-cgal (whose reference runs on the cut surface)");

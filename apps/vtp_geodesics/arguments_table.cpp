@@ -40,7 +40,7 @@ std::string file_name(const std::string& option, const std::string& s)
   return s;
 }
 
-// "V,X,Y,Z,LENGTH" of --trace: a vertex, a direction (finite, not zero) and a length (finite, >= 0).
+// "V,X,Y,Z,LENGTH" of --straightest-geodesic (or its alias --trace): a vertex, a direction (finite, not zero) and a length (finite, >= 0).
 Arguments::Trace parse_trace(const std::string& option, const std::string& s)
 {
   const std::vector<std::string> parts = vtp_support::split(s, ',');
@@ -133,7 +133,7 @@ const vtp_support::Option_table<Arguments>& option_table()
     { "--path-output", "FILE",
       "write the paths (the --path-to vertices in their list order, then\n"
       "each --path-to-point), from the target to the source, then the\n"
-      "--trace polylines, from their start; by name:\n"
+      "--straightest-geodesic polylines, from their start; by name:\n"
       "  .obj: OBJ 'v' lines (the points of all paths), then one 'l'\n"
       "        line per path (a path of one point: 'l i i')\n"
       "  anything else: CGAL's polylines text, one path per line,\n"
@@ -142,13 +142,16 @@ const vtp_support::Option_table<Arguments>& option_table()
       "A path to a source itself is the single point. A vertex or point\n"
       "that no source reaches (or beyond --max-distance) is an error",
       [](Arguments& a, const std::string& n, const std::string& v) { a.path_output = file_name(n, v); } },
-    { "--trace", "V,X,Y,Z,LENGTH",
+    { "--straightest-geodesic", "V,X,Y,Z,LENGTH",
       "straightest geodesic (the exp map) from vertex V (file order) in\n"
       "the direction (X,Y,Z), projected onto the tangent plane at V,\n"
       "for LENGTH (>= 0): straight across the faces, through a vertex\n"
       "with half its angle sum on each side, ending on the border if it\n"
       "gets there; may be repeated. The polylines go to --path-output,\n"
       "after the paths, from V to the end",
+      [](Arguments& a, const std::string& n, const std::string& v) { a.traces.push_back(parse_trace(n, v)); } },
+    { "--trace", "V,X,Y,Z,LENGTH",
+      "the same as --straightest-geodesic (its former name, kept)",
       [](Arguments& a, const std::string& n, const std::string& v) { a.traces.push_back(parse_trace(n, v)); } },
     { "--farthest-points", "K",
       "farthest-point sampling: takes K sample vertices, each the vertex\n"

@@ -92,8 +92,8 @@ void write_paths(std::ostream& os, Path_format format, const std::vector<std::ve
       text += "# vtp_geodesics: ";
       if(geodesic_paths > 0)
         text += count(geodesic_paths, "geodesic path") + ", from the target to the source, then ";
-      text += count(traces.size(), "straightest geodesic") + " (--trace), each from its start point, one 'l' element"
-              " each\n";
+      text += count(traces.size(), "straightest geodesic") + " (--straightest-geodesic), each from its start point, one"
+              " 'l' element each\n";
       for(std::size_t k = 0; k < traces.size(); ++k)
       {
         text += "# 'l' element " + std::to_string(geodesic_paths + k + 1) + ": straightest geodesic from vertex "

@@ -143,8 +143,8 @@ Request make_request(const Arguments& args, const vtp_support::Method_info& meth
   for(std::size_t k = 0; k < args.traces.size(); ++k)
   {
     Run_request::Trace t;
-    t.name = "--trace " + std::to_string(k) + " (from vertex " + std::to_string(args.traces[k].vertex) + ")";
-    check_vertices(std::vector<std::size_t>(1, args.traces[k].vertex), input, "--trace");
+    t.name = "--straightest-geodesic " + std::to_string(k) + " (from vertex " + std::to_string(args.traces[k].vertex) + ")";
+    check_vertices(std::vector<std::size_t>(1, args.traces[k].vertex), input, "--straightest-geodesic");
     const std::vector<vtp_support::Vertex_index> copies = input.mesh_vertices_of(args.traces[k].vertex);
     if(copies.empty())
       throw Tool_error(t.name + ": the vertex is in no face of the mesh");

@@ -23,11 +23,8 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <vtp_support/join_copies.h>
+#include <vtp_support/methods.h>
 #include <vtp_support/shortest_path_reference.h>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -207,9 +204,8 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
   r.mesh_vertices = solver.number_of_vertices();
   r.mesh_faces = solver.number_of_faces();
   r.preprocessing_seconds = solver.preprocessing_seconds();
-#ifdef _OPENMP
-  r.preprocessing_threads = request.threads > 0 ? request.threads : omp_get_max_threads();
-#endif
+  r.preprocessing_threads = !vtp_support::rows_on_threads ? 1
+                            : request.threads > 0 ? request.threads : vtp_support::default_threads();
   r.mean_edge_length = solver.mean_edge_length();
   r.anisotropy = solver.anisotropy();
   if(request.farthest_points > 0)

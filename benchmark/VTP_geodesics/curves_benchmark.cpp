@@ -133,7 +133,7 @@ int main(int argc, char** argv)
   VG::Geodesic_curves_report report;
   t0 = std::chrono::steady_clock::now();
   const double c0 = cpu_seconds();
-  const auto curves = VG::geodesic_isolines(solver, levels, VG::parameters::exact_refinement(refine), &report);
+  const auto curves = VG::geodesic_isolines(solver, levels, VG::parameters::exact_refinement(refine).curves_report(report));
   const double extraction = seconds_since(t0), extraction_cpu = cpu_seconds() - c0;
   std::cout << argv[1] << ": " << mesh.number_of_vertices() << " vertices, " << mesh.number_of_faces() << " faces\n"
             << "distance run " << plain << " s, with the record (" << record << ") " << recorded << " s: "
@@ -199,7 +199,7 @@ int main(int argc, char** argv)
               << " pieces, " << solver.statistics().field_bytes / 1e6 << " MB\n";
     VG::Geodesic_curves_report border_report;
     t0 = std::chrono::steady_clock::now();
-    const auto borders = VG::geodesic_cell_borders(solver, VG::parameters::default_values(), &border_report);
+    const auto borders = VG::geodesic_cell_borders(solver, VG::parameters::curves_report(border_report));
     const double border_time = seconds_since(t0);
     std::size_t border_points = 0;
     for(const auto& b : borders)

@@ -2,6 +2,8 @@
 
 #include "vtp_benchmark.h"
 
+#include <vtp_support/statistics.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -39,6 +41,20 @@ bool find_value(const std::string& text, const std::string& key, std::string& va
   }
   return false;
 }
+
+// A count printed as name=N sets `field` (the counts only: the other statistics an external program does not have).
+void read_count(const std::string& text, const char* name, std::size_t& field, bool& found)
+{
+  std::string value;
+  if(find_value(text, name, value))
+  {
+    field = std::strtoull(value.c_str(), nullptr, 10);
+    found = true;
+  }
+}
+template <class T>
+void read_count(const std::string&, const char*, T&, bool&)
+{}
 
 } // namespace
 
@@ -83,13 +99,10 @@ Run_result run_external(const std::string& mesh_file, std::size_t source, std::s
   result.header.preprocessing_seconds = nan_value;
   if(find_value(text, "cpu_seconds", value))
     result.header.cpu_seconds = std::strtod(value.c_str(), nullptr);
-  if(find_value(text, "windows_propagated", value))
-  {
-    result.statistics.windows_propagated = std::strtoull(value.c_str(), nullptr, 10);
-    result.has_statistics = true;
-  }
-  if(find_value(text, "windows_created", value))
-    result.statistics.windows_created = std::strtoull(value.c_str(), nullptr, 10);
+  // The counts it prints under the names of the library's statistics (for example windows_propagated=N).
+  vtp_support::for_each_statistic(result.statistics, [&](const char* name, auto& field, vtp_support::Statistic_unit) {
+    read_count(text, name, field, result.has_statistics);
+  });
   if(wants_output)
   {
     std::ifstream in(output_file);

@@ -226,7 +226,7 @@ int main(int argc, char** argv)
   const double isoline_time = cpu_seconds() - c0;
   c0 = cpu_seconds();
   VG::Geodesic_curves_report border_report;
-  const auto borders = VG::geodesic_cell_borders(solver, VG::parameters::default_values(), &border_report);
+  const auto borders = VG::geodesic_cell_borders(solver, VG::parameters::curves_report(border_report));
   const double border_time = cpu_seconds() - c0;
   std::vector<Solver::Face_location> at;
   std::vector<double> level_of;

@@ -80,7 +80,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
 
 } // namespace
 
-int default_threads() { return CGAL::VTP_geodesics::internal::number_of_threads(0); }
+int default_threads() { return vtp_support::default_threads(); }
 
 bool file_to_answer(const std::string& file, std::size_t source, int threads, vtp_support::Stage_seconds& stages)
 {

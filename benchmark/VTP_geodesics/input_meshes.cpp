@@ -11,7 +11,7 @@
 
 #include <vtp_support/midpoint_subdivision.h>
 
-#include <CGAL/VTP_geodesics/internal/Morton_code.h>
+#include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
@@ -39,33 +39,25 @@ namespace {
 
 std::string base_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
-// Renumbers the vertices of `mesh` (no garbage) along a Morton curve of their positions, vertex 0 first,
-// and orders the faces by their least new vertex index.
+// Renumbers the vertices of `mesh` (no garbage) in the order in which the solver stores them (along a Morton
+// curve of their positions: Geodesic_distance_solver::vertices_in_storage_order()), vertex 0 first, and orders
+// the faces by their least new vertex index.
 void reorder_morton(Mesh& mesh)
 {
   const std::size_t n = mesh.number_of_vertices();
-  CGAL::Bbox_3 box;
-  for(Mesh::Vertex_index v : mesh.vertices())
-    box += mesh.point(v).bbox();
-  typedef CGAL::VTP_geodesics::internal::Morton_code Morton_code;
-  const double size = (std::max)({ box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin(), 1e-300 });
-  const double lo[3] = { box.xmin(), box.ymin(), box.zmin() };
-  std::vector<std::pair<std::uint64_t, std::uint32_t> > keys;
-  keys.reserve(n);
-  for(Mesh::Vertex_index v : mesh.vertices())
-  {
-    const auto& p = mesh.point(v);
-    const double xyz[3] = { p.x(), p.y(), p.z() };
-    const std::uint64_t key = Morton_code::of(xyz, lo, Morton_code::cells / size);
-    keys.emplace_back(std::uint32_t(v) == 0 ? 0 : key + 1, std::uint32_t(v));
-  }
-  std::sort(keys.begin(), keys.end());
   std::vector<std::size_t> new_index(n);
   std::vector<Mesh::Point> points(n);
-  for(std::size_t i = 0; i < n; ++i)
   {
-    new_index[keys[i].second] = i;
-    points[i] = mesh.point(Mesh::Vertex_index(keys[i].second));
+    const CGAL::VTP_geodesics::Geodesic_distance_solver<Mesh> solver(mesh);
+    std::size_t next = 1;
+    for(Mesh::Vertex_index v : solver.vertices_in_storage_order())
+    {
+      const std::size_t i = std::size_t(v) == 0 ? 0 : next++;
+      new_index[std::size_t(v)] = i;
+      points[i] = mesh.point(v);
+    }
+    if(next != n)
+      throw Tool_error("--morton: the solver stores " + std::to_string(next) + " of " + std::to_string(n) + " vertices");
   }
   std::vector<std::array<std::size_t, 3> > triangles;
   triangles.reserve(mesh.number_of_faces());

@@ -141,7 +141,8 @@ int main(int argc, char** argv)
 #endif
   std::cout << "peak live windows " << st.peak_live_windows << " (" << double(st.peak_live_windows) / double(n)
             << " per vertex), window pool peak " << st.peak_window_bytes << " bytes ("
-            << double(st.peak_window_bytes) / double(n) << " per vertex), sizeof(Window) "
-            << sizeof(CGAL::VTP_geodesics::internal::Window) << "\n";
+            << double(st.peak_window_bytes) / double(n) << " per vertex, "
+            << double(st.peak_window_bytes) / double((std::max)(st.peak_live_windows, std::size_t(1)))
+            << " per live window at the peak)\n";
   return 0;
 }

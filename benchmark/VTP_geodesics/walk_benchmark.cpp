@@ -19,6 +19,7 @@
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
 
 #include <vtp_support/command_line.h>
+#include <vtp_support/methods.h>
 
 #include <algorithm>
 #include <array>
@@ -142,14 +143,11 @@ int main(int argc, char** argv)
           const double t0 = now(), c0 = cpu_now();
           if(c == 0)
             walks = solver.straightest_geodesics(starts, directions, lengths);
-#ifdef _OPENMP
-          else
-            walks = solver.straightest_geodesics<CGAL::Parallel_tag>(
-              starts, directions, lengths, VP::number_of_threads(c == 1 ? 1 : args.threads));
-#else
-          else
+          else if(!vtp_support::rows_on_threads)
             continue;
-#endif
+          else
+            walks = solver.straightest_geodesics<vtp_support::Rows_tag>(
+              starts, directions, lengths, VP::number_of_threads(c == 1 ? 1 : args.threads));
           best[std::size_t(c)] = (std::min)(best[std::size_t(c)], now() - t0);
           best_cpu[std::size_t(c)] = (std::min)(best_cpu[std::size_t(c)], cpu_now() - c0);
           if(c == 0 && r == 0)

@@ -19,6 +19,7 @@
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/Geodesic_traits_3.h>
 #include <CGAL/VTP_geodesics/Geodesic_distance_solver.h>
+#include <CGAL/VTP_geodesics/Surface_polyline.h>
 #include <CGAL/VTP_geodesics/Straightest_geodesic.h>
 #include <CGAL/VTP_geodesics/Polar_patches.h>
 #include <CGAL/VTP_geodesics/geodesic_distances.h>

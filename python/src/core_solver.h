@@ -90,7 +90,7 @@ typedef vtp_support::Point_3 Point_3;
 typedef Mesh::Vertex_index Vertex_index;
 typedef Mesh::Face_index Face_index;
 typedef Mesh::Halfedge_index Halfedge_index;
-typedef std::pair<Face_index, std::array<double, 3> > Face_location;
+typedef VTP::Face_location<Face_index> Face_location;
 typedef VTP::Geodesic_distance_solver<Mesh> Solver;
 typedef py::array_t<double, py::array::c_style | py::array::forcecast> Double_array;
 typedef py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> Index_array;
@@ -132,6 +132,13 @@ void forget_read();
 // returned n vertices and the m faces f; the time since t0 less the reader's checks and repairs is the reading.
 void remember_other_read(std::size_t n, const std::int64_t* f, std::size_t m, const vtp_support::Input_mesh& input,
                          std::chrono::steady_clock::time_point t0);
+
+// The sources of a query as the caller gives them: vertices of V (`sources`), then points of the surface (`points`).
+struct Caller_sources
+{
+  std::vector<std::size_t> vertices;
+  std::vector<Face_location> points;
+};
 
 // Seconds since t0.
 double seconds_since(std::chrono::steady_clock::time_point t0);
@@ -261,6 +268,10 @@ private:
   std::size_t vertex_of(std::int64_t i, const char* what) const;         // checked, a vertex of V
   std::vector<std::size_t> vertices_of(const Index_array& a, const char* what) const;
   std::vector<Face_location> locations_of(const Index_array& faces, const Double_array& bary, const char* what) const;
+  // The sources of a query (the one preamble of distances(), path(), log_map() and the curves): the vertices of
+  // `sources` and the points (point_faces, point_bary), checked; throws ValueError if there is none.
+  Caller_sources sources_of(const Index_array& sources, const Index_array& point_faces,
+                            const Double_array& point_bary) const;
   Face_location location_of(std::int64_t face, const Double_array& bary, const char* what) const;
   std::array<int, 3> corner_order(Face_index f) const;
   std::array<double, 3> from_user_barycentric(Face_index f, const std::array<double, 3>& b) const;

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace vtp_python {
 
@@ -27,10 +28,9 @@ std::vector<std::int64_t> Core_solver::curve_sources(const Index_array& sources,
                                                      std::vector<Vertex_index>& mesh_sources,
                                                      std::vector<Face_location>& points) const
 {
-  const std::vector<std::size_t> source_vertices = vertices_of(sources, "sources");
-  points = locations_of(point_faces, point_bary, "points");
-  if(source_vertices.empty() && points.empty())
-    value_error("no source: give at least one vertex in sources or one point in points");
+  Caller_sources caller = sources_of(sources, point_faces, point_bary);
+  const std::vector<std::size_t>& source_vertices = caller.vertices;
+  points = std::move(caller.points);
   if(m_through_pinches && !m_repairs.empty())
     value_error("no curves through the vertices that the repair split (the solver was made with through_pinches=True)");
   std::vector<std::int64_t> label_of;

@@ -46,6 +46,17 @@ std::vector<std::size_t> Core_solver::vertices_of(const Index_array& a, const ch
   return r;
 }
 
+Caller_sources Core_solver::sources_of(const Index_array& sources, const Index_array& point_faces,
+                                       const Double_array& point_bary) const
+{
+  Caller_sources r;
+  r.vertices = vertices_of(sources, "sources");
+  r.points = locations_of(point_faces, point_bary, "points");
+  if(r.vertices.empty() && r.points.empty())
+    value_error("no source: give at least one vertex in sources or one point in points");
+  return r;
+}
+
 // The points (faces[i], bary[i]) of faces (k,) and bary (k, 3).
 std::vector<Face_location> Core_solver::locations_of(const Index_array& faces, const Double_array& bary,
                                                      const char* what) const

@@ -73,10 +73,9 @@ py::tuple Core_solver::log_map(const Index_array& sources, const Index_array& po
     value_error("log_map: method must be \"vtp\" or \"pvtp\", got \"" + method_name
                 + "\" (the approximate methods and the virtual sources carry no direction)");
   check_limit(max_distance);
-  const std::vector<std::size_t> source_vertices = vertices_of(sources, "sources");
-  const std::vector<Face_location> source_points = locations_of(point_faces, point_bary, "points");
-  if(source_vertices.empty() && source_points.empty())
-    value_error("no source: give at least one vertex in sources or one point in points");
+  const Caller_sources caller = sources_of(sources, point_faces, point_bary);
+  const std::vector<std::size_t>& source_vertices = caller.vertices;
+  const std::vector<Face_location>& source_points = caller.points;
   const bool has_reference = reference.size() != 0;
   if(has_reference && reference.size() != 3)
     value_error("reference must be a 3D direction (3,)");

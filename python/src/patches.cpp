@@ -14,6 +14,8 @@
 #include "core_solver.h"
 #include "interrupt.h"
 
+#include <vtp_support/methods.h>
+
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 
@@ -118,11 +120,7 @@ py::tuple Core_solver::polar_patches(const Index_array& centres, const Index_arr
         return;
       auto offset_sink = [&](std::size_t i, const auto&, const std::vector<std::uint32_t>& v,
                              const std::vector<double>& r, const std::vector<double>& t) { sink(offset + i, v, r, t); };
-#ifdef _OPENMP
-      m_solver->compute_each_polar_patch<CGAL::Parallel_tag>(items, radius, offset_sink, np);
-#else
-      m_solver->compute_each_polar_patch<CGAL::Sequential_tag>(items, radius, offset_sink, np);
-#endif
+      m_solver->compute_each_polar_patch<vtp_support::Rows_tag>(items, radius, offset_sink, np);
     };
     try
     {

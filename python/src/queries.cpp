@@ -22,7 +22,6 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
-#include <iterator>
 
 namespace vtp_python {
 
@@ -35,11 +34,10 @@ py::tuple Core_solver::distances(const Index_array& sources, const Index_array& 
 {
   const vtp_support::Method_info& method = method_named(method_name, lam);
   check_limit(max_distance);
-  const std::vector<std::size_t> source_vertices = vertices_of(sources, "sources");
-  const std::vector<Face_location> source_points = locations_of(point_faces, point_bary, "points");
+  const Caller_sources caller = sources_of(sources, point_faces, point_bary);
+  const std::vector<std::size_t>& source_vertices = caller.vertices;
+  const std::vector<Face_location>& source_points = caller.points;
   const std::vector<std::size_t> target_vertices = vertices_of(targets, "targets");
-  if(source_vertices.empty() && source_points.empty())
-    value_error("no source: give at least one vertex in sources or one point in points");
   if(keep_field)
   {
     if(method.approximate || method.virtual_sources)
@@ -227,10 +225,9 @@ py::tuple Core_solver::path(std::int64_t target_vertex, std::int64_t target_face
                             const Double_array& point_bary, double max_distance)
 {
   check_limit(max_distance);
-  const std::vector<std::size_t> source_vertices = vertices_of(sources, "sources");
-  const std::vector<Face_location> source_points = locations_of(point_faces, point_bary, "points");
-  if(source_vertices.empty() && source_points.empty())
-    value_error("no source: give at least one vertex in sources or one point in points");
+  const Caller_sources caller = sources_of(sources, point_faces, point_bary);
+  const std::vector<std::size_t>& source_vertices = caller.vertices;
+  const std::vector<Face_location>& source_points = caller.points;
   if(m_through_pinches && !m_repairs.empty())
     value_error("no path: paths are not traced through the vertices that the repair split (the solver was made "
                 "with through_pinches=True)");
@@ -250,8 +247,7 @@ py::tuple Core_solver::path(std::int64_t target_vertex, std::int64_t target_face
     append_copies(s, mesh_sources);
   if(mesh_sources.empty() && source_points.empty())
     value_error("no path: the source vertices are in no face of the mesh (the repair removed them)");
-  std::vector<Point_3> points;
-  std::vector<Face_location> locations;
+  Solver::Polyline path;
   double distance = infinity;
   {
     py::gil_scoped_release release;
@@ -277,17 +273,17 @@ py::tuple Core_solver::path(std::int64_t target_vertex, std::int64_t target_face
           distance = m_solver->target_distance(k);
           best = live[k];
         }
-      m_solver->shortest_path_points(best, std::back_inserter(points));
-      m_solver->shortest_path_locations(best, std::back_inserter(locations));
+      path = m_solver->shortest_path(best);
     }
     else
     {
       m_solver->compute<CGAL::Sequential_tag>(no_map, np.targets(tl));
       distance = m_solver->target_distance(0);
-      m_solver->shortest_path_points(tl, std::back_inserter(points));
-      m_solver->shortest_path_locations(tl, std::back_inserter(locations));
+      path = m_solver->shortest_path(tl);
     }
   }
+  const std::vector<Point_3>& points = path.points;
+  const std::vector<Face_location>& locations = path.locations;
   const std::size_t k = points.size();
   py::array_t<double> P({ static_cast<py::ssize_t>(k), py::ssize_t(3) });
   py::array_t<std::int64_t> PF(static_cast<py::ssize_t>(locations.size()));

@@ -21,9 +21,6 @@
 #include <chrono>
 #include <cmath>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace vtp_python {
 
@@ -199,11 +196,7 @@ std::string Core_solver::build_mesh(const double* v, std::size_t n, const std::i
 int Core_solver::threads_or_default(int threads) const
 {
   const int t = threads > 0 ? threads : m_threads;
-#ifdef _OPENMP
-  return t > 0 ? t : omp_get_max_threads();
-#else
-  return t > 0 ? t : 1;
-#endif
+  return t > 0 ? t : vtp_support::default_threads();
 }
 
 void Core_solver::set_sources(const std::vector<Vertex_index>& vertices, const std::vector<Face_location>& points)

@@ -11,6 +11,8 @@
 
 #include "core_solver.h"
 
+#include <vtp_support/methods.h>
+
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 
@@ -97,13 +99,8 @@ py::tuple Core_solver::trace(const Index_array& start_vertices, const Index_arra
     py::gil_scoped_release release;
     std::lock_guard<std::mutex> lock(m_mutex);
     const auto np = VTP::parameters::number_of_threads(threads_or_default(threads));
-#ifdef _OPENMP
-    walks = dim == 2 ? m_solver->straightest_geodesics<CGAL::Parallel_tag>(starts, d2, len, np)
-                     : m_solver->straightest_geodesics<CGAL::Parallel_tag>(starts, d3, len, np);
-#else
-    walks = dim == 2 ? m_solver->straightest_geodesics(starts, d2, len, np)
-                     : m_solver->straightest_geodesics(starts, d3, len, np);
-#endif
+    walks = dim == 2 ? m_solver->straightest_geodesics<vtp_support::Rows_tag>(starts, d2, len, np)
+                     : m_solver->straightest_geodesics<vtp_support::Rows_tag>(starts, d3, len, np);
   }
   std::size_t total = 0;
   for(const Walk& w : walks)

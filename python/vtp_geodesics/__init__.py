@@ -6,6 +6,7 @@
     d = solver.distances(0)                              # float64 (n,): distances from vertex 0
     d, labels = solver.distances([0, 99], return_labels=True)
     path = solver.path(500, sources=0)                   # (k, 3) points, from the source to vertex 500
+                                                         # (arguments after the first are keywords)
     M = solver.matrix(max_distance=0.1)                  # scipy.sparse.csr_matrix, rows on all cores
     fps = solver.farthest_point_sampling(100)            # samples, radii, distances, labels (Voronoi cells)
 
@@ -22,12 +23,15 @@ the packages of the same names.
 # (python/src/).
 from . import _core
 from ._arguments import methods, recommended_lambda
+from ._curves import CellAreas, Curve
 from ._io import read_mesh
 from ._patches import PolarPatches
+from ._queries import StraightestGeodesic, SurfacePolyline
 from ._sampling import FarthestPointSamples
 from ._solver import Solver
 
-__all__ = ["Solver", "FarthestPointSamples", "PolarPatches", "read_mesh", "methods", "recommended_lambda"]
+__all__ = ["Solver", "FarthestPointSamples", "PolarPatches", "SurfacePolyline", "Curve", "CellAreas",
+           "StraightestGeodesic", "read_mesh", "methods", "recommended_lambda"]
 
 # the public names are vtp_geodesics.<name> (in help(), reprs and pickles), wherever they are defined
-Solver.__module__ = read_mesh.__module__ = __name__
+Solver.__module__ = read_mesh.__module__ = Curve.__module__ = __name__

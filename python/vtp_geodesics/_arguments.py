@@ -36,6 +36,17 @@ def source_vertices(sources, points):
     return vertex_list(sources, "sources")
 
 
+def query_sources(sources, points, locate):
+    """The sources of a query, checked (the one preamble of distances(), path(), log_map() and the curves): the
+    vertices of ``sources`` int64 (k,), and the ``points`` as faces int64 (m,) and barycentric float64 (m, 3).
+    Raises ValueError if there is none."""
+    src = source_vertices(sources, points)
+    pf, pb = surface_points(points, locate)
+    if src.size == 0 and pf.size == 0:
+        raise ValueError("no source: sources is empty and no points are given")
+    return src, pf, pb
+
+
 def as_float_array(x, name):
     try:
         a = _np.asarray(x)
@@ -228,3 +239,13 @@ def trace_directions(direction, length, n, batch):
         raise ValueError("length must be a number%s, got shape %s" % (" or one per start (n,)" if batch else "",
                                                                     length_array.shape))
     return _np.ascontiguousarray(d), length_array
+
+
+def merge_alias(value, default, alias, name, alias_name):
+    """The value of a keyword argument that has an old name kept as an alias (``alias_name``, None when not given):
+    the alias's value if it is given (and the new name is not), else ``value``."""
+    if alias is None:
+        return value
+    if value is not default and not (value is None and default is None):
+        raise TypeError("%s and its alias %s are both given: give one" % (name, alias_name))
+    return alias

@@ -2,11 +2,55 @@
 manual's page on curves): from one run of the given sources, or from the field that ``distances(...,
 keep_field=True)`` kept (the ``field_*`` methods)."""
 
+import collections as _collections
 import math as _math
 
 import numpy as _np
 
-from ._arguments import SOURCE_DEFAULT, check_float, source_vertices, surface_points
+from ._arguments import SOURCE_DEFAULT, check_float, query_sources
+
+
+class Curve(_collections.namedtuple("Curve", ["points", "faces", "barycentric", "closed", "level", "cells"],
+                                    module="vtp_geodesics")):
+    """A curve of ``Solver.isolines()`` or ``Solver.cell_borders()`` (the C++ ``Geodesic_curve``, a surface
+    polyline: points and their face locations).
+
+    points : ndarray float64 (k, 3)
+        The points of the curve, in order. Two consecutive points lie in a common face; a closed curve does not
+        repeat its first point.
+    faces, barycentric : ndarray int64 (k,), float64 (k, 3)
+        The same points as face locations (barycentric coordinates with respect to F[face]), as ``path()`` gives
+        them.
+    closed : bool
+        Whether the last point is joined to the first.
+    level : float
+        The level of an isoline (``nan`` for a border).
+    cells : (int, int) or None
+        The two source indices (i < j) of a border (``None`` for an isoline).
+
+    ``curve["points"]`` (the keys of the dicts of versions before 1.x) is kept as a documented alias of
+    ``curve.points``, for every field above.
+    """
+    __slots__ = ()
+
+    def __getitem__(self, key):
+        if isinstance(key, str):
+            if key not in self._fields:
+                raise KeyError(key)
+            return getattr(self, key)
+        return super().__getitem__(key)
+
+
+#: The result of ``Solver.cell_areas()`` and ``Solver.field_cell_areas()``.
+CellAreas = _collections.namedtuple("CellAreas", ["areas", "uncertainty"], module="vtp_geodesics")
+CellAreas.__doc__ = """The result of ``Solver.cell_areas()``: the areas of the geodesic Voronoi cells of the sources.
+
+areas : ndarray float64 (s,)
+    One per source, in the order of the labels of ``distances(..., return_labels=True)``.
+uncertainty : ndarray float64 (s,)
+    A bound of ``|areas[i] - the true area of cell i|`` (the one meaning of the C++ ``Voronoi_cell_areas``): the
+    chord tolerance times the length of the cell's border, which holds where the borders are exact.
+"""
 
 
 def _levels(levels):
@@ -27,7 +71,7 @@ def _options(chord_tolerance, exact_refinement):
 
 
 class Curves:
-    def isolines(self, levels, sources=SOURCE_DEFAULT, *, points=None, step=None, chord_tolerance=None,
+    def isolines(self, levels, *, sources=SOURCE_DEFAULT, points=None, step=None, chord_tolerance=None,
                  exact_refinement=0, return_locations=False):
         """The isolines of the distance from the sources at ``levels``, as connected curves on the exact
         distance inside the faces (not a linear interpolation of vertex values).
@@ -45,14 +89,14 @@ class Curves:
         exact_refinement : int, default 0
             Exact runs with the curve points as targets, each moving the points onto their level.
         return_locations : bool, default False
-            Also return each curve's face locations.
+            Kept for compatibility: every ``Curve`` now holds its face locations.
 
         Returns
         -------
-        list of dict
-            One per curve: ``points`` (k, 3), ``closed`` (bool), ``level``; with ``return_locations``,
-            ``faces`` (k,) int64 and ``barycentric`` (k, 3). Two consecutive points lie in a common face; a
-            closed curve does not repeat its first point.
+        list of Curve
+            One per curve (a namedtuple: ``points`` (k, 3), ``faces`` (k,), ``barycentric`` (k, 3), ``closed``,
+            ``level``, ``cells`` None). Two consecutive points lie in a common face; a closed curve does not repeat
+            its first point.
         """
         if levels is None:
             s = check_float(step, "step") if step is not None else _math.nan
@@ -67,8 +111,9 @@ class Curves:
 
     def cell_borders(self, sources=SOURCE_DEFAULT, *, points=None, chord_tolerance=None, return_locations=False):
         """The borders between the geodesic Voronoi cells of the sources (vertices of ``sources``, then
-        ``points``), as connected curves: a list of dict with ``points`` (k, 3), ``closed``, ``cells`` (i, j)
-        (the two source indices, i < j) and, with ``return_locations``, ``faces`` and ``barycentric``. From one
+        ``points``), as connected curves: a list of ``Curve`` (``points`` (k, 3), ``faces``, ``barycentric``,
+        ``closed``, ``cells`` (i, j) the two source indices, i < j, ``level`` nan; ``return_locations`` is kept for
+        compatibility, the locations are always there). From one
         exact run that keeps its field: a border point is where the exact distances of its two sources are
         equal (but for the junctions of three cells, see the manual's page on curves)."""
         return self._curves(_np.zeros(0), True, sources, points, chord_tolerance, 0, return_locations)
@@ -90,13 +135,15 @@ class Curves:
             One per source, in the order of ``distances(..., return_labels=True)``'s labels (the ``sources``
             vertices, then the ``points``). They add up to the area of the faces whose corners are all reached.
         uncertainty : ndarray float64 (s,)
-            ``chord_tolerance`` times the length of the cell's border: a bound of the area between the chords
-            and the borders (the areas are exact where the borders are straight in their faces, as on a
-            plane).
+            ``chord_tolerance`` times the length of the cell's border: a bound of |``areas[i]`` - the true area|
+            (the area between the chords and the borders; the areas are exact where the borders are straight in
+            their faces, as on a plane).
+
+        The two arrays come as a ``CellAreas`` namedtuple (``areas, uncertainty = ...`` still works).
         """
         tol, _ = _options(chord_tolerance, 0)
         src, pf, pb = self._sources(sources, points)
-        return self._core.cell_areas(src, pf, pb, tol, False)
+        return CellAreas(*self._core.cell_areas(src, pf, pb, tol, False))
 
     def field_isolines(self, levels, *, chord_tolerance=None, exact_refinement=0, return_locations=False):
         """The isolines at ``levels`` (chosen after the run) of the field that ``distances(..., keep_field=True)``
@@ -115,13 +162,10 @@ class Curves:
         uncertainty, as ``cell_areas()``, without a new propagation."""
         tol, _ = _options(chord_tolerance, 0)
         empty = _np.zeros(0, dtype=_np.int64)
-        return self._core.cell_areas(empty, empty, _np.zeros((0, 3)), tol, True)
+        return CellAreas(*self._core.cell_areas(empty, empty, _np.zeros((0, 3)), tol, True))
 
     def _sources(self, sources, points):
-        src = source_vertices(sources, points)
-        pf, pb = surface_points(points, self._core.locate)
-        if src.size == 0 and pf.size == 0:
-            raise ValueError("no source: sources is empty and no points are given")
+        src, pf, pb = query_sources(sources, points, self._core.locate)
         return src, pf, pb
 
     def _curves(self, levels, borders, sources, points, chord_tolerance, exact_refinement, return_locations,
@@ -132,15 +176,8 @@ class Curves:
             pb = _np.zeros((0, 3))
         else:
             src, pf, pb = self._sources(sources, points)
-        out = []
-        for P, F, B, closed, level, i, j in self._core.curves(src, pf, pb, levels, borders, tol, refine, from_field):
-            c = {"points": P, "closed": bool(closed)}
-            if borders:
-                c["cells"] = (int(i), int(j))
-            else:
-                c["level"] = float(level)
-            if return_locations:
-                c["faces"] = F
-                c["barycentric"] = B
-            out.append(c)
-        return out
+        del return_locations  # (the locations are always returned)
+        return [Curve(P, F, B, bool(closed), _math.nan if borders else float(level),
+                      (int(i), int(j)) if borders else None)
+                for P, F, B, closed, level, i, j in self._core.curves(src, pf, pb, levels, borders, tol, refine,
+                                                                        from_field)]

@@ -5,15 +5,15 @@ import math as _math
 
 import numpy as _np
 
-from ._arguments import (SOURCE_DEFAULT, as_float_array, check_float, check_method, check_threads, source_vertices,
-                         surface_points)
+from ._arguments import (SOURCE_DEFAULT, as_float_array, check_float, check_method, check_threads, merge_alias,
+                         query_sources)
 
 
 class LogMap:
     """The log map of ``Solver`` (which holds the compiled solver ``_core``)."""
 
-    def log_map(self, sources=SOURCE_DEFAULT, *, points=None, max_distance=_math.inf, reference=None, strict=False,
-                return_via=False, method="vtp", threads=0):
+    def log_map(self, sources=SOURCE_DEFAULT, *, points=None, max_distance=_math.inf, reference_direction=None,
+                log_map_strict=False, return_via=False, method="vtp", threads=0, reference=None, strict=None):
         """Geodesic polar coordinates (the discrete logarithmic map) around the nearest source: for every vertex,
         ``rho * (cos theta, sin theta)``, rho its exact geodesic distance and theta the angle at which its
         geodesic leaves its nearest source, in that source's tangent frame. One propagation (no trace-back of
@@ -27,14 +27,16 @@ class LogMap:
             Sources at points of the surface, as in ``distances()``.
         max_distance : float, default inf
             Distance limit (local patches): vertices farther get ``inf``; the work is that of the region within.
-        reference : array-like (3,), optional
-            The direction of theta = 0, projected onto the tangent plane of each source. By default: at a
-            vertex v, the edge from v to ``source(halfedge(v))`` of the library (the frame of ``trace()`` at a
-            vertex); at a point of a face, F[face][0] -> F[face][1] (the frame of ``trace()`` there), so that
-            ``trace(c, log[v] / rho[v], rho[v])`` walks from the source c towards v.
-        strict : bool, default False
-            False: behind a saddle or boundary vertex s, the coordinates go on from those of s, turned at s as
-            a straightest geodesic (a wedge of directions stays a wedge). True: the strict polyhedral angle,
+        reference_direction : array-like (3,), optional
+            The direction of theta = 0, projected onto the tangent plane of each source (the name of the C++
+            named parameter and of the tool's ``--reference-direction``; ``reference``: its alias, kept). By
+            default: at a vertex v, the edge from v to ``source(halfedge(v))`` of the library (the frame of
+            ``straightest_geodesic()`` at a vertex); at a point of a face, F[face][0] -> F[face][1] (its frame
+            there), so that ``trace(c, log[v] / rho[v], rho[v])`` walks from the source c towards v.
+        log_map_strict : bool, default False
+            (The name of the C++ named parameter and of the tool's ``--log-map-strict``; ``strict``: its alias,
+            kept.) False: behind a saddle or boundary vertex s, the coordinates go on from those of s, turned at s
+            as a straightest geodesic (a wedge of directions stays a wedge). True: the strict polyhedral angle,
             every vertex behind s gets the theta of s.
         return_via : bool, default False
             Also return, for every vertex, the last vertex its geodesic passes through (-1: none).
@@ -61,18 +63,18 @@ class LogMap:
             than vtp / pvtp, a zero or non-finite reference or one orthogonal to a source's tangent plane, a
             source vertex whose faces do not form one fan.
         """
-        src = source_vertices(sources, points)
-        pf, pb = surface_points(points, self._core.locate)
-        if src.size == 0 and pf.size == 0:
-            raise ValueError("no source: sources is empty and no points are given")
+        reference = merge_alias(reference_direction, None, reference, "reference_direction", "reference")
+        strict = merge_alias(log_map_strict, False, strict, "log_map_strict", "strict")
+        src, pf, pb = query_sources(sources, points, self._core.locate)
         if reference is None:
             ref = _np.zeros(0)
         else:
-            ref = as_float_array(reference, "reference").reshape(-1)
+            ref = as_float_array(reference, "reference_direction").reshape(-1)
             if ref.shape != (3,):
-                raise ValueError("reference must be a 3D direction (3,), got shape %s" % (_np.shape(reference),))
+                raise ValueError("reference_direction must be a 3D direction (3,), got shape %s"
+                                 % (_np.shape(reference),))
         if not isinstance(strict, (bool, _np.bool_)):
-            raise TypeError("strict must be a bool, got %r" % (strict,))
+            raise TypeError("log_map_strict must be a bool, got %r" % (strict,))
         x, via = self._core.log_map(src, pf, pb, check_float(max_distance, "max_distance"), ref, bool(strict),
                                     check_method(method), check_threads(threads))
         return (x, via) if return_via else x

@@ -11,7 +11,7 @@ from ._arguments import check_float, check_method, check_threads, recommended_la
 class Matrices:
     """The distance matrices of ``Solver`` (which holds the compiled solver ``_core``)."""
 
-    def matrix(self, sources=None, targets=None, *, max_distance=_math.inf, dtype=_np.float64, threads=0,
+    def matrix(self, sources=None, *, targets=None, max_distance=_math.inf, dtype=_np.float64, threads=0,
                progress=False, method="vtp", lam=recommended_lambda):
         """Distance matrix, one row per source, rows computed in parallel on all cores.
 

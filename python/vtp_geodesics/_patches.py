@@ -2,7 +2,7 @@
 
 import collections as _collections
 
-from ._arguments import check_float, check_threads, surface_points, vertex_list
+from ._arguments import check_float, check_threads, merge_alias, surface_points, vertex_list
 
 #: The result of ``Solver.polar_patches()``.
 PolarPatches = _collections.namedtuple("PolarPatches", ["indptr", "indices", "rho", "theta"], module="vtp_geodesics")
@@ -28,7 +28,7 @@ which scipy would drop in ``eliminate_zeros()`` and which ``toarray()`` does not
 class Patches:
     """The polar patches of ``Solver``."""
 
-    def polar_patches(self, centres=None, radius=None, *, points=None, threads=0, strict=False):
+    def polar_patches(self, centres=None, *, radius=None, points=None, threads=0, log_map_strict=False, strict=None):
         """Geodesic polar coordinates around many centres: for each centre, every vertex whose geodesic distance to
         it is at most ``radius``, with its ``rho`` (the exact distance) and ``theta`` (the angle at which its
         geodesic leaves the centre), the patches of a geodesic CNN. Each patch is bit for bit the log map of one
@@ -52,8 +52,8 @@ class Patches:
             the same frame (0 along F[face][0] -> F[face][1]; theta to rounding, as the frame is turned
             after the run in both).
         threads : int, default 0 (the solver's)
-        strict : bool, default False
-            The strict polyhedral theta behind saddle and border vertices (every vertex in the shadow of a vertex
+        log_map_strict : bool, default False
+            (``strict``: its alias, kept for compatibility.) The strict polyhedral theta behind saddle and border vertices (every vertex in the shadow of a vertex
             gets that vertex's theta) instead of the default continuation (see ``log_map()``).
 
         Returns
@@ -74,6 +74,7 @@ class Patches:
         KeyboardInterrupt
             Ctrl-C during the computation.
         """
+        strict = merge_alias(log_map_strict, False, strict, "log_map_strict", "strict")
         c = vertex_list(centres, "centres")
         pf, pb = surface_points(points, self._core.locate)
         if radius is None:
@@ -82,5 +83,5 @@ class Patches:
         if not r >= 0:
             raise ValueError("radius must be >= 0 (inf for whole log maps), got %r" % (radius,))
         if not isinstance(strict, bool):
-            raise TypeError("strict must be a bool, got %r" % (strict,))
+            raise TypeError("log_map_strict must be a bool, got %r" % (strict,))
         return PolarPatches(*self._core.polar_patches(c, pf, pb, r, strict, check_threads(threads)))

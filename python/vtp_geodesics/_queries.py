@@ -1,11 +1,42 @@
 """The queries of a solver (private; methods of ``vtp_geodesics.Solver``): distances from several sources, a
 geodesic path, the distance between two points, the nearest surface points, straightest geodesics."""
 
+import collections as _collections
 import math as _math
 
-from ._arguments import (SOURCE_DEFAULT, check_float, check_method, check_threads, one_point,
-                         recommended_lambda, source_vertices, surface_points, trace_directions, trace_starts,
-                         vertex_list, xyz_rows)
+from ._arguments import (SOURCE_DEFAULT, check_float, check_method, check_threads, one_point, query_sources,
+                         recommended_lambda, trace_directions, trace_starts, vertex_list, xyz_rows)
+
+
+#: A polyline on the surface: ``path(..., return_locations=True)`` (the C++ ``Surface_polyline``).
+SurfacePolyline = _collections.namedtuple("SurfacePolyline", ["points", "faces", "barycentric"],
+                                          module="vtp_geodesics")
+SurfacePolyline.__doc__ = """A polyline on the surface (the C++ ``Surface_polyline``): its points and the same points
+as face locations. ``Curve`` (isolines, cell borders) has these three fields first.
+
+points : ndarray float64 (k, 3)
+faces : ndarray int64 (k,)
+barycentric : ndarray float64 (k, 3)
+    With respect to the corners F[face, 0], F[face, 1], F[face, 2].
+"""
+
+#: The result of ``Solver.straightest_geodesic()``.
+StraightestGeodesic = _collections.namedtuple(
+    "StraightestGeodesic", ["points", "end", "end_direction", "length", "reached_border"], module="vtp_geodesics")
+StraightestGeodesic.__doc__ = """The result of ``Solver.straightest_geodesic()`` (the C++ ``Straightest_geodesic``;
+a batch: each field holds the values of every walk).
+
+points : ndarray float64 (k, 3) (a batch: a list of them)
+    The points from the start to the end: the start, each edge crossed, each vertex passed, the end.
+end : (face int, barycentric ndarray (3,)) (a batch: faces int64 (n,), barycentric float64 (n, 3))
+    The end point, with respect to F[face].
+end_direction : ndarray float64 (3,) (a batch: (n, 3))
+    The unit direction of the walk at its end, tangent to the end's face.
+length : float (a batch: (n,))
+    The length walked: the length asked for, or less if the walk stopped on the border.
+reached_border : bool (a batch: (n,))
+    Whether the walk stopped on the border before its length.
+"""
 
 
 class Queries:
@@ -62,17 +93,14 @@ class Queries:
             unknown method; ``keep_field=True`` with an approximate method or with ``targets``. TypeError for
             non-integer indices.
         """
-        src = source_vertices(sources, points)
-        pf, pb = surface_points(points, self._core.locate)
-        if src.size == 0 and pf.size == 0:
-            raise ValueError("no source: sources is empty and no points are given")
+        src, pf, pb = query_sources(sources, points, self._core.locate)
         tgt = vertex_list(targets, "targets")
         d, labels, _ = self._core.distances(src, pf, pb, check_float(max_distance, "max_distance"), tgt,
                                             check_method(method), check_float(lam, "lam"),
                                             check_threads(threads), bool(return_labels), bool(keep_field))
         return (d, labels) if return_labels else d
 
-    def path(self, target, sources=SOURCE_DEFAULT, *, points=None, max_distance=_math.inf, return_locations=False):
+    def path(self, target, *, sources=SOURCE_DEFAULT, points=None, max_distance=_math.inf, return_locations=False):
         """The geodesic path from the nearest source to ``target``.
 
         Parameters
@@ -92,7 +120,8 @@ class Queries:
             crossings and the saddle or boundary vertices it turns at in between. Its length equals the
             distance of the target (up to rounding).
         faces, barycentric : ndarray int64 (k,), float64 (k, 3), only with ``return_locations=True``
-            The same points as face locations (a vertex as a corner of one of its faces).
+            The same points as face locations (a vertex as a corner of one of its faces); the three then come
+            as a ``SurfacePolyline`` namedtuple (``P, faces, bary = ...`` still works).
 
         Raises
         ------
@@ -100,13 +129,10 @@ class Queries:
             If no source reaches the target (or it is beyond ``max_distance``), or bad input as in
             ``distances()``.
         """
-        src = source_vertices(sources, points)
-        pf, pb = surface_points(points, self._core.locate)
-        if src.size == 0 and pf.size == 0:
-            raise ValueError("no source: sources is empty and no points are given")
+        src, pf, pb = query_sources(sources, points, self._core.locate)
         tv, tf, tb = one_point(target, self._core.locate, "target")
         P, faces, bary, _d = self._core.path(tv, tf, tb, src, pf, pb, check_float(max_distance, "max_distance"))
-        return (P, faces, bary) if return_locations else P
+        return SurfacePolyline(P, faces, bary) if return_locations else P
 
     def distance(self, a, b, *, method="vtp", lam=recommended_lambda):
         """The geodesic distance between ``a`` and ``b`` (each a vertex index, a (face, barycentric) pair or
@@ -122,11 +148,12 @@ class Queries:
         built on the first call."""
         return self._core.locate(xyz_rows(xyz))
 
-    def trace(self, start, direction, length, *, threads=0, return_details=False):
-        """Straightest geodesics (the exponential map): from ``start``, walk straight along the surface in
-        ``direction`` for ``length``. Inside a face the walk is a segment; across an edge it goes on in the
-        unfolded next face; through a vertex it leaves with half the vertex's angle sum on each side (Polthier and
-        Schmies' straightest geodesics); it ends exactly on the border if it reaches it (or at a border vertex).
+    def straightest_geodesic(self, start, *, direction, length, threads=0):
+        """Straightest geodesics (the exponential map; the C++ ``straightest_geodesic()``, the tool's
+        ``--straightest-geodesic``): from ``start``, walk straight along the surface in ``direction`` for
+        ``length``. Inside a face the walk is a segment; across an edge it goes on in the unfolded next face;
+        through a vertex it leaves with half the vertex's angle sum on each side (Polthier and Schmies' straightest
+        geodesics); it ends exactly on the border if it reaches it (or at a border vertex).
 
         Parameters
         ----------
@@ -138,22 +165,16 @@ class Queries:
             2D: in the tangent frame of the start, that of ``log_map()`` (at a vertex: angles from the edge to
             ``source(halfedge(v))``, counter-clockwise, scaled by 2 pi / the vertex's angle sum, pi / sum at the
             border; at a point of a face: x along F[face][0] -> F[face][1], y towards F[face][2]), so that
-            ``trace(c, log[v] / rho[v], rho[v])`` walks towards v. 3D: projected onto the tangent plane.
+            ``straightest_geodesic(c, direction=log[v] / rho[v], length=rho[v])`` walks towards v. 3D: projected
+            onto the tangent plane.
         length : float >= 0, or one per start (n,)
         threads : int, default 0 (the solver's)
             The walks of a batch are shared among the threads.
-        return_details : bool, default False
-            Also return the lengths walked and whether each walk stopped on the border.
 
         Returns
         -------
-        path : ndarray float64 (k, 3) (a batch: a list of them)
-            The points from the start to the end: the start, each edge crossed, each vertex passed, the end.
-        end : (face int, barycentric ndarray (3,)) (a batch: faces int64 (n,), barycentric float64 (n, 3))
-            The end point, with respect to F[face].
-        end_direction : ndarray float64 (3,) (a batch: (n, 3))
-            The unit direction of the walk at its end, tangent to the end's face.
-        walked, border : float, bool (a batch: (n,) arrays), only with ``return_details=True``
+        StraightestGeodesic
+            ``(points, end, end_direction, length, reached_border)``: see ``vtp_geodesics.StraightestGeodesic``.
 
         Raises
         ------
@@ -161,6 +182,16 @@ class Queries:
             A start that is not a vertex or a point of a face, a zero or non-finite direction (or one orthogonal
             to the tangent plane), a negative or non-finite length.
         """
+        return StraightestGeodesic(*self._walk(start, direction, length, threads, True))
+
+    def trace(self, start, direction, length, *, threads=0, return_details=False):
+        """Alias of ``straightest_geodesic()`` (its former name), kept with its former signature and result:
+        ``direction`` and ``length`` positional, and a tuple ``(points, end, end_direction)``, with
+        ``return_details=True`` also ``(walked, border)`` (the ``length`` and ``reached_border`` of
+        ``StraightestGeodesic``)."""
+        return self._walk(start, direction, length, threads, return_details)
+
+    def _walk(self, start, direction, length, threads, return_details):
         batch, sv, sf, sb = trace_starts(start, self._core.locate)
         d, lengths = trace_directions(direction, length, sv.shape[0], batch)
         P, offsets, faces, bary, end_dir, walked, border = self._core.trace(sv, sf, sb, d, lengths,

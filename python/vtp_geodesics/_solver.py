@@ -82,18 +82,25 @@ class Solver(Queries, Field, Matrices, Sampling, LogMap, Curves, Patches):
         the exact distance and the nearest source at any vertex or point of the surface, from the kept field.
     field_isolines(levels), field_cell_borders(), field_cell_areas()
         isolines at any levels, cell borders and cell areas of the kept field, with no new run.
-    isolines(levels, sources=0), cell_borders(sources), cell_areas(sources)
-        the same from one run of the given sources.
-    path(target, sources=0, *, points=None, return_locations=False)
-        the geodesic path from the nearest source to a target, (k, 3) points, source first.
+    isolines(levels, *, sources=0), cell_borders(sources), cell_areas(sources)
+        the same from one run of the given sources (lists of Curve namedtuples; CellAreas).
+    path(target, *, sources=0, points=None, return_locations=False)
+        the geodesic path from the nearest source to a target, (k, 3) points, source first (with
+        return_locations: a SurfacePolyline).
     distance(a, b)
         the distance between two vertices or surface points, stopping once it is known.
-    matrix(sources=None, targets=None, *, max_distance=inf, dtype=numpy.float64, threads=0, progress=False)
+    matrix(sources=None, *, targets=None, max_distance=inf, dtype=numpy.float64, threads=0, progress=False)
         one row per source, on all cores: dense ndarray, or scipy.sparse.csr_matrix with a finite limit.
     locate(xyz)
         the nearest surface points of (k, 3) positions, as (faces, barycentric).
-    log_map(sources=0, *, points=None, max_distance=inf, reference=None, strict=False, return_via=False)
-        geodesic polar coordinates around the nearest source, float64 (n, 2) rho * (cos theta, sin theta).
+    log_map(sources=0, *, points=None, max_distance=inf, reference_direction=None, log_map_strict=False,
+            return_via=False)
+        geodesic polar coordinates around the nearest source, float64 (n, 2) rho * (cos theta, sin theta)
+        (reference= and strict= are kept as aliases).
+    straightest_geodesic(start, *, direction, length, threads=0)
+        straightest geodesics (the exp map), a StraightestGeodesic (trace(start, direction, length): alias).
+    polar_patches(centres, *, radius, points=None, threads=0, log_map_strict=False)
+        the log map around many centres cut at a radius, PolarPatches CSR arrays.
     statistics
         the library's statistics of the last computation, as a dict.
     """

@@ -162,7 +162,7 @@ def distance_matrix_of_selected_points(vertices, triangles, points, max_distance
         raise ValueError("max_distance must be >= 0, got %r" % (max_distance,))
     if pts.size == 0:
         return scipy.sparse.csc_matrix((n, n), dtype=numpy.float64)
-    D = solver.matrix(pts, pts, max_distance=limit)
+    D = solver.matrix(pts, targets=pts, max_distance=limit)
     D = scipy.sparse.coo_matrix(D) if limit == numpy.inf else D.tocoo()
     keep = (D.row != D.col) & numpy.isfinite(D.data) & (D.data <= limit)
     M = scipy.sparse.csr_matrix((D.data[keep], (pts[D.row[keep]], pts[D.col[keep]])), shape=(n, n))

@@ -64,7 +64,7 @@ class PyGeodesicAlgorithmExact:
         d = self._solver.distance(s, t)
         if not numpy.isfinite(d):
             return float("inf"), numpy.zeros((0, 3))
-        path = self._solver.path(t, s)
+        path = self._solver.path(t, sources=s)
         return float(d), numpy.ascontiguousarray(path[::-1])
 
     def geodesicDistances(self, source_indices=None, target_indices=None, max_distance=numpy.inf):

@@ -1,4 +1,4 @@
-// The tangent frame shared by the log map and the straightest geodesics (internal/Tangent_frame.h): on the
+// The tangent frame shared by the log map and the straightest geodesics (internal/log_map/Tangent_frame.h): on the
 // plane, the angles of the edges around an interior vertex (sum 2 pi, scale 1) and a border vertex (scaled
 // to pi), the reference of a vertex (source(halfedge(v))) and of a face location (halfedge(f)), 3D
 // directions projected.
@@ -6,8 +6,8 @@
 #include "vtp_test_meshes.h"
 
 #include <CGAL/VTP_geodesics.h>
-#include <CGAL/VTP_geodesics/internal/Tangent_frame.h>
-#include <CGAL/VTP_geodesics/internal/solver/Mesh_import.h>
+#include <CGAL/VTP_geodesics/internal/log_map/Tangent_frame.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_import.h>
 
 #include <gtest/gtest.h>
 

@@ -8,9 +8,9 @@
 
 #include <CGAL/VTP_geodesics.h>
 #include <CGAL/VTP_geodesics/Polar_patches.h>
-#include <CGAL/VTP_geodesics/internal/engine/Local_propagation.h>
-#include <CGAL/VTP_geodesics/internal/solver/Log_map_output.h>
-#include <CGAL/VTP_geodesics/internal/solver/Mesh_import.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Local_propagation.h>
+#include <CGAL/VTP_geodesics/internal/log_map/Log_map_output.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_import.h>
 #include <CGAL/VTP_geodesics/internal/solver/Settings_from_parameters.h>
 
 #include <gtest/gtest.h>

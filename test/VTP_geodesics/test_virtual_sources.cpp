@@ -10,7 +10,7 @@
 #include "vtp_test_utils.h"
 
 #include <CGAL/VTP_geodesics.h>
-#include <CGAL/VTP_geodesics/internal/Huge_page_allocator.h>
+#include <CGAL/VTP_geodesics/internal/memory/Huge_page_allocator.h>
 
 #include <boost/property_map/property_map.hpp>
 

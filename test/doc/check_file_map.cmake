@@ -1,6 +1,6 @@
 # Checks the file map of the manual (doc/VTP_geodesics/file_map.txt) against the tree:
 #  1. every header under include/ is named on the page, by its path relative to include/ (the path it is
-#     included with, e.g. `CGAL/VTP_geodesics/internal/Window.h`), written as a code span (between backquotes);
+#     included with, e.g. `CGAL/VTP_geodesics/internal/windows/Window.h`), written as a code span (between backquotes);
 #  2. every path the page names exists: a code span made only of path characters and holding a `/` is a path,
 #     relative to include/ when it starts with `CGAL/`, else relative to the root of the repository; a code
 #     span that is a bare file name (`read_mesh.h`, `main.cpp`, ...) must be the name of a file of the

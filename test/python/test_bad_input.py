@@ -101,7 +101,7 @@ def test_bad_queries():
     d = s2.distances(0)
     assert np.all(np.isinf(d[len(V0):])) and np.all(np.isfinite(d[:len(V0)]))
     with pytest.raises(ValueError, match="reach"):
-        s2.path(len(V0) + 3, 0)
+        s2.path(len(V0) + 3, sources=0)
     assert s2.distance(0, len(V0) + 3) == np.inf
 
 

@@ -13,7 +13,7 @@ def test_plane_circles_and_bisector():
     V, F = plane_grid(21, 21, jitter=0.3, seed=3)
     s = vtp_geodesics.Solver(V, F)
     c = 10 * 21 + 10  # the vertex nearest to the centre
-    curves = s.isolines([0.1, 0.3], c, chord_tolerance=1e-6, return_locations=True)
+    curves = s.isolines([0.1, 0.3], sources=c, chord_tolerance=1e-6, return_locations=True)
     assert len(curves) == 2
     for k in curves:
         assert k["closed"]
@@ -33,7 +33,7 @@ def test_elephant_refined_by_exact_runs(elephant):
     V, F, s = elephant
     d = s.distances(0)
     top = d[np.isfinite(d)].max()
-    curves = s.isolines([0.2 * top, 0.6 * top], 0, exact_refinement=2, return_locations=True)
+    curves = s.isolines([0.2 * top, 0.6 * top], sources=0, exact_refinement=2, return_locations=True)
     assert curves
     errors = []
     for k in curves:
@@ -47,14 +47,14 @@ def test_elephant_refined_by_exact_runs(elephant):
 def test_step_and_bad_input():
     V, F = plane_grid(6, 6)
     s = vtp_geodesics.Solver(V, F)
-    assert [round(k["level"], 12) for k in s.isolines(None, 0, step=0.5)] == [0.5, 1.0]
+    assert [round(k["level"], 12) for k in s.isolines(None, sources=0, step=0.5)] == [0.5, 1.0]
     with pytest.raises(ValueError):
-        s.isolines([-0.1], 0)
+        s.isolines([-0.1], sources=0)
     with pytest.raises(ValueError):
-        s.isolines([float("nan")], 0)
+        s.isolines([float("nan")], sources=0)
     with pytest.raises(ValueError):
-        s.isolines(None, 0, step=0.0)
+        s.isolines(None, sources=0, step=0.0)
     with pytest.raises(ValueError):
-        s.isolines([0.1], 0, chord_tolerance=0.0)
+        s.isolines([0.1], sources=0, chord_tolerance=0.0)
     with pytest.raises(ValueError):
-        s.isolines([0.1], 0, exact_refinement=-1)
+        s.isolines([0.1], sources=0, exact_refinement=-1)

@@ -78,7 +78,7 @@ def test_plane_field_isolines_at_levels_chosen_after_the_run():
         assert np.abs(np.linalg.norm(k["points"] - V[c], axis=1) - k["level"]).max() < 1e-9
         assert np.abs(s.field_distance((k["faces"], k["barycentric"])) - k["level"]).max() < 1e-9
     # still kept: the same curves as one run of isolines() from the same source
-    again = s.isolines([0.15, 0.35], c, chord_tolerance=1e-6)
+    again = s.isolines([0.15, 0.35], sources=c, chord_tolerance=1e-6)
     for a, b in zip(curves, again):
         assert np.array_equal(a["points"], b["points"])
 
@@ -208,14 +208,14 @@ def test_what_replaces_the_field():
 
     kept()
     s.matrix([1, 2])
-    s.polar_patches([5], 0.3)
+    s.polar_patches([5], radius=0.3)
     s.trace(5, [1.0, 0.0], 0.3)
     s.locate([[0.5, 0.5, 0.0]])
     s.field_isolines([0.3])
     s.field_cell_areas()
     assert s.has_kept_field and s.field_distance(point).shape == (1,)
-    for replace in (lambda: s.distances(0), lambda: s.distance(0, 9), lambda: s.path(9, 0),
-                    lambda: s.isolines([0.3], 0), lambda: s.cell_borders([0, 63]), lambda: s.cell_areas([0, 63]),
+    for replace in (lambda: s.distances(0), lambda: s.distance(0, 9), lambda: s.path(9, sources=0),
+                    lambda: s.isolines([0.3], sources=0), lambda: s.cell_borders([0, 63]), lambda: s.cell_areas([0, 63]),
                     lambda: s.log_map(0), lambda: s.farthest_point_sampling(3)):
         kept()
         replace()

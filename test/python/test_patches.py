@@ -17,7 +17,7 @@ def test_rows_equal_single_runs(elephant):
     largest = solver.distances(0).max()
     radius = 0.07 * largest
     centres = np.arange(0, V.shape[0], 37)
-    p = solver.polar_patches(centres, radius)
+    p = solver.polar_patches(centres, radius=radius)
     assert isinstance(p, vtp_geodesics.PolarPatches)
     assert p.indptr.dtype == np.int64 and p.indices.dtype == np.int64
     assert p.rho.dtype == np.float64 and p.theta.dtype == np.float64
@@ -38,12 +38,12 @@ def test_threads_and_strict(elephant):
     radius = 0.05 * solver.distances(0).max()
     centres = np.arange(V.shape[0])
     for strict in (False, True):
-        a = solver.polar_patches(centres, radius, threads=1, strict=strict)
-        b = solver.polar_patches(centres, radius, threads=2, strict=strict)
+        a = solver.polar_patches(centres, radius=radius, threads=1, strict=strict)
+        b = solver.polar_patches(centres, radius=radius, threads=2, strict=strict)
         for x, y in zip(a, b):
             assert np.array_equal(x, y)
     # strict and default agree on rho and on the vertices
-    c = solver.polar_patches(centres, radius, strict=True)
+    c = solver.polar_patches(centres, radius=radius, strict=True)
     assert np.array_equal(a.indices, c.indices) and np.array_equal(a.rho, c.rho)
 
 
@@ -52,7 +52,7 @@ def test_plane_is_euclidean():
     solver = vtp_geodesics.Solver(V, F)
     radius = 0.3
     centres = [7 * 15 + 7, 5 * 15 + 9, 7]  # two inside, one on the border (angles scaled by pi / pi)
-    p = solver.polar_patches(centres, radius)
+    p = solver.polar_patches(centres, radius=radius)
     for i, c in enumerate(centres):
         row = slice(p.indptr[i], p.indptr[i + 1])
         e = np.hypot(V[:, 0] - V[c, 0], V[:, 1] - V[c, 1])
@@ -83,7 +83,7 @@ def test_repaired_mesh():
     split = [i for i in range(V.shape[0]) if begin[i + 1] - begin[i] > 1]
     assert split  # the pinched vertex
     good = [i for i in range(V.shape[0]) if begin[i + 1] - begin[i] == 1]
-    p = solver.polar_patches(good, math.inf)
+    p = solver.polar_patches(good, radius=math.inf)
     for i, c in enumerate(good):
         row = slice(p.indptr[i], p.indptr[i + 1])
         d = solver.distances(c)
@@ -91,7 +91,7 @@ def test_repaired_mesh():
         assert np.array_equal(p.rho[row], d[p.indices[row]])  # the least over the copies
     for c in split:
         with pytest.raises(ValueError, match="split by the repair"):
-            solver.polar_patches([c], 1.0)
+            solver.polar_patches([c], radius=1.0)
     # centres at points of faces of the repaired mesh: the rows of the single runs from each point
     faces = np.array([0, 7, F.shape[0] - 1])
     bary = np.array([[0.2, 0.3, 0.5], [1 / 3, 1 / 3, 1 / 3], [0.6, 0.2, 0.2]])
@@ -119,14 +119,14 @@ def test_repaired_mesh():
 def test_bad_input(elephant, centres, radius, error, message):
     V, F, solver = elephant
     with pytest.raises(error, match=message):
-        solver.polar_patches(centres, radius)
+        solver.polar_patches(centres, radius=radius)
 
 
 def test_empty_and_infinite(elephant):
     V, F, solver = elephant
-    p = solver.polar_patches([], 0.1)
+    p = solver.polar_patches([], radius=0.1)
     assert p.indptr.tolist() == [0] and p.indices.size == 0
-    p = solver.polar_patches(3, math.inf)
+    p = solver.polar_patches(3, radius=math.inf)
     d = solver.distances(3)
     assert np.array_equal(p.rho, d[p.indices]) and p.indices.size == np.isfinite(d).sum()
 
@@ -174,8 +174,8 @@ def test_vertices_then_points(elephant):
     radius = 0.05 * solver.distances(0).max()
     faces, bary = _face_points(solver, V, F, 6, seed=9)
     centres = [5, 900, 5]
-    both = solver.polar_patches(centres, radius, points=(faces, bary))
-    a = solver.polar_patches(centres, radius)
+    both = solver.polar_patches(centres, radius=radius, points=(faces, bary))
+    a = solver.polar_patches(centres, radius=radius)
     b = solver.polar_patches(points=(faces, bary), radius=radius)
     assert np.array_equal(both.indptr, np.concatenate([a.indptr, b.indptr[1:] + a.indptr[-1]]))
     for k in ("indices", "rho", "theta"):
@@ -187,8 +187,8 @@ def test_vertices_then_points(elephant):
     for x, y in zip(c, d):
         assert np.array_equal(x, y)
     for strict in (False, True):
-        one = solver.polar_patches(centres, radius, points=(faces, bary), threads=1, strict=strict)
-        two = solver.polar_patches(centres, radius, points=(faces, bary), threads=2, strict=strict)
+        one = solver.polar_patches(centres, radius=radius, points=(faces, bary), threads=1, strict=strict)
+        two = solver.polar_patches(centres, radius=radius, points=(faces, bary), threads=2, strict=strict)
         for x, y in zip(one, two):
             assert np.array_equal(x, y)
 
@@ -231,7 +231,7 @@ def test_keyboard_interrupt_stops_the_patches():
     solver = vtp_geodesics.Solver(V, F, threads=2)
     centres = np.tile(np.arange(len(V)), 4)
     assert_interrupt_stops(
-        lambda: solver.polar_patches(centres, math.inf, points=([0], [[1 / 3, 1 / 3, 1 / 3]])), "patches")
+        lambda: solver.polar_patches(centres, radius=math.inf, points=([0], [[1 / 3, 1 / 3, 1 / 3]])), "patches")
     # and the solver still works
-    p = solver.polar_patches([3], math.inf)
+    p = solver.polar_patches([3], radius=math.inf)
     assert np.array_equal(p.rho, solver.distances(3)[p.indices])

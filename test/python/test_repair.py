@@ -177,7 +177,7 @@ def test_paths_on_caller_indices(tool, tmp_path, name):
                     str(paths)], check=True, capture_output=True)
     tool_paths = [np.array([float(x) for x in line.split()[1:]]).reshape(-1, 3) for line in open(paths)]
     for t, tp in zip(reached, tool_paths):
-        P, faces, bary = solver.path(t, s, return_locations=True)
+        P, faces, bary = solver.path(t, sources=s, return_locations=True)
         assert np.allclose(P[0], V[s], atol=1e-12) and np.allclose(P[-1], V[t], atol=1e-12)
         length = np.linalg.norm(np.diff(P, axis=0), axis=1).sum()
         assert length == pytest.approx(d[t], rel=1e-9, abs=1e-12)
@@ -187,7 +187,7 @@ def test_paths_on_caller_indices(tool, tmp_path, name):
         assert np.array_equal(P, tp[::-1])                   # the tool's path, from the target
     if name != "book":                                       # the vertex in no face
         with pytest.raises(ValueError, match="no face"):
-            solver.path(len(V) - 1, s)
+            solver.path(len(V) - 1, sources=s)
 
 
 @pytest.mark.parametrize("name", sorted(MESHES))
@@ -219,7 +219,7 @@ def test_matrices_are_rows_of_distances(name):
     for i, s in enumerate(rows):
         assert np.array_equal(M[i], solver.distances(s))
     cols = [0, 24, len(V) - 1, 5]
-    assert np.array_equal(solver.matrix(rows, cols), M[:, cols])
+    assert np.array_equal(solver.matrix(rows, targets=cols), M[:, cols])
     limit = np.nanmax(M[np.isfinite(M)]) / 3
     S = solver.matrix(rows, max_distance=limit)
     dense = S.toarray()
@@ -298,7 +298,7 @@ def test_through_pinches_joins_the_sheets():
     assert np.array_equal(d, np.minimum(joined.distances(3), joined.distances(70)))
     assert set(lab[:-1].tolist()) <= {0, 1} and lab[-1] == -1
     with pytest.raises(ValueError, match="through_pinches"):
-        joined.path(60, 3)
+        joined.path(60, sources=3)
     with pytest.raises(ValueError, match="through_pinches"):
         joined.matrix([3])
     with pytest.raises(ValueError, match="through_pinches"):

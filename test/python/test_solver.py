@@ -124,7 +124,7 @@ def test_path_length_is_distance(elephant):
     V, F, solver = elephant
     full = solver.distances(0)
     for t in (500, 1500, 2700):
-        P, faces, bary = solver.path(t, 0, return_locations=True)
+        P, faces, bary = solver.path(t, sources=0, return_locations=True)
         assert P.shape[1] == 3 and P.shape[0] >= 2 and faces.shape == (P.shape[0],) and bary.shape == P.shape
         assert np.array_equal(P[0], V[0]) and np.array_equal(P[-1], V[t])  # from the source to the target
         length = np.linalg.norm(np.diff(P, axis=0), axis=1).sum()
@@ -153,7 +153,7 @@ def test_matrix_rows_equal_single_runs(elephant):
     for i, s in enumerate(rows):
         assert np.array_equal(M[i], solver.distances(s))
     cols = [3, 1, 4, 1, 5]
-    Mt = solver.matrix(rows, cols, threads=1)
+    Mt = solver.matrix(rows, targets=cols, threads=1)
     assert np.array_equal(Mt, M[:, cols])
     M32 = solver.matrix(rows, dtype=np.float32)
     assert M32.dtype == np.float32 and np.array_equal(M32, M.astype(np.float32))

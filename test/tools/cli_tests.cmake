@@ -440,27 +440,43 @@ set(bad_sets
   "path_output_without_paths|--path-output|${bad_output}.p"
   "paths_without_output|--path-to|5")
 vtp_cli_bad_sets(30 "${bad_sets}")
-# Straightest geodesics (--trace): bad values and a --trace without --path-output are refused (the polylines
-# themselves are checked against the Python module in test/python/test_straightest.py)
+# Straightest geodesics (--straightest-geodesic, and --trace, its former name kept as an alias): bad values and a
+# walk without --path-output are refused, under either name (the polylines themselves are checked against the
+# Python module in test/python/test_straightest.py); the two names write the same file, byte for byte.
 vtp_cli_test(trace_zero_direction 2 "${bad_output}.50" "" ERROR "direction must be finite and not zero"
              --trace 5,0,0,0,1 --path-output "${bad_output}.50")
 vtp_cli_test(trace_negative_length 2 "${bad_output}.51" "" ERROR "length must be finite and >= 0"
              --trace 5,1,0,0,-1 --path-output "${bad_output}.51")
 vtp_cli_test(trace_four_values 2 "${bad_output}.52" "" ERROR "expected V,X,Y,Z,LENGTH"
              --trace 5,1,0,0 --path-output "${bad_output}.52")
-vtp_cli_test(trace_out_of_range 2 "${bad_output}.53" "" ERROR "--trace vertex 99999999 is out of range"
+vtp_cli_test(trace_out_of_range 2 "${bad_output}.53" "" ERROR "--straightest-geodesic vertex 99999999 is out of range"
              --trace 99999999,1,0,0,1 --path-output "${bad_output}.53")
-vtp_cli_test(trace_without_output 2 "" "" ERROR "--trace needs --path-output" --trace 5,1,0,0,1)
-# The header of an OBJ --path-output says what each polyline is: a straightest geodesic from its start vertex, its
-# direction and its length (on the plane grid, along the diagonal of the squares from vertex 0: 5 points); after
-# the geodesic paths of --path-to, each from its target (the header of paths alone is that of the paths tests).
+vtp_cli_test(trace_without_output 2 "" "" ERROR "--straightest-geodesic .--trace. needs --path-output"
+             --trace 5,1,0,0,1)
+vtp_cli_test(straightest_geodesic_zero_direction 2 "${bad_output}.54" "" ERROR "direction must be finite and not zero"
+             --straightest-geodesic 5,0,0,0,1 --path-output "${bad_output}.54")
+vtp_cli_test(straightest_geodesic_without_output 2 "" "" ERROR "needs --path-output" --straightest-geodesic 5,1,0,0,1)
+set(walks "${cli_dir}/walks")
+vtp_cli_test(straightest_geodesic 0 "" "" --straightest-geodesic 5,1,0,0,0.3 --straightest-geodesic 100,0,1,0,0.2
+             --path-output "${walks}.new.txt")
+vtp_cli_test(straightest_geodesic_alias_trace 0 "" "" --trace 5,1,0,0,0.3 --trace 100,0,1,0,0.2
+             --path-output "${walks}.old.txt")
+add_test(NAME cli_straightest_geodesic_alias_same
+         COMMAND "${CMAKE_COMMAND}" -E compare_files "${walks}.new.txt" "${walks}.old.txt")
+set_tests_properties(cli_straightest_geodesic_alias_same PROPERTIES FIXTURES_REQUIRED cli_straightest_alias_runs)
+set_property(TEST cli_straightest_geodesic cli_straightest_geodesic_alias_trace APPEND
+             PROPERTY FIXTURES_SETUP cli_straightest_alias_runs)
+# The header of an OBJ --path-output says what each polyline is: a straightest geodesic (--straightest-geodesic, or
+# its alias --trace) from its start vertex, its direction and its length (on the plane grid, along the diagonal of
+# the squares from vertex 0: 5 points); after the geodesic paths of --path-to, each from its target (the header of
+# paths alone is that of the paths tests).
 set(trace_obj "${cli_dir}/trace")
 vtp_cli_test(trace_obj_header 0 "${trace_obj}.obj" "" LINES 8 SOURCE_LINE none
-             VALUES "0=# vtp_geodesics: 1 straightest geodesic (--trace), each from its start point, one 'l' element each|1=# 'l' element 1: straightest geodesic from vertex 0, direction (1, 1, 0) projected onto the tangent plane, length 0.5 (less if it reaches the border)|2=v 0 0 0|6=v 0.35355339059327373 0.35355339059327373 0|7=l 1 2 3 4 5"
-             "${cli_data}/plane_grid.off" --trace 0,1,1,0,0.5 --path-output "${trace_obj}.obj")
+             VALUES "0=# vtp_geodesics: 1 straightest geodesic (--straightest-geodesic), each from its start point, one 'l' element each|1=# 'l' element 1: straightest geodesic from vertex 0, direction (1, 1, 0) projected onto the tangent plane, length 0.5 (less if it reaches the border)|2=v 0 0 0|6=v 0.35355339059327373 0.35355339059327373 0|7=l 1 2 3 4 5"
+             "${cli_data}/plane_grid.off" --straightest-geodesic 0,1,1,0,0.5 --path-output "${trace_obj}.obj")
 vtp_cli_test(trace_obj_header_after_paths 0 "${trace_obj}.2.obj" "" LINES 28 SOURCE_LINE none
-             VALUES "0=# vtp_geodesics: 1 geodesic path, from the target to the source, then 2 straightest geodesics (--trace), each from its start point, one 'l' element each|1=# 'l' element 2: straightest geodesic from vertex 0, direction (1, 1, 0) projected onto the tangent plane, length 0.5 (less if it reaches the border)|2=# 'l' element 3: straightest geodesic from vertex 60, direction (0, 1, 0) projected onto the tangent plane, length 2 (less if it reaches the border)"
-             "${cli_data}/plane_grid.off" --source 0 --path-to 120 --trace 0,1,1,0,0.5 --trace 60,0,1,0,2
+             VALUES "0=# vtp_geodesics: 1 geodesic path, from the target to the source, then 2 straightest geodesics (--straightest-geodesic), each from its start point, one 'l' element each|1=# 'l' element 2: straightest geodesic from vertex 0, direction (1, 1, 0) projected onto the tangent plane, length 0.5 (less if it reaches the border)|2=# 'l' element 3: straightest geodesic from vertex 60, direction (0, 1, 0) projected onto the tangent plane, length 2 (less if it reaches the border)"
+             "${cli_data}/plane_grid.off" --source 0 --path-to 120 --straightest-geodesic 0,1,1,0,0.5 --trace 60,0,1,0,2
              --path-output "${trace_obj}.2.obj")
 vtp_cli_test(paths_obj_header 0 "${trace_obj}.3.obj" "" LINES 13 SOURCE_LINE none
              VALUES "0=# vtp_geodesics: 1 geodesic paths, one 'l' element each, from the target to the source"

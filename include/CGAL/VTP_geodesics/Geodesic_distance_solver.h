@@ -19,22 +19,23 @@
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/Polar_patches.h>
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
+#include <CGAL/VTP_geodesics/Surface_polyline.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
 #include <CGAL/VTP_geodesics/internal/field/Field_queries.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
-#include <CGAL/VTP_geodesics/internal/solver/Log_map_output.h>
+#include <CGAL/VTP_geodesics/internal/log_map/Log_map_output.h>
 #include <CGAL/VTP_geodesics/internal/solver/Many_sources.h>
-#include <CGAL/VTP_geodesics/internal/solver/Mesh_import.h>
-#include <CGAL/VTP_geodesics/internal/solver/Mesh_index.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_import.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_index.h>
 #include <CGAL/VTP_geodesics/internal/solver/Output_maps.h>
-#include <CGAL/VTP_geodesics/internal/solver/Path_queries.h>
-#include <CGAL/VTP_geodesics/internal/solver/Polar_patch_rows.h>
+#include <CGAL/VTP_geodesics/internal/paths/Path_queries.h>
+#include <CGAL/VTP_geodesics/internal/log_map/Polar_patch_rows.h>
 #include <CGAL/VTP_geodesics/internal/solver/Settings_from_parameters.h>
 #include <CGAL/VTP_geodesics/internal/solver/Solver_run.h>
-#include <CGAL/VTP_geodesics/internal/solver/Straightest_queries.h>
+#include <CGAL/VTP_geodesics/internal/straightest/Straightest_queries.h>
 #include <CGAL/VTP_geodesics/internal/sampling/Farthest_point_sampler.h>
-#include <CGAL/VTP_geodesics/internal/source_forms.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Source_forms.h>
 
 #include <CGAL/disable_warnings.h>
 #include <CGAL/assertions.h>
@@ -104,8 +105,10 @@ public:
   /// A point of the surface: a face and the barycentric coordinates of the point with respect to
   /// `source(halfedge(f))`, `target(halfedge(f))` and `target(next(halfedge(f)))` (the type of
   /// `CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>`). Locations with another number
-  /// type are accepted too.
-  typedef std::pair<face_descriptor, std::array<double, 3> > Face_location;
+  /// type are accepted too. The one location type of the package: `CGAL::VTP_geodesics::Face_location<face_descriptor>`.
+  typedef VTP_geodesics::Face_location<face_descriptor> Face_location;
+  /// A polyline on the surface (a shortest path: `shortest_path()`), `Surface_polyline<face_descriptor, Point_3>`.
+  typedef Surface_polyline<face_descriptor, Point_3> Polyline;
   /// @}
 
 private:
@@ -382,6 +385,23 @@ public:
   /// degenerate and real meshes); no partial path is written then.
   /// @{
 
+  /// the path from `p` to its nearest source, `p` first, as a `Surface_polyline`: the points of
+  /// `shortest_path_points()` and, one each, the face locations of `shortest_path_locations()` (one trace-back).
+  /// `p` is a `vertex_descriptor` or a face location (any number type `FT` convertible to `double`).
+  /// \throws Invalid_input_error as the two below (and for a source vertex without a face, which has no location).
+  template <class VertexOrLocation>
+  Polyline shortest_path(const VertexOrLocation& p)
+  {
+    Polyline r;
+    for(const internal::Trace_point& q : m_paths.trace(m_mesh.arrays, m_engine, m_mesh.target_of(p, "the start of the path"),
+                                                         m_mesh.position))
+    {
+      r.points.push_back(internal::point_of<Point_3>(m_mesh, m_vpm, q));
+      r.locations.push_back(internal::location_of(m_mesh, q));
+    }
+    return r;
+  }
+
   /// writes the points of the path from `p` to its nearest source, `p` first, to `out` (value type
   /// `Point_3`): the vertices, the crossings of edges, and the source. `p` is a `vertex_descriptor` or a face
   /// location (`std::pair<face_descriptor, std::array<FT, 3> >`, any number type `FT` convertible to `double`).
@@ -435,6 +455,10 @@ public:
   std::size_t vertex_id(vertex_descriptor v) const { return m_mesh.position_of(get(m_mesh.vertex_id, v)); }
   /// the vertices, in the order of their dense indices.
   const std::vector<vertex_descriptor>& vertex_list() const { return m_mesh.vertices_in_order; }
+  /// the vertices in the order in which the solver stores their per-vertex data: along a Morton (Z-order)
+  /// curve of their points, ties in the order of `vertices(tm)`, so that neighbours on the surface are near in
+  /// memory (a mesh renumbered in this order is read a few cache lines at a time by other programs too).
+  const std::vector<vertex_descriptor>& vertices_in_storage_order() const { return m_mesh.vertices; }
   /// number of vertices and faces of the mesh.
   std::size_t number_of_vertices() const { return m_mesh.vertices.size(); }
   std::size_t number_of_faces() const { return static_cast<std::size_t>(m_mesh.arrays.nf); }

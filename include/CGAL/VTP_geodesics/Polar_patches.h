@@ -28,7 +28,8 @@ namespace VTP_geodesics {
 ///
 /// Patch `i` (the centre of index `i` in the range given) is the entries `offsets[i]` to `offsets[i + 1] - 1`
 /// of `vertices`, `rho` and `theta`, ordered by vertex index (`Geodesic_distance_solver::vertex_id()`),
-/// ascending: the arrays of `scipy.sparse.csr_matrix((rho, vertices, offsets))`. A patch holds every vertex
+/// ascending: the row offsets, column indices and values of a CSR matrix with one row per centre and one column
+/// per vertex (two value arrays, `rho` and `theta`, sharing the same structure). A patch holds every vertex
 /// whose geodesic distance to the centre is at most the radius, the centre itself (a vertex centre) with
 /// `rho = 0` and `theta = 0`.
 ///
@@ -60,10 +61,16 @@ namespace VTP_geodesics {
 /// form one fan around it ("centre N ..."), a negative or NaN radius (`+infinity`: whole log maps), `lambda` or
 /// `virtual_sources` (the log map needs the exact method), `initial_distances`. `statistics()` afterwards sums
 /// the runs (`reached_vertices`: the number of entries).
+///
+/// Index widths: a vertex index is a `std::uint32_t` because the solver takes at most 2^31 - 1 vertices (its
+/// constructor throws `Invalid_input_error` beyond, "the mesh is too large"), so every vertex index fits, and an
+/// entry then takes 20 bytes instead of 24 (patches of a large mesh hold billions of entries). The offsets are
+/// `std::size_t`: the number of entries of all patches is not bounded by 2^31 (nor 2^32), only by memory.
 struct Polar_patches
 {
   std::vector<std::size_t> offsets;     ///< `number_of_patches() + 1` row offsets; `offsets[0] = 0`
-  std::vector<std::uint32_t> vertices;  ///< the vertex index of each entry, ascending within a patch
+  std::vector<std::uint32_t> vertices;  ///< the vertex index of each entry, ascending within a patch (32 bits:
+                                        ///< see above)
   std::vector<double> rho;              ///< the geodesic distance of each entry to its centre
   std::vector<double> theta;            ///< the angle of each entry at its centre, in `[0, 2 pi)`
 

@@ -14,9 +14,9 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
+#include <CGAL/VTP_geodesics/Surface_polyline.h>
+
 #include <array>
-#include <utility>
-#include <vector>
 
 namespace CGAL {
 namespace VTP_geodesics {
@@ -31,21 +31,19 @@ namespace VTP_geodesics {
 /// (an edge of the border, or a border vertex: the rule has no meaning there), or on the edge of a face of
 /// (almost) zero area, which has no plane to walk in.
 ///
+/// It is a `Surface_polyline` (`points` and `locations`): the start, each crossing of an edge (located in the
+/// face the walk leaves), each vertex passed (in the face the walk arrives from) and the end (in its face). Two
+/// consecutive points may be the same point of the surface in two faces (a start on an edge, a vertex the walk
+/// turns at).
+///
 /// \tparam FaceDescriptor the face descriptor of the mesh.
 /// \tparam Point3 the point type of the vertex point map.
 template <class FaceDescriptor, class Point3>
-struct Straightest_geodesic
+struct Straightest_geodesic : Surface_polyline<FaceDescriptor, Point3>
 {
-  /// a face and the barycentric coordinates of a point with respect to `source(halfedge(f))`,
-  /// `target(halfedge(f))` and `target(next(halfedge(f)))`.
-  typedef std::pair<FaceDescriptor, std::array<double, 3> > Face_location;
+  /// the location type of this package (`CGAL::VTP_geodesics::Face_location<FaceDescriptor>`).
+  typedef VTP_geodesics::Face_location<FaceDescriptor> Face_location;
 
-  /// the points of the polyline as face locations: the start, each crossing of an edge (in the face the walk
-  /// leaves), each vertex passed (in the face the walk arrives from) and the end (in its face). Two consecutive
-  /// points may be the same point of the surface in two faces (a start on an edge, a vertex the walk turns at).
-  std::vector<Face_location> locations;
-  /// the same points in space (from the barycentric coordinates and the vertex point map).
-  std::vector<Point3> points;
   /// the end point: `locations.back()` and `points.back()`.
   Face_location end_location;
   Point3 end_point;

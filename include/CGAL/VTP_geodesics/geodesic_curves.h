@@ -15,6 +15,7 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
+#include <CGAL/VTP_geodesics/Surface_polyline.h>
 #include <CGAL/VTP_geodesics/geodesic_voronoi_cells.h>
 #include <CGAL/VTP_geodesics/parameters.h>
 #include <CGAL/VTP_geodesics/internal/curves/Curve_extraction.h>
@@ -39,14 +40,13 @@ namespace VTP_geodesics {
 
 /// \ingroup PkgVTPGeodesicsRef
 /// A curve on the surface: an isoline of the distance (`level`) or a border between two geodesic Voronoi
-/// cells (`cells`), as an ordered list of points, each given as a point and as a face location (a face and
-/// its barycentric coordinates, as the solver takes them). Two consecutive points lie in a common face
-/// (they are joined by a chord of the curve inside it). A closed curve does not repeat its first point.
+/// cells (`cells`). It is a `Surface_polyline` (`points` and their face `locations`, as the solver takes them):
+/// two consecutive points lie in a common face (they are joined by a chord of the curve inside it). A closed
+/// curve does not repeat its first point.
 template <class FaceDescriptor, class Point>
-struct Geodesic_curve
+struct Geodesic_curve : Surface_polyline<FaceDescriptor, Point>
 {
-  std::vector<Point> points;
-  std::vector<std::pair<FaceDescriptor, std::array<double, 3> > > locations;
+  /// whether the curve is closed (its last point is joined to its first)
   bool closed = false;
   /// the level of an isoline (NaN for a border)
   double level = std::numeric_limits<double>::quiet_NaN();
@@ -55,7 +55,9 @@ struct Geodesic_curve
 };
 
 /// \ingroup PkgVTPGeodesicsRef
-/// What the extraction of curves could not place from the field of the faces (see `geodesic_isolines()`).
+/// What the extraction of curves could not place from the field of the faces: an extra result of
+/// `geodesic_isolines()` and `geodesic_cell_borders()`, asked for as `statistics` is, with the named parameter
+/// `curves_report(r)` (`r` a `Geodesic_curves_report&` that the function fills).
 struct Geodesic_curves_report
 {
   std::size_t points = 0;           ///< points written
@@ -79,6 +81,7 @@ extract_curves(const Solver& solver, const std::vector<double>* levels, const NP
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef Geodesic_curve<typename Solver::face_descriptor, typename Solver::Point_3> Curve;
+  report = choose_parameter(get_parameter(np, internal_np::curves_report), report);
   const auto& index = solver.mesh_index();
   const Propagation_engine& engine = solver.engine();
   if(!engine.path_record().is_active() && !engine.kept_field().is_active())
@@ -191,8 +194,11 @@ extract_curves(const Solver& solver, const std::vector<double>* levels, const NP
 ///   the mean edge length), `vertex_point_map` (default: that of the mesh), `exact_refinement` (a number of
 ///   runs, default 0, at most 10: each is an exact run (VTP) from the same sources with every point as a
 ///   target, after which each point moves onto its level along the circle of the exact image that reaches it;
-///   each costs about one distance run)
-/// \param report optional: what could not be placed from the field of the faces
+///   each costs about one distance run), `curves_report` (a `Geodesic_curves_report&` that receives what could
+///   not be placed from the field of the faces; the one way of the package to return an extra result, as
+///   `statistics`)
+/// \param report deprecated alias of the named parameter `curves_report` (a pointer, or `nullptr`; the named
+///   parameter wins if both are given)
 /// \throws Invalid_input_error if a level is negative or not a number, the tolerance is not positive, or the
 /// last computation kept neither its field nor its paths.
 template <class Solver, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -236,7 +242,8 @@ std::vector<double> geodesic_isoline_levels(const Solver& solver, double step)
 /// three cells where the three are equal, and the points inside faces where the two labels change along lines
 /// across the chords, added where a border bends away from its chords by more than the tolerance; from the
 /// per-vertex record (`record_paths(true)`), which edges a border crosses is decided by the nearest-source
-/// labels of the vertices. Parameters, report and exceptions as `geodesic_isolines()`.
+/// labels of the vertices. Parameters (`curves_report`, and the deprecated trailing `report`) and exceptions as
+/// `geodesic_isolines()`.
 template <class Solver, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<Geodesic_curve<typename Solver::face_descriptor, typename Solver::Point_3> >
 geodesic_cell_borders(const Solver& solver, const NamedParameters& np = parameters::default_values(),
@@ -250,8 +257,10 @@ geodesic_cell_borders(const Solver& solver, const NamedParameters& np = paramete
 /// `keep_field(true)`, or `record_paths(true)`), from the split of the faces by the borders of
 /// `geodesic_cell_borders()`: a face that no border enters is in the cell of its corners; a face that borders
 /// enter is cut along their pieces (per cell, the area enclosed by its arcs of the face's boundary and the
-/// pieces beside it). The areas add up to the area of the faces whose corners are all reached (to rounding). `uncertainty[i]`: the chord tolerance times the length of the border of cell i, a bound of the
-/// area between the chords and the borders (where the borders are exact; see the manual, curves).
+/// pieces beside it). The areas add up to the area of the faces whose corners are all reached (to rounding).
+/// `uncertainty[i]` (a bound of |`areas[i]` - the true area|, see `Voronoi_cell_areas`): the chord tolerance times
+/// the length of the border of cell i, which bounds the area between the chords and the borders; a bound where
+/// the borders are exact (with the kept field; see the manual, curves).
 /// \param solver a solver whose last computation kept its field or its paths, from several sources.
 /// \param np optional: `chord_tolerance`, `vertex_point_map` (as `geodesic_isolines()`)
 /// \throws Invalid_input_error as `geodesic_cell_borders()`.

@@ -35,14 +35,18 @@ namespace CGAL {
 namespace VTP_geodesics {
 
 /// \ingroup PkgVTPGeodesicsRef
-/// The areas of geodesic Voronoi cells (`geodesic_voronoi_cell_areas()`).
+/// The areas of geodesic Voronoi cells, as both `geodesic_voronoi_cell_areas()` give them: from a
+/// nearest-source labelling of the vertices (geodesic_voronoi_cells.h) or from the field of a solver
+/// (geodesic_curves.h).
 struct Voronoi_cell_areas
 {
   /// `areas[i]`: the area of the part of the surface nearest to source (sample) `i`.
   std::vector<double> areas;
-  /// `uncertainty[i]`: the total area of the faces that cell `i` shares with another cell (or with the
-  /// unreached part), inside which the border of the cell is estimated: the error of `areas[i]` is a small
-  /// fraction of it.
+  /// `uncertainty[i]`: a bound of |`areas[i]` - the true area of cell `i`|, which holds under the condition that
+  /// the function that computed it states (one meaning for both): from the labels of the vertices, the total area
+  /// of the split faces (faces whose corners have different labels) with a corner in cell `i`, a bound when the
+  /// cell meets no face without a corner in it; from the field of a solver, the chord tolerance times the length
+  /// of the border of cell `i` (the area between its chords and its arcs), a bound where the borders are exact.
   std::vector<double> uncertainty;
 };
 
@@ -84,8 +88,9 @@ inline std::array<double, 3> lerp(const std::array<double, 3>& p, const std::arr
 /// the two distances, each extended straight along the edge from its end, are equal, and it is straight in
 /// between (through the mean of the three edge points when the three labels differ). This is exact when
 /// the two nearest sources are seen along the edge and only an estimate otherwise: the area of every face
-/// so split is counted in `uncertainty` of the cells it touches, a bound of the error of the area of the
-/// cell (refining the mesh makes it small). A corner without a label (unreached) takes its share of the
+/// so split is counted (once) in `uncertainty` of each cell that has a corner in it, a bound of |`areas[i]` -
+/// the true area| when cell `i` meets no face without a corner labelled `i` (no cell pokes across an edge
+/// whose two vertices are in another cell; refining the mesh makes the bound small). A corner without a label (unreached) takes its share of the
 /// face out of every cell. The areas of the cells and of the unreached part add up to the area of `tm`.
 ///
 /// \param tm the triangle mesh

@@ -24,6 +24,8 @@
 namespace CGAL {
 namespace VTP_geodesics {
 
+struct Geodesic_curves_report;  // geodesic_curves.h
+
 /// \ingroup PkgVTPGeodesicsRef
 /// The reset period `lambda` we recommend for the approximate variants (AVTP / PAVTP), used by the
 /// command-line tools when none is given: on our benchmark meshes it keeps the mean relative error
@@ -38,7 +40,8 @@ constexpr std::size_t no_source = (std::numeric_limits<std::size_t>::max)();
 
 /// \cond SKIP_IN_MANUAL
 // The names of the named parameters of this package, listed once: X(NAME) for each, whose tag is
-// internal_np::NAME_t (but `statistics`, whose link takes a reference and keeps a pointer: see below).
+// internal_np::NAME_t (but the extra results, `statistics` and `curves_report`, whose links take a reference to
+// the caller's object and keep a pointer to it: see below).
 #define CGAL_VTP_GEODESICS_FOR_EACH_NAMED_PARAMETER(X)                                                   \
   X(lambda) X(lambda_g) X(number_of_threads) X(minimum_window_length) X(nearest_source_map)              \
   X(maximum_distance) X(targets) X(stop_at_targets) X(record_paths) X(virtual_sources)                   \
@@ -46,6 +49,11 @@ constexpr std::size_t no_source = (std::numeric_limits<std::size_t>::max)();
   X(first_sample) X(sampling_radius) X(covering_radii) X(vertex_distance_map) X(log_map) X(log_map_via)      \
   X(log_map_strict) X(reference_direction) X(chord_tolerance) X(exact_refinement) \
   X(keep_field)
+
+// The extra results: X(NAME, TYPE), a link NAME(TYPE& r) that keeps &r (the function writes into r). Every
+// result besides the main one (the return value or the output map) comes back this way.
+#define CGAL_VTP_GEODESICS_FOR_EACH_RESULT_PARAMETER(X)                                                  \
+  X(statistics, Propagation_statistics) X(curves_report, Geodesic_curves_report)
 
 // The names of CGAL's named parameters that a chain of this package can hold: X(NAME, TAG_TYPE).
 #define CGAL_VTP_GEODESICS_FOR_EACH_CGAL_NAMED_PARAMETER(X)                                              \
@@ -56,7 +64,9 @@ namespace internal_np {
 #define CGAL_VTP_GEODESICS_TAG(NAME) enum NAME##_t { NAME };
 CGAL_VTP_GEODESICS_FOR_EACH_NAMED_PARAMETER(CGAL_VTP_GEODESICS_TAG)
 #undef CGAL_VTP_GEODESICS_TAG
-enum statistics_t { statistics };
+#define CGAL_VTP_GEODESICS_RESULT_TAG(NAME, TYPE) enum NAME##_t { NAME };
+CGAL_VTP_GEODESICS_FOR_EACH_RESULT_PARAMETER(CGAL_VTP_GEODESICS_RESULT_TAG)
+#undef CGAL_VTP_GEODESICS_RESULT_TAG
 
 } // namespace internal_np
 
@@ -84,14 +94,15 @@ struct Named_parameters
 #define CGAL_VTP_GEODESICS_PACKAGE_LINK(NAME) CGAL_VTP_GEODESICS_LINK(NAME, internal_np::NAME##_t)
   CGAL_VTP_GEODESICS_FOR_EACH_NAMED_PARAMETER(CGAL_VTP_GEODESICS_PACKAGE_LINK)
   CGAL_VTP_GEODESICS_FOR_EACH_CGAL_NAMED_PARAMETER(CGAL_VTP_GEODESICS_LINK)
+#define CGAL_VTP_GEODESICS_RESULT_LINK(NAME, TYPE)                                \
+  Named_parameters<TYPE*, internal_np::NAME##_t, self> NAME(TYPE& r) const         \
+  {                                                                                \
+    return Named_parameters<TYPE*, internal_np::NAME##_t, self>(&r, *this);        \
+  }
+  CGAL_VTP_GEODESICS_FOR_EACH_RESULT_PARAMETER(CGAL_VTP_GEODESICS_RESULT_LINK)
+#undef CGAL_VTP_GEODESICS_RESULT_LINK
 #undef CGAL_VTP_GEODESICS_PACKAGE_LINK
 #undef CGAL_VTP_GEODESICS_LINK
-
-  Named_parameters<Propagation_statistics*, internal_np::statistics_t, self>
-  statistics(Propagation_statistics& s) const
-  {
-    return Named_parameters<Propagation_statistics*, internal_np::statistics_t, self>(&s, *this);
-  }
 };
 /// \endcond
 
@@ -116,16 +127,19 @@ CGAL_VTP_GEODESICS_FOR_EACH_CGAL_NAMED_PARAMETER(CGAL_VTP_GEODESICS_FIRST_LINK)
 #undef CGAL_VTP_GEODESICS_PACKAGE_FIRST_LINK
 #undef CGAL_VTP_GEODESICS_FIRST_LINK
 
-inline Named_parameters<Propagation_statistics*, internal_np::statistics_t>
-statistics(Propagation_statistics& s)
-{
-  return Named_parameters<Propagation_statistics*, internal_np::statistics_t>(&s);
-}
+#define CGAL_VTP_GEODESICS_FIRST_RESULT_LINK(NAME, TYPE)                           \
+  inline Named_parameters<TYPE*, internal_np::NAME##_t> NAME(TYPE& r)              \
+  {                                                                                \
+    return Named_parameters<TYPE*, internal_np::NAME##_t>(&r);                     \
+  }
+CGAL_VTP_GEODESICS_FOR_EACH_RESULT_PARAMETER(CGAL_VTP_GEODESICS_FIRST_RESULT_LINK)
+#undef CGAL_VTP_GEODESICS_FIRST_RESULT_LINK
 
 using CGAL::parameters::default_values;
 
 #undef CGAL_VTP_GEODESICS_FOR_EACH_NAMED_PARAMETER
 #undef CGAL_VTP_GEODESICS_FOR_EACH_CGAL_NAMED_PARAMETER
+#undef CGAL_VTP_GEODESICS_FOR_EACH_RESULT_PARAMETER
 /// \endcond
 
 } // namespace parameters

@@ -20,6 +20,10 @@
 
 #include <CGAL/tags.h>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
@@ -130,17 +134,35 @@ decltype(auto) with_method(const Method_info& m, double lambda, int threads, Cal
 #endif
 }
 
+// The concurrency tag of work spread over rows, one row per thread (compute_each(), compute_each_polar_patch(),
+// straightest_geodesics()): CGAL::Parallel_tag in a program built with OpenMP, else CGAL::Sequential_tag (the
+// rows one after another). The one place outside the library that chooses between the two tags.
+#ifdef _OPENMP
+typedef CGAL::Parallel_tag Rows_tag;
+constexpr bool rows_on_threads = true;
+#else
+typedef CGAL::Sequential_tag Rows_tag;
+constexpr bool rows_on_threads = false;
+#endif
+
+// The number of threads when none is asked for: OpenMP's default (omp_get_max_threads(): OMP_NUM_THREADS, or the
+// number of processors), 1 in a program built without OpenMP.
+inline int default_threads()
+{
+#ifdef _OPENMP
+  return omp_get_max_threads();
+#else
+  return 1;
+#endif
+}
+
 // The batches: solver.compute_each(sources, sink, np), one row per source, the rows on the threads of `np` (each
 // row on one thread, whatever the method: compute_each() runs the sequential scheduling of each row; its
 // Parallel_tag is that of the rows), or one after another in a program built without OpenMP.
 template <class Solver, class Sources, class Sink, class NamedParameters>
 void compute_each_on_threads(Solver& solver, const Sources& sources, Sink&& sink, const NamedParameters& np)
 {
-#ifdef _OPENMP
-  solver.template compute_each<CGAL::Parallel_tag>(sources, std::forward<Sink>(sink), np);
-#else
-  solver.template compute_each<CGAL::Sequential_tag>(sources, std::forward<Sink>(sink), np);
-#endif
+  solver.template compute_each<Rows_tag>(sources, std::forward<Sink>(sink), np);
 }
 
 } // namespace vtp_support

@@ -44,21 +44,6 @@ enum class Statistic_unit
   ratio     // a quotient of two quantities of the same unit
 };
 
-inline const char* unit_name(Statistic_unit u)
-{
-  switch(u)
-  {
-    case Statistic_unit::count: return "";
-    case Statistic_unit::bytes: return "bytes";
-    case Statistic_unit::seconds: return "s";
-    case Statistic_unit::length: return "mesh units";
-    case Statistic_unit::flag: return "";
-    case Statistic_unit::text: return "";
-    case Statistic_unit::ratio: return "";
-  }
-  return "";
-}
-
 // Calls f(name, field, unit) for each field of `s`, in the order the outputs list them. `field` is a reference
 // to the field (const when `s` is): std::size_t, int, bool, double or std::string. Works on a const statistics
 // object (to write it) and on a mutable one (to read it back, as the benchmark does from its child processes).

@@ -17,7 +17,7 @@
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
 #include <CGAL/VTP_geodesics/internal/curves/Curve_extraction.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
-#include <CGAL/VTP_geodesics/internal/engine/Targets.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Targets.h>
 
 #include <CGAL/tags.h>
 

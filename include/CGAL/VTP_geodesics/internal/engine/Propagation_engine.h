@@ -15,13 +15,13 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
-#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
-#include <CGAL/VTP_geodesics/internal/engine/Known_vertices.h>
-#include <CGAL/VTP_geodesics/internal/engine/Parallel_loop.h>
-#include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
-#include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
-#include <CGAL/VTP_geodesics/internal/engine/Sequential_loop.h>
-#include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Known_vertices.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Parallel_loop.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Propagation_state.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Seeding.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Sequential_loop.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Stop_rule.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
 #include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_front.h>
 

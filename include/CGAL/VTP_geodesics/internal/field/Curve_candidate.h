@@ -14,8 +14,8 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
-#include <CGAL/VTP_geodesics/internal/Face_frame.h>
-#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Face_frame.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/field/Kept_field.h>
 
 #include <algorithm>

@@ -14,11 +14,11 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
-#include <CGAL/VTP_geodesics/internal/Face_frame.h>
-#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Face_frame.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/field/Curve_candidate.h>
-#include <CGAL/VTP_geodesics/internal/engine/Path_record.h>
-#include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
+#include <CGAL/VTP_geodesics/internal/paths/Path_record.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Seeding.h>
 
 #include <algorithm>
 #include <array>
@@ -431,7 +431,7 @@ private:
   const Kept_field* m_crossings;
   std::vector<Index> m_label;
   std::vector<std::pair<Index, Index> > m_face_seeds;  // (face, seed), sorted
-  mutable std::vector<std::pair<Index, double> > m_bound;  // (prune())
+  mutable std::vector<std::pair<Index, double> > m_bound;  // (prune_candidates())
   mutable std::array<std::pair<Index, std::vector<Curve_candidate> >, 8> m_cache;  // the faces last built
   mutable std::size_t m_next_cache = 0;
 };

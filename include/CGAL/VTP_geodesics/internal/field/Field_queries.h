@@ -14,8 +14,8 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
-#include <CGAL/VTP_geodesics/internal/Face_frame.h>
-#include <CGAL/VTP_geodesics/internal/Surface_point.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Face_frame.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Surface_point.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
 #include <CGAL/VTP_geodesics/internal/field/Curve_field.h>
 

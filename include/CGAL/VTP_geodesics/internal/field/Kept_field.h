@@ -14,9 +14,9 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
-#include <CGAL/VTP_geodesics/internal/Huge_page_allocator.h>
-#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
-#include <CGAL/VTP_geodesics/internal/Window.h>
+#include <CGAL/VTP_geodesics/internal/memory/Huge_page_allocator.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/windows/Window.h>
 
 #include <CGAL/assertions.h>
 
@@ -90,7 +90,7 @@ private:
 };
 
 // The kept field (named parameter keep_field): every window that a list propagates across a face, indexed by
-// face after the run. A recording policy like the path record (engine/Path_record.h): O(windows propagated),
+// face after the run. A recording policy like the path record (paths/Path_record.h): O(windows propagated),
 // off unless asked for; exact methods only (VTP, PVTP: the resets of AVTP / PAVTP replace windows by fewer,
 // approximate ones, and VSP has none).
 //

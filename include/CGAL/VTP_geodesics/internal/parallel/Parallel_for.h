@@ -111,7 +111,7 @@ private:
 // Runs body(t) on each thread t of a team of `threads` OpenMP threads (on the calling thread alone, t = 0, when
 // threads <= 1 or without OpenMP), after start(team) on one of them, which the others wait for: `team` is the
 // number of threads the runtime gave (it may give fewer than asked for). Returns it. The team of a whole
-// propagation (engine/Parallel_loop.h, virtual_sources/Virtual_source_rounds.h): start and body must not
+// propagation (propagation/Parallel_loop.h, virtual_sources/Virtual_source_rounds.h): start and body must not
 // throw (an exception cannot leave an OpenMP region: see Exception_capture).
 template <class Start, class Body>
 int run_team(int threads, const Start& start, const Body& body)

@@ -18,7 +18,7 @@
 #include <CGAL/VTP_geodesics/Farthest_point_samples.h>
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/parameters.h>
-#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
 #include <CGAL/VTP_geodesics/internal/solver/Settings_from_parameters.h>
 #include <CGAL/VTP_geodesics/internal/solver/Statistics_merge.h>

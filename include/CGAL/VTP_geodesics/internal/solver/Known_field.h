@@ -16,10 +16,10 @@
 
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/parameters.h>
-#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
-#include <CGAL/VTP_geodesics/internal/engine/Known_vertices.h>
-#include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
-#include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Known_vertices.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Propagation_state.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Seeding.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -37,7 +37,7 @@ namespace internal {
 
 // The field a computation starts from (named parameters initial_distances, initial_nearest_sources and
 // first_source_label), read from the maps of the user into the engine's unit (Known_field, per vertex index:
-// engine/Known_vertices.h) and validated.
+// propagation/Known_vertices.h) and validated.
 
 // (without initial_nearest_sources, the known distances have no label)
 template <class MeshIndex>

@@ -19,17 +19,15 @@
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
 #include <CGAL/VTP_geodesics/internal/solver/Settings_from_parameters.h>
-#include <CGAL/VTP_geodesics/internal/solver/Statistics_merge.h>
+#include <CGAL/VTP_geodesics/internal/solver/Rows_on_threads.h>
 
 #include <CGAL/tags.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstddef>
 #include <iterator>
 #include <limits>
 #include <memory>
-#include <mutex>
 #include <vector>
 
 namespace CGAL {
@@ -51,51 +49,25 @@ void compute_rows(const Mesh_arrays& arrays, const std::vector<Index>& position,
 {
   CGAL_precondition(items.size() == seeds.size());
   threads = parallel ? number_of_threads(threads) : 1;
-  threads = (std::max)(1, (std::min)(threads, static_cast<int>((std::max)(std::size_t(1), seeds.size()))));
-  while(workspaces.size() < static_cast<std::size_t>(threads))
-    workspaces.emplace_back(new Propagation_engine());
-  std::vector<Propagation_statistics> per_thread(static_cast<std::size_t>(threads));
-  std::vector<std::vector<double> > rows(static_cast<std::size_t>(threads));
-
-  const auto t0 = std::chrono::steady_clock::now();
-  Parallel_for loop(threads, Parallel_for::DYNAMIC);
-  std::mutex sink_mutex;
-  bool sink_failed = false;  // under sink_mutex
-  loop.run(static_cast<long long>(seeds.size()), [&](long long il, int t) {
-    const std::size_t i = static_cast<std::size_t>(il);
-    Propagation_engine& workspace = *workspaces[static_cast<std::size_t>(t)];
-    Propagation_statistics st;
-    workspace.template run<CGAL::Sequential_tag>(arrays, std::vector<Seed>(1, seeds[i]), std::vector<Target>(),
-                                                 settings, 1, st);
-    add_row_statistics(st, per_thread[static_cast<std::size_t>(t)]);
-    std::vector<double>& row = rows[static_cast<std::size_t>(t)];
-    const std::vector<double>& d = workspace.distances();
-    row.resize(d.size());
-    for(std::size_t v = 0; v < d.size(); ++v)
-      row[static_cast<std::size_t>(position[v])] = d[v];
-    std::lock_guard<std::mutex> lock(sink_mutex);
-    if(sink_failed || loop.failed())
-      return;
-    try
-    {
-      sink(i, items[i], static_cast<const std::vector<double>&>(row));
-    }
-    catch(...)
-    {
-      sink_failed = true;
-      throw;
-    }
-  }, /* rethrow */ false);
+  std::vector<std::vector<double> > rows(static_cast<std::size_t>(threads));  // per thread
   statistics = Propagation_statistics();
   statistics.vertices = static_cast<std::size_t>(arrays.nv);
   statistics.faces = static_cast<std::size_t>(arrays.nf);
   statistics.method = settings.reset_step < std::numeric_limits<double>::infinity() ? "avtp" : "vtp";
-  statistics.threads = threads;
-  statistics.sources = seeds.size();
-  for(const Propagation_statistics& st : per_thread)
-    add_row_statistics(st, statistics);
-  statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  loop.rethrow();
+  run_rows_on_threads(seeds.size(), threads, workspaces,
+    [&](std::size_t i, Propagation_engine& workspace, int t, Propagation_statistics& st) {
+      workspace.template run<CGAL::Sequential_tag>(arrays, std::vector<Seed>(1, seeds[i]), std::vector<Target>(),
+                                                   settings, 1, st);
+      std::vector<double>& row = rows[static_cast<std::size_t>(t)];
+      const std::vector<double>& d = workspace.distances();
+      row.resize(d.size());
+      for(std::size_t v = 0; v < d.size(); ++v)
+        row[static_cast<std::size_t>(position[v])] = d[v];
+    },
+    [&](std::size_t i, int t) {
+      sink(i, items[i], static_cast<const std::vector<double>&>(rows[static_cast<std::size_t>(t)]));
+    },
+    statistics);
 }
 
 // Geodesic_distance_solver::compute_each() on the solver's mesh (Mesh_index `mesh`): the sources validated

@@ -15,7 +15,7 @@
 
 #include <CGAL/VTP_geodesics/Invalid_input_error.h>
 #include <CGAL/VTP_geodesics/parameters.h>
-#include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Propagation_state.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>

@@ -19,8 +19,8 @@
 #include <CGAL/VTP_geodesics/internal/engine/Propagation_engine.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
 #include <CGAL/VTP_geodesics/internal/solver/Known_field.h>
-#include <CGAL/VTP_geodesics/internal/solver/Log_map_output.h>
-#include <CGAL/VTP_geodesics/internal/solver/Path_queries.h>
+#include <CGAL/VTP_geodesics/internal/log_map/Log_map_output.h>
+#include <CGAL/VTP_geodesics/internal/paths/Path_queries.h>
 #include <CGAL/VTP_geodesics/internal/solver/Settings_from_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>

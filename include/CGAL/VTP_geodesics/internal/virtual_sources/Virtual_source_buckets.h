@@ -14,7 +14,7 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
-#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_arrays.h>
 
 #include <algorithm>
 #include <cmath>

@@ -15,13 +15,13 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
-#include <CGAL/VTP_geodesics/internal/Huge_page_allocator.h>
-#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
-#include <CGAL/VTP_geodesics/internal/engine/Path_record.h>
-#include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
-#include <CGAL/VTP_geodesics/internal/engine/Seeding.h>
-#include <CGAL/VTP_geodesics/internal/engine/Stop_rule.h>
-#include <CGAL/VTP_geodesics/internal/engine/Targets.h>
+#include <CGAL/VTP_geodesics/internal/memory/Huge_page_allocator.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/paths/Path_record.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Propagation_state.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Seeding.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Stop_rule.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Targets.h>
 
 #include <CGAL/assertions.h>
 

@@ -15,9 +15,9 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/Propagation_statistics.h>
-#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
-#include <CGAL/VTP_geodesics/internal/engine/Known_vertices.h>
-#include <CGAL/VTP_geodesics/internal/engine/Propagation_state.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Known_vertices.h>
+#include <CGAL/VTP_geodesics/internal/propagation/Propagation_state.h>
 #include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_field.h>
 #include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_rounds.h>
 #include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_walks.h>

@@ -14,7 +14,7 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
-#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Parallel_for.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Round_team.h>
 #include <CGAL/VTP_geodesics/internal/parallel/Stealing_ranges.h>

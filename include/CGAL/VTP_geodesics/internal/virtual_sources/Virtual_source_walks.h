@@ -14,7 +14,7 @@
 
 #include <CGAL/license/VTP_geodesics.h>
 
-#include <CGAL/VTP_geodesics/internal/Mesh_arrays.h>
+#include <CGAL/VTP_geodesics/internal/mesh/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/virtual_sources/Virtual_source_field.h>
 
 #include <cmath>
