@@ -17,6 +17,7 @@
 #include <vtp_support/mesh_formats.h>
 #include <vtp_support/number_format.h>
 
+#include <algorithm>
 #include <string>
 
 namespace vtp_geodesics_app {
@@ -59,7 +60,8 @@ Path_format path_format(const std::string& file)
   return vtp_support::lower_extension(file) == "obj" ? Path_format::OBJ : Path_format::POLYLINES;
 }
 
-void write_paths(std::ostream& os, Path_format format, const std::vector<std::vector<std::array<double, 3> > >& paths)
+void write_paths(std::ostream& os, Path_format format, const std::vector<std::vector<std::array<double, 3> > >& paths,
+                 const std::vector<Arguments::Trace>& traces)
 {
   std::string text;
   char buffer[vtp_support::max_double_chars];
@@ -80,8 +82,33 @@ void write_paths(std::ostream& os, Path_format format, const std::vector<std::ve
   }
   else
   {
-    text += "# vtp_geodesics: " + std::to_string(paths.size())
-            + " geodesic paths, one 'l' element each, from the target to the source\n";
+    const std::size_t geodesic_paths = paths.size() - (std::min)(traces.size(), paths.size());
+    if(traces.empty())
+      text += "# vtp_geodesics: " + std::to_string(paths.size())
+              + " geodesic paths, one 'l' element each, from the target to the source\n";
+    else
+    {
+      auto count = [](std::size_t n, const char* what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); };
+      text += "# vtp_geodesics: ";
+      if(geodesic_paths > 0)
+        text += count(geodesic_paths, "geodesic path") + ", from the target to the source, then ";
+      text += count(traces.size(), "straightest geodesic") + " (--straightest-geodesic), each from its start point, one"
+              " 'l' element each\n";
+      for(std::size_t k = 0; k < traces.size(); ++k)
+      {
+        text += "# 'l' element " + std::to_string(geodesic_paths + k + 1) + ": straightest geodesic from vertex "
+                + std::to_string(traces[k].vertex) + ", direction (";
+        for(int i = 0; i < 3; ++i)
+        {
+          if(i > 0)
+            text += ", ";
+          number(traces[k].direction[static_cast<std::size_t>(i)]);
+        }
+        text += ") projected onto the tangent plane, length ";
+        number(traces[k].length);
+        text += " (less if it reaches the border)\n";
+      }
+    }
     for(const std::vector<std::array<double, 3> >& path : paths)
       for(const std::array<double, 3>& p : path)
       {
@@ -195,7 +222,7 @@ void write_outputs(Output_files& files, const Arguments& args, const vtp_support
     files.write(args.samples_output, [&](std::ostream& os) { write_samples(os, results.samples, run.radii); });
   if(!args.path_output.empty())
     files.write(args.path_output,
-                [&](std::ostream& os) { write_paths(os, path_format(args.path_output), results.paths); });
+                [&](std::ostream& os) { write_paths(os, path_format(args.path_output), results.paths, args.traces); });
   if(!args.log_map_output.empty())
     files.write(args.log_map_output, [&](std::ostream& os) { write_log_map(os, results.log_map); });
   if(!args.curves_output.empty())

@@ -47,9 +47,12 @@ enum class Path_format { POLYLINES, OBJ };
 // The format of `--path-output FILE`: OBJ for a .obj extension, else CGAL's polylines text.
 Path_format path_format(const std::string& file);
 
-// Writes geodesic paths (each: its points, target first) as CGAL's polylines text (one path per line:
-// N x1 y1 z1 ... xN yN zN) or as OBJ ('v' lines, then one 'l' line per path; a path of one point is 'l i i').
-void write_paths(std::ostream& os, Path_format format, const std::vector<std::vector<std::array<double, 3> > >& paths);
+// Writes geodesic paths (each: its points, target first), then the straightest geodesics of `traces` (the last
+// traces.size() polylines of `paths`, each from its start), as CGAL's polylines text (one polyline per line:
+// N x1 y1 z1 ... xN yN zN) or as OBJ (a header comment saying what each polyline is, 'v' lines, then one 'l' line
+// per polyline; a polyline of one point is 'l i i').
+void write_paths(std::ostream& os, Path_format format, const std::vector<std::vector<std::array<double, 3> > >& paths,
+                 const std::vector<Arguments::Trace>& traces = std::vector<Arguments::Trace>());
 
 struct Picture_request
 {

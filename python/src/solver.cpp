@@ -140,7 +140,7 @@ std::string Core_solver::build_mesh(const double* v, std::size_t n, const std::i
         std::string s = "face " + std::to_string(k / 3) + " has vertex index " + std::to_string(f[k])
                         + ", out of range [0, " + std::to_string(n) + ")";
         if(lo >= 1 && hi == static_cast<std::int64_t>(n))
-          s += " (are the faces numbered from 1? subtract 1, or pass is_one_indexed=True to the gdist functions)";
+          s += " (are the faces numbered from 1? pass F - 1)";
         return s;
       }
   }

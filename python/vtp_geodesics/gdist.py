@@ -50,7 +50,13 @@ def _solver(vertices, triangles, is_one_indexed):
             raise ValueError("is_one_indexed=True, but triangles hold the index %d (one-indexed triangles start at 1)"
                              % F.min())
         F = F - 1
-    return _Solver(vertices, F)
+    try:
+        return _Solver(vertices, F)
+    except ValueError as e:
+        if is_one_indexed or "numbered from 1?" not in str(e):
+            raise
+        # the gdist functions take one-indexed triangles with their own argument
+        raise ValueError(str(e).replace("pass F - 1", "pass is_one_indexed=True")) from None
 
 
 def _indices(x, name, n):

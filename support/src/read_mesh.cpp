@@ -76,6 +76,64 @@ std::string diagnose_text_file(const std::string& file, const std::string& ext)
   return std::string();
 }
 
+// When CGAL's reader refuses an ASCII OFF file, looks for a vertex line it cannot read, as it reads them: the lines
+// with content after the counts (a '#' starts a comment), one per vertex, each needing 3 numbers (4 with the
+// homogeneous coordinate of 4OFF) before anything else. Returns "line L: vertex i ...", L the line of the file
+// (from 1), i the vertex (from 0); or an empty string if none is found (or the header is one this does not follow).
+std::string diagnose_off_file(const std::string& file)
+{
+  std::ifstream in(file);
+  std::string line;
+  std::size_t number = 0;
+  std::vector<std::string> words;
+  auto next_content = [&]() {  // the words of the next line with content, before any '#'
+    while(std::getline(in, line))
+    {
+      ++number;
+      std::istringstream text(line.substr(0, line.find('#')));
+      words.clear();
+      for(std::string w; text >> w;)
+        words.push_back(w);
+      if(!words.empty())
+        return true;
+    }
+    return false;
+  };
+  if(!next_content())
+    return std::string();
+  // The keyword: [ST][C][N][4]OFF (not nOFF, not BINARY), then the counts: vertices, faces, edges.
+  std::string keyword = words[0];
+  std::size_t j = 0;
+  for(const char* prefix : { "ST", "C", "N", "4" })
+    if(keyword.compare(j, std::strlen(prefix), prefix) == 0)
+      j += std::strlen(prefix);
+  if(keyword.compare(j, std::string::npos, "OFF") != 0)
+    return std::string();
+  const std::size_t needed = (keyword.find('4') != std::string::npos) ? 4 : 3;
+  std::vector<std::string> counts(words.begin() + 1, words.end());
+  while(counts.size() < 3 && next_content())
+    counts.insert(counts.end(), words.begin(), words.end());
+  if(counts.size() != 3)
+    return std::string();
+  for(char c : counts[0])
+    if(c < '0' || c > '9')
+      return std::string();
+  const std::size_t vertices = static_cast<std::size_t>(std::strtoull(counts[0].c_str(), nullptr, 10));
+  for(std::size_t i = 0; i < vertices && next_content(); ++i)
+    for(std::size_t k = 0; k < needed; ++k)
+    {
+      if(k == words.size())
+        return "line " + std::to_string(number) + ": vertex " + std::to_string(i) + " has " + std::to_string(k)
+               + (k == 1 ? " coordinate" : " coordinates") + " (expected " + std::to_string(needed) + ")";
+      char* end = nullptr;
+      const double x = std::strtod(words[k].c_str(), &end);
+      if(end != words[k].c_str() + words[k].size() || !std::isfinite(x))
+        return "line " + std::to_string(number) + ": vertex " + std::to_string(i) + " has an invalid coordinate '"
+               + words[k] + "'";
+    }
+  return std::string();
+}
+
 // Reads `file` with CGAL's polygon soup readers, with their diagnostics on std::cerr kept out of the one-line
 // errors.
 void read_soup(const std::string& file, std::vector<Point_3>& points,
@@ -95,7 +153,8 @@ void read_soup(const std::string& file, std::vector<Point_3>& points,
   std::cerr.rdbuf(cerr_buffer);
   if(!ok)
   {
-    const std::string reason = diagnose_text_file(file, lower_extension(file));
+    const std::string ext = lower_extension(file);
+    const std::string reason = (ext == "off") ? diagnose_off_file(file) : diagnose_text_file(file, ext);
     throw Input_error("cannot read '" + file + "': " + (reason.empty() ? "invalid or unsupported mesh data" : reason));
   }
 }

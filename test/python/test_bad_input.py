@@ -105,6 +105,18 @@ def test_bad_queries():
     assert s2.distance(0, len(V0) + 3) == np.inf
 
 
+def test_one_indexed_faces_hint():
+    # Solver takes no is_one_indexed argument: its message says what to pass; the gdist functions name their flag
+    with pytest.raises(ValueError, match=r"numbered from 1\? pass F - 1\)$") as e:
+        vtp_geodesics.Solver(V0, F0 + 1)
+    assert "is_one_indexed" not in str(e.value)
+    assert vtp_geodesics.Solver(V0, (F0 + 1) - 1).distances(0)[0] == 0        # the hint, followed, works
+    with pytest.raises(ValueError, match=r"numbered from 1\? pass is_one_indexed=True\)$"):
+        gdist.compute_gdist(V0, (F0 + 1).astype(np.int32))
+    d = gdist.compute_gdist(V0, (F0 + 1).astype(np.int32), is_one_indexed=True)
+    assert d.shape == (len(V0),) and d[0] == 0
+
+
 def test_dropins_bad_input():
     with pytest.raises(ValueError, match="out of range"):
         gdist.compute_gdist(V0, np.where(F0 == 5, 99, F0).astype(np.int32))

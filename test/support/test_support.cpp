@@ -478,6 +478,42 @@ TEST(ReadInputMesh, TinyValuesUnderflowLikeCgal)
   EXPECT_EQ(m.point(Vertex_index(2)).y(), 0.);
 }
 
+// A vertex line that CGAL's reader refuses is named by its line of the file (from 1) and its vertex (from 0), as CGAL
+// reads an OFF file: counts on the header's line or after it, comment lines and blank lines skipped, a comment after
+// the numbers ignored, numbers after the third ignored, four numbers needed in 4OFF; other refusals keep the generic
+// message.
+TEST(ReadInputMesh, MalformedOffVertexLineNamesItsLine)
+{
+  const std::string folder = fresh_folder("vertex_lines");
+  auto error_of = [&](const std::string& name, const std::string& text) {
+    write_all(folder + "/" + name, text);
+    vtp_support::Input_mesh input;
+    try
+    {
+      vtp_support::read_input_mesh(folder + "/" + name, input);
+    }
+    catch(const vtp_support::Input_error& e)
+    {
+      const std::string what = e.what();
+      return what.substr(what.find("': ") + 3);
+    }
+    return std::string("read");
+  };
+  const std::string faces = "3 0 1 2\n3 0 2 3\n";
+  EXPECT_EQ(error_of("a.off", "OFF 4 2 0\n0 0 0\n1 0 0\n0 1\n0 0 1\n" + faces),
+            "line 4: vertex 2 has 2 coordinates (expected 3)");
+  EXPECT_EQ(error_of("b.off", "# c\nOFF\n\n4 2 0\n# c\n0 0 0 # c\n\n1 0 0 7 8\n0 1 0\n  1e0 x 1\n" + faces),
+            "line 10: vertex 3 has an invalid coordinate 'x'");
+  EXPECT_EQ(error_of("c.off", "OFF\r\n4 2 0\r\n0 0 0\r\n1 0 # 0\r\n0 1 0\r\n0 0 1\r\n" + faces),
+            "line 4: vertex 1 has 2 coordinates (expected 3)");
+  EXPECT_EQ(error_of("d.off", "4OFF\n4 2 0\n0 0 0 1\n1 0 0 1\n0 1 0\n0 0 1 1\n" + faces),
+            "line 5: vertex 2 has 3 coordinates (expected 4)");
+  EXPECT_EQ(error_of("e.off", "OFF\n4 2 0\n0 0 0\n1 0 0\nnan 1 0\n0 0 1\n" + faces),
+            "vertex 2 has a non-finite coordinate");                         // the fast reader's, unchanged
+  EXPECT_EQ(error_of("f.off", "OFF\n4 2 0\n0 0 0\n1 0 0 \n0 1 0 a\n0 0 1\n" + faces), "read");
+  EXPECT_EQ(error_of("g.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n" + faces), "invalid or unsupported mesh data");
+}
+
 // The correspondence of the file's vertices and the mesh's, both ways: two tetrahedra sharing vertex 0 (cut
 // apart by the repair into two copies), and vertex 7 in no face (removed).
 TEST(ReadInputMesh, FileAndMeshVerticesBothWays)

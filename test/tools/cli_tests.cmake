@@ -166,6 +166,14 @@ vtp_cli_test(non_finite_off 2 "${bad_output}.19" "" ERROR "vertex 2 has a non-fi
              "${cli_data}/non_finite.off" --output "${bad_output}.19")
 vtp_cli_test(non_finite_obj 2 "${bad_output}.20" "" ERROR "vertex 1 has a non-finite coordinate"
              "${cli_data}/non_finite.obj" --output "${bad_output}.20")
+#   a vertex line that CGAL's reader cannot read: its line of the file and its vertex (short_vertex_line.off: vertex 2,
+#   on line 7 after a comment and a blank line, has two numbers; word_in_vertex_line.off: vertex 3, line 6, a word)
+vtp_cli_test(short_vertex_line_off 2 "${bad_output}.22" ""
+             ERROR "short_vertex_line.off': line 7: vertex 2 has 2 coordinates \\(expected 3\\)$"
+             "${cli_data}/short_vertex_line.off" --output "${bad_output}.22")
+vtp_cli_test(word_in_vertex_line_off 2 "${bad_output}.23" ""
+             ERROR "word_in_vertex_line.off': line 6: vertex 3 has an invalid coordinate 'zero'$"
+             "${cli_data}/word_in_vertex_line.off" --output "${bad_output}.23")
 vtp_cli_test(bad_view 2 "${bad_output}.21" "" ERROR "--view" --view 1,2 --picture "${bad_output}.21")
 
 # Other formats that CGAL reads as polygon soups: STL (points merged by the reader, numbered in the order they
@@ -458,6 +466,21 @@ add_test(NAME cli_straightest_geodesic_alias_same
 set_tests_properties(cli_straightest_geodesic_alias_same PROPERTIES FIXTURES_REQUIRED cli_straightest_alias_runs)
 set_property(TEST cli_straightest_geodesic cli_straightest_geodesic_alias_trace APPEND
              PROPERTY FIXTURES_SETUP cli_straightest_alias_runs)
+# The header of an OBJ --path-output says what each polyline is: a straightest geodesic (--straightest-geodesic, or
+# its alias --trace) from its start vertex, its direction and its length (on the plane grid, along the diagonal of
+# the squares from vertex 0: 5 points); after the geodesic paths of --path-to, each from its target (the header of
+# paths alone is that of the paths tests).
+set(trace_obj "${cli_dir}/trace")
+vtp_cli_test(trace_obj_header 0 "${trace_obj}.obj" "" LINES 8 SOURCE_LINE none
+             VALUES "0=# vtp_geodesics: 1 straightest geodesic (--straightest-geodesic), each from its start point, one 'l' element each|1=# 'l' element 1: straightest geodesic from vertex 0, direction (1, 1, 0) projected onto the tangent plane, length 0.5 (less if it reaches the border)|2=v 0 0 0|6=v 0.35355339059327373 0.35355339059327373 0|7=l 1 2 3 4 5"
+             "${cli_data}/plane_grid.off" --straightest-geodesic 0,1,1,0,0.5 --path-output "${trace_obj}.obj")
+vtp_cli_test(trace_obj_header_after_paths 0 "${trace_obj}.2.obj" "" LINES 28 SOURCE_LINE none
+             VALUES "0=# vtp_geodesics: 1 geodesic path, from the target to the source, then 2 straightest geodesics (--straightest-geodesic), each from its start point, one 'l' element each|1=# 'l' element 2: straightest geodesic from vertex 0, direction (1, 1, 0) projected onto the tangent plane, length 0.5 (less if it reaches the border)|2=# 'l' element 3: straightest geodesic from vertex 60, direction (0, 1, 0) projected onto the tangent plane, length 2 (less if it reaches the border)"
+             "${cli_data}/plane_grid.off" --source 0 --path-to 120 --straightest-geodesic 0,1,1,0,0.5 --trace 60,0,1,0,2
+             --path-output "${trace_obj}.2.obj")
+vtp_cli_test(paths_obj_header 0 "${trace_obj}.3.obj" "" LINES 13 SOURCE_LINE none
+             VALUES "0=# vtp_geodesics: 1 geodesic paths, one 'l' element each, from the target to the source"
+             "${cli_data}/plane_grid.off" --source 0 --path-to 120 --path-output "${trace_obj}.3.obj")
 vtp_cli_test(labels_same_file_as_output 2 "${bad_output}.24" "" ERROR "must name different files"
              --labels "${bad_output}.24" --output "${bad_output}.24")
 #   nonmanifold_vertex.off from vertex 1: the other tetrahedron (vertices 4, 5, 6) is unreachable, vertex 7 is in no
