@@ -15,6 +15,7 @@
 #include <CGAL/license/VTP_geodesics.h>
 
 #include <CGAL/VTP_geodesics/internal/curves/Curve_borders.h>
+#include <CGAL/VTP_geodesics/internal/curves/Curve_march.h>
 #include <CGAL/VTP_geodesics/internal/curves/Curve_pieces.h>
 
 #include <algorithm>
@@ -97,6 +98,83 @@ public:
   // The pieces of the isoline at `level` (set `set`) in face f (candidates c, corner distances d): the
   // crossings of its edges in counterclockwise order, each where the boundary leaves the part below the
   // level joined to the next where it enters it again.
+  // A crossing of an isoline with the boundary of a face, in the face's frame.
+  struct Crossing
+  {
+    Curve_point point;
+    double x, y;
+    Index key;
+    bool leaves;  // going counterclockwise, the boundary leaves the part below the level
+  };
+
+  // The pieces of face f followed along the isoline from each crossing where it leaves the part below the level
+  // (Curve_march.h), each ended at the crossing nearest to where the march leaves the face (within a step), where
+  // points on lines across the chords fail both ways (the curve is not a graph over its chords). Replaces m_kept
+  // and returns true if every march arrives at a crossing of its own; else leaves m_kept as it is.
+  bool march_pieces(Index f, const std::vector<Curve_candidate>& c, double level, Index set, const Crossing* cross,
+                    int n)
+  {
+    const Mesh_arrays& m = m_pieces.field().mesh();
+    const Face_frame fr(m, f);
+    auto phi = [&c, level](double x, double y, double& gx, double& gy, double& cx, double& cy, double& b) {
+      int which;
+      const double v = Curve_field::value(c, x, y, NO_INDEX, which);
+      if(which < 0)
+        return std::numeric_limits<double>::quiet_NaN();
+      c[static_cast<std::size_t>(which)].active_circle(x, y, cx, cy, b);
+      const double dx = x - cx, dy = y - cy, r = std::sqrt(dx * dx + dy * dy);
+      if(!(r > 0.))
+        return std::numeric_limits<double>::quiet_NaN();
+      gx = dx / r;
+      gy = dy / r;
+      return v - level;
+    };
+    double longest = 0.;
+    for(int k = 0; k < 3; ++k)
+      longest = (std::max)(longest, m.geometry[3 * f + static_cast<Index>(k)].length);
+    std::vector<Curve_piece> marched;
+    std::vector<std::pair<double, double> > inner;
+    bool used[12] = { false };
+    for(int i = 0; i < n; ++i)
+    {
+      if(!cross[i].leaves)
+        continue;
+      double gx = 0., gy = 0., cx = 0., cy = 0., b = 0.;
+      const double at = phi(cross[i].x, cross[i].y, gx, gy, cx, cy, b);
+      const double radius = at == at ? level - b : std::numeric_limits<double>::infinity();
+      const double step = longest / m_pieces.number_of_chords(longest, radius);
+      inner.clear();
+      double ex, ey;
+      if(!march_isoline(fr, phi, level, cross[i].x, cross[i].y, step, m_pieces.value_tolerance(), inner, ex, ey))
+        return false;
+      int end = -1;
+      double nearest = std::numeric_limits<double>::infinity();
+      for(int j = 0; j < n; ++j)
+        if(!cross[j].leaves && !used[j] && std::hypot(cross[j].x - ex, cross[j].y - ey) < nearest)
+        {
+          nearest = std::hypot(cross[j].x - ex, cross[j].y - ey);
+          end = j;
+        }
+      if(end < 0 || !(nearest <= step))
+        return false;
+      used[end] = true;
+      Curve_piece piece;
+      piece.set = set;
+      piece.key[0] = cross[i].key;
+      piece.key[1] = cross[end].key;
+      piece.points.push_back(cross[i].point);
+      for(const auto& q : inner)
+        piece.points.push_back(Curve_pieces::point_in_face(f, fr, q.first, q.second));
+      piece.points.push_back(cross[end].point);
+      marched.push_back(std::move(piece));
+    }
+    for(int j = 0; j < n; ++j)
+      if(!cross[j].leaves && !used[j])
+        return false;  // (a crossing that no march reached)
+    m_kept.swap(marched);
+    return true;
+  }
+
   void face_isoline(Index f, const std::vector<Curve_candidate>& c, const double d[3], double level, Index set,
                     std::vector<Curve_piece>& pieces)
   {
@@ -115,13 +193,6 @@ public:
         next = circle_on_line(px, py, dx, dy, cx, cy, b, level, u);
       }
       return v - level;
-    };
-    struct Crossing
-    {
-      Curve_point point;
-      double x, y;
-      Index key;
-      bool leaves;  // going counterclockwise, the boundary leaves the part below the level
     };
     Crossing cross[12];
     int n = 0;
@@ -221,6 +292,8 @@ public:
       if(best_undecided == 0)
         break;
     }
+    if(best_undecided > 0 && march_pieces(f, c, level, set, cross, n))
+      best_undecided = 0;
     m_pieces.undecided += best_undecided;
     for(Curve_piece& piece : m_kept)
       pieces.push_back(std::move(piece));

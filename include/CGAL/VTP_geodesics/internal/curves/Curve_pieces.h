@@ -292,10 +292,12 @@ public:
       {
         auto g = [&](double u, double& next) { return phi(c, qx, qy, nx, ny, u, next); };
         double next;
-        const double glo = g(lo, next), ghi = g(hi, next);
-        if(((glo < 0.) != (ghi < 0.)) && std::isfinite(glo) && std::isfinite(ghi))
+        double a = lo, b = hi, ga = g(lo, next), gb = g(hi, next);
+        if(!((ga < 0.) != (gb < 0.)) && std::isfinite(ga) && std::isfinite(gb))
+          bracket_near(g, lo, hi, a, b, ga, gb);  // the same sign at both ends: two zeros, or none, on the line
+        if(((ga < 0.) != (gb < 0.)) && std::isfinite(ga) && std::isfinite(gb))
         {
-          const double u = circle_zero(g, lo, hi, glo, ghi, 1e-15 * (hi - lo + len), m_tolerance_g);
+          const double u = circle_zero(g, a, b, ga, gb, 1e-15 * (hi - lo + len), m_tolerance_g);
           px = qx + u * nx;
           py = qy + u * ny;
         }
@@ -305,6 +307,35 @@ public:
       else
         ++undecided;
       out.push_back(point_in_face(f, fr, px, py));
+    }
+  }
+
+  // A sign change of g on [lo, hi], whose ends have the same sign, nearest to u = 0 (the chord): from 32 samples
+  // (where a ridge of the field, the cut locus, comes near the chord, the line meets the curve twice); (a, b)
+  // and g there, or left as they are if no sample changes sign.
+  template <class G>
+  static void bracket_near(G& g, double lo, double hi, double& a, double& b, double& ga, double& gb)
+  {
+    const int samples = 32;
+    double best = std::numeric_limits<double>::infinity();
+    double u0 = lo, g0 = ga, next;
+    for(int k = 1; k <= samples; ++k)
+    {
+      const double u1 = k == samples ? hi : lo + (hi - lo) * k / samples;
+      const double g1 = k == samples ? gb : g(u1, next);
+      if(!std::isfinite(g1))
+        return;
+      const double away = (std::min)(std::abs(u0), std::abs(u1));
+      if((g0 < 0.) != (g1 < 0.) && away < best)
+      {
+        best = away;
+        a = u0;
+        b = u1;
+        ga = g0;
+        gb = g1;
+      }
+      u0 = u1;
+      g0 = g1;
     }
   }
 
@@ -418,6 +449,7 @@ public:
   }
 
   const Curve_field& field() const { return m_field; }
+  double value_tolerance() const { return m_tolerance_g; }
 
 private:
   const Curve_field& m_field;
