@@ -2,8 +2,6 @@
 three sources and the cells' areas, then isolines at levels chosen after a run, with no new propagation.
 Checks: the cells' areas add up to the area of the mesh; every border point is as far from the two sources of its
 cells (from a run from each source alone); every isoline point is at its level (``field_distance`` there).
-(The isolines are those of one source: with several sources, a few points of the isolines are off their level by
-up to 1e-3 of the largest distance on this mesh, issue 46.)
 
     PYTHONPATH=build/python python3 examples/python/isolines_and_cell_borders.py [mesh.off]
 """
@@ -32,26 +30,24 @@ mesh_area = 0.5 * np.linalg.norm(np.cross(V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - 
 print("cell areas sum to %.9f, the mesh's area is %.9f" % (areas.sum(), mesh_area))
 errors += int(len(areas) != len(sources) or abs(areas.sum() - mesh_area) > 1e-9 * mesh_area)
 
+# isolines of the three sources at a quarter and at half of the largest distance, from the same run
+levels = [0.25 * d.max(), 0.5 * d.max()]
+isolines = solver.field_isolines(levels)                 # Curve namedtuples: points, faces, barycentric, level, ...
+worst = max(np.abs(solver.field_distance((c.faces, c.barycentric)) - c.level).max() for c in isolines)
+for c in isolines:
+    print("  isoline at %.4f: %d points, %s" % (c.level, len(c.points), "closed" if c.closed else "open"))
+print("%d isolines, largest |distance - level| %.3g" % (len(isolines), worst))
+errors += int(not isolines or worst > tolerance)
+
 # the borders, with their face locations; then the distance at their points from each source alone
-borders = solver.field_cell_borders(return_locations=True)
-faces = np.concatenate([b["faces"] for b in borders])
-bary = np.concatenate([b["barycentric"] for b in borders])
-cells = np.concatenate([np.tile(b["cells"], (len(b["faces"]), 1)) for b in borders])
+borders = solver.field_cell_borders()
+faces = np.concatenate([b.faces for b in borders])
+bary = np.concatenate([b.barycentric for b in borders])
+cells = np.concatenate([np.tile(b.cells, (len(b.faces), 1)) for b in borders])
 to_source = []
 for s in sources:
-    d1 = solver.distances(s, keep_field=True)            # each run keeps its own field
+    solver.distances(s, keep_field=True)                 # each run keeps its own field
     to_source.append(solver.field_distance((faces, bary)))
-    if s == sources[0]:
-        # isolines of this run at a quarter and at half of its largest distance, from its kept field
-        levels = [0.25 * d1.max(), 0.5 * d1.max()]
-        isolines = solver.field_isolines(levels, return_locations=True)
-        worst = max(np.abs(solver.field_distance((c["faces"], c["barycentric"])) - c["level"]).max()
-                    for c in isolines)
-        for c in isolines:
-            print("  isoline of vertex %d at %.4f: %d points, %s"
-                  % (s, c["level"], len(c["points"]), "closed" if c["closed"] else "open"))
-        print("%d isolines, largest |distance - level| %.3g" % (len(isolines), worst))
-        errors += int(not isolines or worst > tolerance)
 k = np.arange(len(faces))
 gap = np.abs(np.array(to_source)[cells[:, 0], k] - np.array(to_source)[cells[:, 1], k])
 print("%d borders, %d points, largest difference of the distances to the two sources %.3g"
