@@ -12,6 +12,8 @@
 
 #include "core_solver.h"
 
+#include <vtp_support/statistics.h>
+
 namespace {
 
 // The support layer's method table, one dict per method.
@@ -51,4 +53,16 @@ PYBIND11_MODULE(_core, m)
   m.def("method_table", &method_table);
   m.attr("recommended_lambda") = vtp_support::default_lambda;
   m.attr("openmp") = vtp_support::parallel_methods_available();
+  // the keys of Solver.statistics: the library's statistics, then the stages from the file to the answer, from
+  // their one description (vtp_support/statistics.h), then the solver's own build time
+  py::list keys;
+  const CGAL::VTP_geodesics::Propagation_statistics none;
+  vtp_support::for_each_statistic(none, [&](const char* name, const auto&, vtp_support::Statistic_unit) {
+    keys.append(name);
+  });
+  vtp_support::for_each_stage(vtp_support::Stage_seconds(), [&](const char* name, double, vtp_support::Statistic_unit) {
+    keys.append(name);
+  });
+  keys.append("mesh_build_seconds");
+  m.attr("statistics_keys") = py::tuple(keys);
 }

@@ -30,8 +30,10 @@ from ._queries import StraightestGeodesic, SurfacePolyline
 from ._sampling import FarthestPointSamples
 from ._solver import Solver
 
+statistics_keys = _core.statistics_keys  # the keys of Solver.statistics, in order
+
 __all__ = ["Solver", "FarthestPointSamples", "PolarPatches", "SurfacePolyline", "Curve", "CellAreas",
-           "StraightestGeodesic", "read_mesh", "methods", "recommended_lambda"]
+           "StraightestGeodesic", "read_mesh", "methods", "recommended_lambda", "statistics_keys"]
 
 # the public names are vtp_geodesics.<name> (in help(), reprs and pickles), wherever they are defined
 Solver.__module__ = read_mesh.__module__ = Curve.__module__ = __name__

@@ -147,14 +147,11 @@ class Solver(Queries, Field, Matrices, Sampling, LogMap, Curves, Patches):
     def statistics(self):
         """The library's statistics of the last computation, as a dict.
 
-        Keys: method, threads, vertices, faces, sources, windows_created, windows_propagated,
-        peak_live_windows, peak_window_bytes, field_pieces, field_bytes (the kept field of ``keep_field=True``),
-        vertices_processed, pseudo_sources, resets, stopped_early,
-        rounds, parallel_rounds, round_selection_seconds, round_propagation_seconds, round_merge_seconds (the
-        stages of the parallel rounds), reached_vertices, max_distance, seconds (the propagation, wall clock),
-        output_seconds, preprocessing_seconds (the library's preprocessing in the constructor) and
-        mesh_build_seconds (the constructor's checks of V and F and building of the mesh). After
-        ``matrix()``, the sums over the rows (peaks are maxima).
+        Keys: ``vtp_geodesics.statistics_keys``, in order: the library's statistics, named as in the tool's
+        ``--stats-json`` and the C++ ``Propagation_statistics`` (one description of them, ``vtp_support/statistics.h``;
+        ``seconds`` is the propagation, wall clock), then the stages below, then mesh_build_seconds (the
+        constructor's checks of V and F and building of the mesh). After ``matrix()``, the sums over the rows
+        (peaks are maxima).
 
         The stages from the file (or the arrays) to the answer, with the names of the tool's ``--stats-json``:
         read_seconds, repair_seconds, preprocessing_seconds, propagation_seconds (= seconds), write_seconds

@@ -186,6 +186,7 @@ def test_methods_and_statistics(elephant):
     assert st["method"] == "avtp" and st["vertices"] == len(V) and st["windows_propagated"] > 0
     assert {"round_selection_seconds", "round_propagation_seconds", "round_merge_seconds", "seconds",
             "preprocessing_seconds", "mesh_build_seconds"} <= set(st)
+    assert tuple(st) == vtp_geodesics.statistics_keys  # every key, in the order of the description
     assert set(vtp_geodesics.methods) >= {"vtp", "pvtp", "avtp", "pavtp", "vsp", "pvsp"}
     # one virtual source per vertex: every distance is a path length (never below exact), the same on 2 threads
     vsp = solver.distances(0, method="vsp")
