@@ -55,7 +55,7 @@ PYBIND11_MODULE(_core, m)
   m.attr("openmp") = vtp_support::parallel_methods_available();
   // the keys of Solver.statistics: the library's statistics, then the stages from the file to the answer, from
   // their one description (vtp_support/statistics.h), then the solver's own build time
-  py::list keys;
+  pybind11::list keys;
   const CGAL::VTP_geodesics::Propagation_statistics none;
   vtp_support::for_each_statistic(none, [&](const char* name, const auto&, vtp_support::Statistic_unit) {
     keys.append(name);
@@ -64,5 +64,5 @@ PYBIND11_MODULE(_core, m)
     keys.append(name);
   });
   keys.append("mesh_build_seconds");
-  m.attr("statistics_keys") = py::tuple(keys);
+  m.attr("statistics_keys") = pybind11::tuple(keys);
 }
