@@ -15,6 +15,7 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/exceptions.h>
 
 #include <algorithm>
 #include <cmath>
@@ -36,8 +37,17 @@ Surface_locator::~Surface_locator() = default;
 
 bool Surface_locator::locate(const Point_3& p, Face_location& location) const
 {
-  const CGAL::Polygon_mesh_processing::Face_location<Mesh, double> l =
-    CGAL::Polygon_mesh_processing::locate_with_AABB_tree(p, m_tree->tree, m_mesh);
+  CGAL::Polygon_mesh_processing::Face_location<Mesh, double> l;
+  try
+  {
+    l = CGAL::Polygon_mesh_processing::locate_with_AABB_tree(p, m_tree->tree, m_mesh);
+  }
+  catch(const CGAL::Failure_exception&)
+  {
+    // (a build with CGAL's assertions on: its barycentric coordinates assert that the nearest face is not
+    // degenerate, where a build without them gives coordinates that are not finite, refused below)
+    return false;
+  }
   std::array<double, 3> b = l.second;
   double sum = 0.;
   bool finite = true;
