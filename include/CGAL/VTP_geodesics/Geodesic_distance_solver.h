@@ -393,8 +393,7 @@ public:
   Polyline shortest_path(const VertexOrLocation& p)
   {
     Polyline r;
-    for(const internal::Trace_point& q : m_paths.trace(m_mesh.arrays, m_engine, m_mesh.target_of(p, "the start of the path"),
-                                                         m_mesh.position))
+    for(const internal::Trace_point& q : trace_of(p))
     {
       r.points.push_back(internal::point_of<Point_3>(m_mesh, m_vpm, q));
       r.locations.push_back(internal::location_of(m_mesh, q));
@@ -409,8 +408,7 @@ public:
   template <class VertexOrLocation, class OutputIterator>
   OutputIterator shortest_path_points(const VertexOrLocation& p, OutputIterator out)
   {
-    for(const internal::Trace_point& q : m_paths.trace(m_mesh.arrays, m_engine, m_mesh.target_of(p, "the start of the path"),
-                                                         m_mesh.position))
+    for(const internal::Trace_point& q : trace_of(p))
       *out++ = internal::point_of<Point_3>(m_mesh, m_vpm, q);
     return out;
   }
@@ -421,8 +419,7 @@ public:
   template <class VertexOrLocation, class OutputIterator>
   OutputIterator shortest_path_locations(const VertexOrLocation& p, OutputIterator out)
   {
-    for(const internal::Trace_point& q : m_paths.trace(m_mesh.arrays, m_engine, m_mesh.target_of(p, "the start of the path"),
-                                                         m_mesh.position))
+    for(const internal::Trace_point& q : trace_of(p))
       *out++ = internal::location_of(m_mesh, q);
     return out;
   }
@@ -490,6 +487,13 @@ public:
   /// \endcond
 
 private:
+  // the points of the path from `p` (a vertex or a face location) back to its nearest source (one trace-back)
+  template <class VertexOrLocation>
+  std::vector<internal::Trace_point> trace_of(const VertexOrLocation& p)
+  {
+    return m_paths.trace(m_mesh.arrays, m_engine, m_mesh.target_of(p, "the start of the path"), m_mesh.position);
+  }
+
   void build(int threads)
   {
     const auto t0 = std::chrono::steady_clock::now();

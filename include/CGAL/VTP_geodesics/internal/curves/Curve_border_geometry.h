@@ -207,18 +207,9 @@ protected:
     if(!(len > 0.))
       return false;
     const double nx = -dy / len, ny = dx / len;  // (towards the left label)
-    // the line q + u (nx, ny) inside the face: left of each edge
+    // the line q + u (nx, ny) inside the face
     double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
-    for(int e = 0; e < 3; ++e)
-    {
-      const int j = (e + 1) % 3;
-      const double ex = fr.x[j] - fr.x[e], ey = fr.y[j] - fr.y[e];
-      const double alpha = ex * (qy - fr.y[e]) - ey * (qx - fr.x[e]), beta = ex * ny - ey * nx;
-      if(beta > 0.)
-        lo = (std::max)(lo, -alpha / beta);
-      else if(beta < 0.)
-        hi = (std::min)(hi, -alpha / beta);
-    }
+    fr.clip_line(qx, qy, nx, ny, lo, hi);
     if(lo < hi && std::isfinite(lo) && std::isfinite(hi))
     {
       // first within w of the chord (a change found there at d <= w from it is the nearest), then all across

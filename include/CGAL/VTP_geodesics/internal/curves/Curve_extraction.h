@@ -95,9 +95,6 @@ public:
     return chain_pieces(pieces);
   }
 
-  // The pieces of the isoline at `level` (set `set`) in face f (candidates c, corner distances d): the
-  // crossings of its edges in counterclockwise order, each where the boundary leaves the part below the
-  // level joined to the next where it enters it again.
   // A crossing of an isoline with the boundary of a face, in the face's frame.
   struct Crossing
   {
@@ -150,11 +147,14 @@ public:
       int end = -1;
       double nearest = std::numeric_limits<double>::infinity();
       for(int j = 0; j < n; ++j)
-        if(!cross[j].leaves && !used[j] && std::hypot(cross[j].x - ex, cross[j].y - ey) < nearest)
+      {
+        const double away = std::hypot(cross[j].x - ex, cross[j].y - ey);
+        if(!cross[j].leaves && !used[j] && away < nearest)
         {
-          nearest = std::hypot(cross[j].x - ex, cross[j].y - ey);
+          nearest = away;
           end = j;
         }
+      }
       if(end < 0 || !(nearest <= step))
         return false;
       used[end] = true;
@@ -175,6 +175,10 @@ public:
     return true;
   }
 
+  // The pieces of the isoline at `level` (set `set`) in face f (candidates c, corner distances d): the
+  // crossings of its edges in counterclockwise order, each where the boundary leaves the part below the
+  // level joined to the next where it enters it again (or to the previous one, see below; or followed through
+  // the face, march_pieces(), where both leave points on their chords).
   void face_isoline(Index f, const std::vector<Curve_candidate>& c, const double d[3], double level, Index set,
                     std::vector<Curve_piece>& pieces)
   {

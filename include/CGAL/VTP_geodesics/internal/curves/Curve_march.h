@@ -96,14 +96,7 @@ bool march_isoline(const Face_frame& fr, Phi phi, double level, double x0, doubl
       }
       // back onto the level along the gradient at (px, py): the line (qx, qy) + u (gx, gy), u in [-h, h] in the face
       double lo = -h, hi = h;
-      for(int k = 0; k < 3; ++k)
-      {
-        const double at = side(k, qx, qy), rate = side(k, qx + gx, qy + gy) - at;  // side() is affine in the point
-        if(rate > 0.)
-          lo = (std::max)(lo, -at / rate);
-        else if(rate < 0.)
-          hi = (std::min)(hi, -at / rate);
-      }
+      fr.clip_line(qx, qy, gx, gy, lo, hi);
       if(!(lo < hi))
         continue;
       auto g = [&](double u, double& next) {

@@ -275,18 +275,9 @@ public:
     {
       const double s = static_cast<double>(i) / n;
       const double qx = x0 + s * dx, qy = y0 + s * dy;
-      // the line q + u (nx, ny) inside the face: left of each edge
+      // the line q + u (nx, ny) inside the face
       double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
-      for(int k = 0; k < 3; ++k)
-      {
-        const int j = (k + 1) % 3;
-        const double ex = fr.x[j] - fr.x[k], ey = fr.y[j] - fr.y[k];
-        const double alpha = ex * (qy - fr.y[k]) - ey * (qx - fr.x[k]), beta = ex * ny - ey * nx;
-        if(beta > 0.)
-          lo = (std::max)(lo, -alpha / beta);
-        else if(beta < 0.)
-          hi = (std::min)(hi, -alpha / beta);
-      }
+      fr.clip_line(qx, qy, nx, ny, lo, hi);
       double px = qx, py = qy;
       if(lo < hi && std::isfinite(lo) && std::isfinite(hi))
       {

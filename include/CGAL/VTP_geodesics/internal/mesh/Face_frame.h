@@ -17,6 +17,7 @@
 #include <CGAL/VTP_geodesics/internal/mesh/Mesh_arrays.h>
 #include <CGAL/VTP_geodesics/internal/windows/Window.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace CGAL {
@@ -74,6 +75,20 @@ struct Face_frame
     const double dx = ex(k), dy = ey(k);
     const double e2 = dx * dx + dy * dy;
     return e2 > 0. ? ((px - x[k]) * dx + (py - y[k]) * dy) / std::sqrt(e2) : 0.;
+  }
+
+  // [lo, hi] narrowed to the abscissae u where (px, py) + u (dx, dy) is inside the face (left of each edge); the
+  // line misses the face (or the range) where lo >= hi after the call
+  void clip_line(double px, double py, double dx, double dy, double& lo, double& hi) const
+  {
+    for(int k = 0; k < 3; ++k)
+    {
+      const double alpha = ex(k) * (py - y[k]) - ey(k) * (px - x[k]), beta = ex(k) * dy - ey(k) * dx;
+      if(beta > 0.)
+        lo = (std::max)(lo, -alpha / beta);
+      else if(beta < 0.)
+        hi = (std::min)(hi, -alpha / beta);
+    }
   }
 };
 
