@@ -33,6 +33,7 @@
 #include <CGAL/VTP_geodesics/internal/log_map/Polar_patch_rows.h>
 #include <CGAL/VTP_geodesics/internal/solver/Settings_from_parameters.h>
 #include <CGAL/VTP_geodesics/internal/solver/Solver_run.h>
+#include <CGAL/VTP_geodesics/internal/source_curves/Curve_join.h>
 #include <CGAL/VTP_geodesics/internal/straightest/Straightest_queries.h>
 #include <CGAL/VTP_geodesics/internal/sampling/Farthest_point_sampler.h>
 #include <CGAL/VTP_geodesics/internal/mesh/Source_forms.h>
@@ -160,7 +161,7 @@ public:
   /// adds the vertex `v` to the source set.
   /// \throws Invalid_input_error if `v` is not a vertex of the mesh ("source N is not a vertex of the mesh",
   /// N being the number of sources added before).
-  void add_source(vertex_descriptor v) { m_sources.push_back(m_mesh.seed_of(v, static_cast<Index>(m_sources.size()))); }
+  void add_source(vertex_descriptor v) { m_sources.push_back(m_mesh.seed_of(v, next_label())); ++m_source_count; }
 
   /// adds the point `location` of the surface to the source set (any number type convertible to `double`).
   /// \throws Invalid_input_error if the face is not a face of the mesh or the barycentric coordinates are not
@@ -168,7 +169,77 @@ public:
   template <class FT>
   void add_source(const std::pair<face_descriptor, std::array<FT, 3> >& location)
   {
-    m_sources.push_back(m_mesh.seed_of(location, static_cast<Index>(m_sources.size())));
+    m_sources.push_back(m_mesh.seed_of(location, next_label()));
+    ++m_source_count;
+  }
+
+  /// adds the curve through `points` (a range of `vertex_descriptor` or of face locations, at least two
+  /// distinct points) to the source set, as one source: its distance is the distance to the nearest point of
+  /// the curve. Two consecutive points in one face are joined straight inside it (along the edge when both are
+  /// on it); two that share no face are joined by the shortest geodesic between them (one exact run from the
+  /// first, stopped at the second). The curve is closed when its last point is its first. Its left is the
+  /// side of face normal x direction of travel (`signed_distance`).
+  /// \throws Invalid_input_error if a point is not a vertex or a point of the mesh, the curve has fewer than two
+  /// distinct points, or two consecutive points are not connected by the surface ("source N (a curve) ...").
+  template <class PointRange>
+  void add_source_curve(const PointRange& points)
+  {
+    const Index label = next_label();
+    const std::string name = "source " + std::to_string(label) + " (a curve)";
+    std::vector<internal::Seed> given, joined;
+    std::size_t i = 0;
+    try
+    {
+      for(const auto& p : points)
+        given.push_back(m_mesh.seed_of(p, label, "point", i++));
+    }
+    catch(const Invalid_input_error& e)
+    {
+      throw Invalid_input_error(name + ": " + e.what());
+    }
+    std::size_t distinct = 0;
+    for(std::size_t k = 0; k < given.size(); ++k)
+      if(k == 0 || !internal::same_point(given[k], given[0]))
+        ++distinct;
+    if(distinct < 2)
+      throw Invalid_input_error(name + " needs at least two distinct points, got " + std::to_string(distinct));
+    std::size_t bad = 0;
+    if(!internal::join_curve_points(m_mesh.arrays, given, joined, bad))
+      throw Invalid_input_error(name + ": points " + std::to_string(bad) + " and " + std::to_string(bad + 1)
+                                + " are not connected by the surface");
+    internal::add_curve_seeds(m_mesh.arrays, joined, label, m_sources);
+    ++m_source_count;
+  }
+
+  /// adds the border of the mesh (every border loop) to the source set, as one source; each loop runs with the
+  /// surface on its left.
+  /// \throws Invalid_input_error if the mesh has no border.
+  void add_source_border()
+  {
+    const std::vector<std::array<Index, 3> > edges = internal::border_edges(m_mesh.arrays);
+    if(edges.empty())
+      throw Invalid_input_error("the mesh has no border");
+    internal::add_edge_seeds(m_mesh.arrays, edges, next_label(), m_sources);
+    ++m_source_count;
+  }
+
+  /// adds the edges `edges` (a range of `halfedge_descriptor`, each from its source to its target: its left
+  /// is the side of its face) to the source set, as one source.
+  /// \throws Invalid_input_error if the range is empty or an element is not a half-edge of the mesh.
+  template <class HalfedgeRange>
+  void add_source_edges(const HalfedgeRange& halfedges)
+  {
+    const Index label = next_label();
+    std::vector<std::array<Index, 3> > edges;
+    for(const auto& h : halfedges)
+    {
+      const std::array<Index, 3> e = m_mesh.edge_of(h, label);
+      edges.push_back(e);
+    }
+    if(edges.empty())
+      throw Invalid_input_error("source " + std::to_string(label) + " (edges) has no edge");
+    internal::add_edge_seeds(m_mesh.arrays, edges, label, m_sources);
+    ++m_source_count;
   }
 
   /// adds every vertex or face location of `range` to the source set, in order.
@@ -181,10 +252,14 @@ public:
   }
 
   /// empties the source set.
-  void clear_sources() { m_sources.clear(); }
+  void clear_sources()
+  {
+    m_sources.clear();
+    m_source_count = 0;
+  }
 
-  /// the number of sources in the source set.
-  std::size_t number_of_sources() const { return m_sources.size(); }
+  /// the number of sources in the source set (a curve, the border, a set of edges: one each).
+  std::size_t number_of_sources() const { return m_source_count; }
   /// @}
 
   /// \name Computation
@@ -494,6 +569,8 @@ private:
     return m_paths.trace(m_mesh.arrays, m_engine, m_mesh.target_of(p, "the start of the path"), m_mesh.position);
   }
 
+  Index next_label() const { return static_cast<Index>(m_source_count); }
+
   void build(int threads)
   {
     const auto t0 = std::chrono::steady_clock::now();
@@ -525,7 +602,8 @@ private:
   Geom_traits m_traits;
   internal::Mesh_index<TriangleMesh> m_mesh;  // descriptors <-> indices, the engine's arrays and unit
   double m_preprocessing_seconds = 0.;
-  std::vector<internal::Seed> m_sources;
+  std::vector<internal::Seed> m_sources;  // the seeds of the source set (several for a curve)
+  std::size_t m_source_count = 0;
   internal::Propagation_engine m_engine;  // per vertex index
   std::vector<double> m_distances;       // those of m_engine, in the order of vertices(tm)
   Propagation_statistics m_statistics;

@@ -48,7 +48,7 @@ constexpr std::size_t no_source = (std::numeric_limits<std::size_t>::max)();
   X(virtual_sources_per_vertex) X(initial_distances) X(initial_nearest_sources) X(first_source_label)    \
   X(first_sample) X(sampling_radius) X(covering_radii) X(vertex_distance_map) X(log_map) X(log_map_via)      \
   X(log_map_strict) X(reference_direction) X(chord_tolerance) X(exact_refinement) \
-  X(keep_field)
+  X(keep_field) X(signed_distance)
 
 // The extra results: X(NAME, TYPE), a link NAME(TYPE& r) that keeps &r (the function writes into r). Every
 // result besides the main one (the return value or the output map) comes back this way.

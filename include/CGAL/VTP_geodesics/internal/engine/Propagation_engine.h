@@ -165,6 +165,8 @@ public:
   const std::vector<double>& distances() const { return m_virtual_sources ? m_vsp.dist : m_state.dist; }
   // the nearest-source labels of the last run (empty unless asked for; NO_INDEX where unreached)
   const std::vector<Index>& labels() const { return m_virtual_sources ? m_vsp.label : m_state.label; }
+  // the same, to be rewritten (the signed distances from curves, solver/Solver_run.h)
+  std::vector<Index>& labels_to_rewrite() { return m_virtual_sources ? m_vsp.label : m_state.label; }
   // the distance of target t of the last run (+infinity if not final: beyond the limit or unreached)
   double target_distance(std::size_t t) const
   {

@@ -168,6 +168,24 @@ public:
     return s;
   }
 
+  // the edge of half-edge h for the seeds of a source of edges: {its source, its target, a face of it} in
+  // indices (source_curves/Curve_seeds.h); `label` names the source in the error message
+  template <class Halfedge>
+  std::array<Index, 3> edge_of(const Halfedge& h, Index label) const
+  {
+    const std::string name = "source " + std::to_string(label) + " (edges)";
+    const vertex_descriptor a = CGAL::source(h, tm), b = CGAL::target(h, tm);
+    if(!is_vertex(a) || !is_vertex(b))
+      throw Invalid_input_error(name + ": a half-edge is not a half-edge of the mesh");
+    typename boost::graph_traits<TriangleMesh>::face_descriptor f = CGAL::face(h, tm);
+    if(f == boost::graph_traits<TriangleMesh>::null_face())
+      f = CGAL::face(CGAL::opposite(h, tm), tm);
+    const Index fi = f == boost::graph_traits<TriangleMesh>::null_face() ? NO_INDEX : face_index(f);
+    if(fi == NO_INDEX)
+      throw Invalid_input_error(name + ": a half-edge has no face of the mesh");
+    return { get(vertex_id, a), get(vertex_id, b), fi };
+  }
+
   // the target of a vertex or a face location (validated as sources are; `role` and `position` name it in
   // the error messages)
   Target target_of(vertex_descriptor v, const char* role = "target", std::size_t position = no_position) const

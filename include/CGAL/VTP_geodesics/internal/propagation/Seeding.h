@@ -22,8 +22,10 @@
 
 #include <CGAL/assertions.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -32,11 +34,104 @@ namespace internal {
 
 // A source of the propagation, at distance 0: a vertex, a point inside an edge, or a point inside a face.
 // `label` is the index of the source in the user's list (the nearest-source label it gives).
+//
+// A piece of a source curve is a seed too (`segment`): the segment from (x, y) to (x1, y1) of face `element`
+// (kind IN_FACE, in the frame of 3 element), seen from one side (`side`: +1 its left, -1 its right, left =
+// face normal x direction). Its windows are line windows (windows/Window.h); its ends are point seeds of
+// their own (source_curves/Curve_seeds.h).
 struct Seed : Surface_point
 {
   Index label = 0;
   Index user_face = NO_INDEX;  // a point given as a face location: the face given (the frame of the log map)
+  bool segment = false;
+  int side = 0;
+  double x1 = 0., y1 = 0.;
+  bool curve_end = false;  // a point seed that ends an open curve
 };
+
+// Whether some seed of `seeds` is a piece of a curve.
+inline bool has_segments(const std::vector<Seed>& seeds)
+{
+  for(const Seed& s : seeds)
+    if(s.segment)
+      return true;
+  return false;
+}
+
+// The part of [t0, t1] where a + b t lies in [lo, hi] (t0 > t1 when it is empty).
+inline void clip_linear(double a, double b, double lo, double hi, double& t0, double& t1)
+{
+  if(b == 0.)
+  {
+    if(!(a >= lo && a <= hi))
+      t1 = t0 - 1.;
+    return;
+  }
+  double u = (lo - a) / b, v = (hi - a) / b;
+  if(u > v)
+    std::swap(u, v);
+  t0 = (std::max)(t0, u);
+  t1 = (std::min)(t1, v);
+}
+
+// Starts the propagation from one side of segment seed s (origin `origin`): the vertices and the targets of
+// its face seen from that side within its strip (the points whose nearest point of the segment's line lies on
+// the segment) get their distance to the segment's line, and each edge of the face gets, on its other side, the
+// line window of the part of it in the strip on that side. The rest of the face is reached from the ends of
+// the segment (point seeds).
+inline void seed_segment(Propagation_state& st, const Seed& s, Index origin)
+{
+  const Mesh_arrays& m = *st.mesh;
+  const Index f = s.element, h0 = 3 * f;
+  const Face_frame frame(m, f);
+  const double ex = s.x1 - s.x, ey = s.y1 - s.y;
+  const double len = std::sqrt(ex * ex + ey * ey);
+  if(!(len > 0.))
+    return;
+  const double dx = ex / len, dy = ey / len;
+  const double nx = -s.side * dy, ny = s.side * dx;
+  for(int k = 0; k < 3; ++k)
+  {
+    const double px = frame.x[k] - s.x, py = frame.y[k] - s.y;
+    const double along = px * dx + py * dy, off = px * nx + py * ny;
+    if(along >= 0. && along <= len && off >= 0.)
+      st.light(m.source[h0 + k], straight_offer(off, origin));
+  }
+  st.stop.for_each_target_in_face(f, [&](Index t) {
+    const Target& target = st.stop.targets()[static_cast<std::size_t>(t)];
+    const double px = target.x[0] - s.x, py = target.y[0] - s.y;
+    const double along = px * dx + py * dy, off = px * nx + py * ny;
+    if(along >= 0. && along <= len && off >= 0.)
+      st.offer_to_target(t, off, origin);
+  });
+  for(int k = 0; k < 3; ++k)
+  {
+    const Index o = m.opposite[h0 + k];
+    double ux, uy;
+    if(o == NO_INDEX || !(frame.direction(k, ux, uy) > 0.))
+      continue;
+    const double L = m.geometry[h0 + k].length;
+    // the edge is (x[k], y[k]) + t (ux, uy), 0 <= t <= L
+    const double px = frame.x[k] - s.x, py = frame.y[k] - s.y;
+    double t0 = 0., t1 = L;
+    clip_linear(px * dx + py * dy, ux * dx + uy * dy, 0., len, t0, t1);     // in the strip
+    clip_linear(px * nx + py * ny, ux * nx + uy * ny, 0., HUGE_VAL, t0, t1);  // on this side
+    if(!(t1 > t0))
+      continue;
+    // in the frame of o (from vertex k+1 to vertex k, the other face above)
+    Window w;
+    rotate_into(nx, ny, -ux, -uy, w.sx, w.sy);
+    if(!(w.sy > 0.))
+      continue;  // the front leaves the edge into the face of the segment: nothing crosses
+    w.sigma = (px + L * ux) * nx + (py + L * uy) * ny;
+    w.b0 = L - t1;
+    w.b1 = L - t0;
+    w.angle = 0.;
+    w.origin = origin;
+    st.store_emitted(o, w);
+  }
+}
+
 
 // The seed of the point of face f with barycentric coordinates (b0, b1, b2) with respect to the vertices
 // source(3f), source(3f+1), source(3f+2) (non-negative, sum 1). A point with two zero coordinates is the
@@ -163,7 +258,9 @@ inline void seed_sources(Propagation_state& st, const std::vector<Seed>& seeds)
     const Index origin = m.nv + static_cast<Index>(i);
     if(s.kind == Seed::AT_VERTEX)
       continue;
-    if(s.kind == Seed::ON_EDGE)
+    if(s.segment)
+      seed_segment(st, s, origin);
+    else if(s.kind == Seed::ON_EDGE)
     {
       const Index h = s.element;
       const Halfedge_geometry g = m.geometry[h];

@@ -22,6 +22,8 @@
 #include <CGAL/VTP_geodesics/internal/log_map/Log_map_output.h>
 #include <CGAL/VTP_geodesics/internal/paths/Path_queries.h>
 #include <CGAL/VTP_geodesics/internal/solver/Settings_from_parameters.h>
+#include <CGAL/VTP_geodesics/internal/source_curves/Curve_seeds.h>
+#include <CGAL/VTP_geodesics/internal/source_curves/Curve_sign.h>
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -50,8 +52,35 @@ void run_solver(const MeshIndex& mesh, VertexPointMap vpm, std::vector<Seed> see
                               "not known)");
   start_log_map(np, settings, mesh, vpm, seeds, engine.direction());
   std::vector<Target> targets = mesh.targets_of(CGAL::parameters::get_parameter(np, internal_np::targets));
+  const bool curves = has_segments(seeds);
+  const bool sign = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::signed_distance),
+                                                       false);
+  if(curves && (settings.virtual_sources || settings.log_map || settings.keep_field || settings.known_distances))
+    throw Invalid_input_error("sources that are curves need windows (not virtual sources), and give no log map, no "
+                              "kept field and no start from initial distances");
+  if(sign && !curves)
+    throw Invalid_input_error("signed_distance needs a source that is a curve");
+  // signed: each seed is its own label during the run (the side of each vertex's nearest point), then the
+  // user's labels again
+  std::vector<Index> user_labels;
+  if(sign)
+  {
+    for(std::size_t i = 0; i < seeds.size(); ++i)
+    {
+      user_labels.push_back(seeds[i].label);
+      seeds[i].label = static_cast<Index>(i);
+    }
+    settings.want_labels = true;
+  }
   engine.template run<ConcurrencyTag>(mesh.arrays, seeds, std::move(targets), settings, threads, statistics,
                                       std::move(known));
+  if(sign)
+  {
+    sign_distances(mesh.arrays, seeds, engine.labels(), every_curve_closed(seeds), engine.distances(), mesh.position);
+    for(Index& l : engine.labels_to_rewrite())
+      if(l != NO_INDEX)
+        l = user_labels[static_cast<std::size_t>(l)];
+  }
   mesh.to_positions(engine.distances(), distances);
   paths.remember(settings, is_parallel<ConcurrencyTag>(), threads);
   statistics.sources = seeds.size();

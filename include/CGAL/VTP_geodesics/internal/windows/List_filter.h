@@ -36,7 +36,8 @@ namespace internal {
 // Pointwise domination by the endpoint vertices (the ICH filter, applied as trimming): on an edge
 // X -> Y of length L, the part of the window where sigma + |S q| > d(X) + |X q| (a prefix, since
 // |S q| - |X q| does not increase away from X) or sigma + |S q| > d(Y) + |Y q| (a suffix) carries
-// no shortest path: every point beyond is reached at least as fast through X or Y.
+// no shortest path: every point beyond is reached at least as fast through X or Y. A line window offers
+// sigma + sx q, |sx| < 1: the same holds, and the ends are roots of linear equations.
 // Returns false when nothing is left; otherwise `e` holds the distances at the new ends.
 inline bool trim_by_vertices(Window& w, Window_ends& e, double L, double dX, double dY)
 {
@@ -48,8 +49,8 @@ inline bool trim_by_vertices(Window& w, Window_ends& e, double L, double dX, dou
   if(e.f0 > dX + w.b0)
   {
     const double D = dX - w.sigma;
-    const double den = 2. * (w.sx + D);
-    double t = (den > 0.) ? (w.sx * w.sx + w.sy * w.sy - D * D) / den : w.b0;
+    const double den = is_line(w) ? 1. - w.sx : 2. * (w.sx + D);
+    double t = !(den > 0.) ? w.b0 : is_line(w) ? -D / den : (w.sx * w.sx + w.sy * w.sy - D * D) / den;
     if(!(t > w.b0)) t = w.b0;
     if(t > w.b1) t = w.b1;
     if(t != w.b0)
@@ -63,11 +64,21 @@ inline bool trim_by_vertices(Window& w, Window_ends& e, double L, double dX, dou
     return false;
   if(e.f1 > dY + (L - w.b1))
   {
-    const double rx = L - w.sx;
-    const double D = dY - w.sigma;
-    const double den = 2. * (rx + D);
-    double t = (den > 0.) ? (rx * rx + w.sy * w.sy - D * D) / den : (L - w.b1);
-    double nb1 = L - t;
+    double nb1;
+    if(is_line(w))
+    {
+      // sigma + sx x > dY + L - x beyond (dY + L - sigma) / (1 + sx)
+      const double den = 1. + w.sx;
+      nb1 = den > 0. ? (dY + L - w.sigma) / den : w.b1;
+    }
+    else
+    {
+      const double rx = L - w.sx;
+      const double D = dY - w.sigma;
+      const double den = 2. * (rx + D);
+      const double t = (den > 0.) ? (rx * rx + w.sy * w.sy - D * D) / den : (L - w.b1);
+      nb1 = L - t;
+    }
     if(!(nb1 < w.b1)) nb1 = w.b1;
     if(nb1 < w.b0) nb1 = w.b0;
     if(nb1 != w.b1)

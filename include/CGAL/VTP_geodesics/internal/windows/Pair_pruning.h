@@ -39,6 +39,8 @@ inline int compare_distances(double fa, double fb)
 // from F), without the square root.
 inline int compare_distance_to(const Window& w, double x, double F)
 {
+  if(is_line(w))
+    return compare_distances(window_distance(w, x), F);
   const double dx = x - w.sx;
   const double q = dx * dx + w.sy * w.sy;
   const double tol = 1e-13 * F;
@@ -82,6 +84,39 @@ inline bool may_vanish_inside(double qa, double qb, double qc, double l, double 
     }
   }
   return false;
+}
+
+// A polynomial q(x) = (qa x + qb) x + qc that vanishes wherever windows a and b offer the same distance at
+// (x, 0) (it may vanish elsewhere too: its roots are candidates only).
+inline void difference_polynomial(const Window& a, const Window& b, double& qa, double& qb, double& qc)
+{
+  if(is_line(a) && is_line(b))
+  {
+    // (sigma_a - sigma_b) + (sx_a - sx_b) x
+    qa = 0.;
+    qb = a.sx - b.sx;
+    qc = a.sigma - b.sigma;
+    return;
+  }
+  if(is_line(a) || is_line(b))
+  {
+    // beta + n x = sqrt((x - px)^2 + py^2), beta = sigma_line - sigma_point, squared once
+    const Window& l = is_line(a) ? a : b;
+    const Window& p = is_line(a) ? b : a;
+    const double beta = l.sigma - p.sigma, n = l.sx;
+    qa = n * n - 1.;
+    qb = 2. * (beta * n + p.sx);
+    qc = beta * beta - p.sx * p.sx - p.sy * p.sy;
+    return;
+  }
+  // sqrt(Qa) = beta + sqrt(Qb), beta = sigma_b - sigma_a, squared twice
+  const double beta = b.sigma - a.sigma;
+  const double lin = 2. * (b.sx - a.sx);
+  const double c = a.sx * a.sx + a.sy * a.sy - b.sx * b.sx - b.sy * b.sy - beta * beta;
+  const double b2 = beta * beta;
+  qa = lin * lin - 4. * b2;
+  qb = 2. * lin * c + 8. * b2 * b.sx;
+  qc = c * c - 4. * b2 * (b.sx * b.sx + b.sy * b.sy);
 }
 
 // Window w (with the distances e at its ends) is dominated on [l, r], its overlap with another
@@ -136,14 +171,8 @@ inline void settle_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb, 
                         std::vector<Window_piece>& pieces)
 {
   const bool al = (l == a.b0), bl = (l == b.b0), ar = (r == a.b1), br = (r == b.b1);
-  // q(x): sqrt(Qa) = beta + sqrt(Qb), beta = sigma_b - sigma_a, squared twice
-  const double beta = b.sigma - a.sigma;
-  const double lin = 2. * (b.sx - a.sx);
-  const double c = a.sx * a.sx + a.sy * a.sy - b.sx * b.sx - b.sy * b.sy - beta * beta;
-  const double b2 = beta * beta;
-  const double qa = lin * lin - 4. * b2;
-  const double qb = 2. * lin * c + 8. * b2 * b.sx;
-  const double qc = c * c - 4. * b2 * (b.sx * b.sx + b.sy * b.sy);
+  double qa, qb, qc;
+  difference_polynomial(a, b, qa, qb, qc);
 
   // The same window shorter at both ends, or at one end with a near-tie at the other: if q keeps
   // its sign inside, so does fa - fb, and the other window loses the whole overlap.

@@ -54,18 +54,32 @@ inline void emit_child(const Window& w, double p0, double p1,
                        double min_length, double turn, std::vector<Window>& out)
 {
   Window c;
-  rotate_into(w.sx - ox, w.sy - oy, ux, uy, c.sx, c.sy);
-  c.sigma = w.sigma;
   c.angle = w.angle + turn;
   c.origin = w.origin;
-  if(!(c.sy < 0.))
-    return; // source on the line of the edge (degenerate face): nothing crosses
-  // intersection of the ray from the source through (p, 0) with the line of the child edge
   double px0, py0, px1, py1;
   rotate_into(p0 - ox, -oy, ux, uy, px0, py0);
   rotate_into(p1 - ox, -oy, ux, uy, px1, py1);
-  double x0 = ray_crossing(c.sx, c.sy, px0, py0, c_pos);
-  double x1 = ray_crossing(c.sx, c.sy, px1, py1, c_pos);
+  double x0, x1;
+  if(is_line(w))
+  {
+    // the direction turns with the frame; sigma becomes the distance at the origin of the child edge
+    rotate_into(w.sx, w.sy, ux, uy, c.sx, c.sy);
+    c.sigma = w.sigma + w.sx * ox + w.sy * oy;
+    if(!(c.sy > 0.))
+      return; // the front runs along the child edge (degenerate face): nothing crosses
+    x0 = px0 - c.sx * (py0 / c.sy);
+    x1 = px1 - c.sx * (py1 / c.sy);
+  }
+  else
+  {
+    rotate_into(w.sx - ox, w.sy - oy, ux, uy, c.sx, c.sy);
+    c.sigma = w.sigma;
+    if(!(c.sy < 0.))
+      return; // source on the line of the edge (degenerate face): nothing crosses
+    // intersection of the ray from the source through (p, 0) with the line of the child edge
+    x0 = ray_crossing(c.sx, c.sy, px0, py0, c_pos);
+    x1 = ray_crossing(c.sx, c.sy, px1, py1, c_pos);
+  }
   if(x0 > x1) std::swap(x0, x1);
   if(x0 < 0.) x0 = 0.;
   if(x1 > lc) x1 = lc;
@@ -110,6 +124,18 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
     const double xc = ray_crossing(w, cx, cy);
     scratch_xc[i] = xc;
     double base, sp, ex, ey;
+    if(xc >= w.b0 && xc <= w.b1 && is_line(w))
+    {
+      // straight to C along the parallel front
+      const double dist = w.sigma + w.sx * cx + w.sy * cy;
+      if(dist < best)
+      {
+        best = dist;
+        best_index = i;
+        sp_s = xc;
+      }
+      continue;
+    }
     if(xc >= w.b0 && xc <= w.b1)
     {
       // straight to C, seen through the window

@@ -36,6 +36,11 @@ namespace internal {
 // vertices plus the index of a point source (see Seeding.h); children keep the origin of their parent.
 // `angle` is the direction of the x-axis of the frame of h in the turning frame of the origin (the log map,
 // log_map/Direction_record.h; 0 when the log map is not asked for).
+//
+// A window whose source is a line (a piece of a source curve, propagation/Seeding.h) is told by sy > 0: its
+// geodesics are parallel in the unfolding, (sx, sy) is their unit direction (sy > 0: into face(h)) and the
+// distance of a point (x, y) of the unfolding is sigma + sx x + sy y (sigma: the distance at A). It is
+// propagated, trimmed and pruned by the same rules; the functions below evaluate both kinds.
 struct Window
 {
   double b0, b1;
@@ -46,6 +51,9 @@ struct Window
 };
 // 56 bytes (48 without `angle`: what the log map costs per window; the manual's claims page cites this line).
 static_assert(sizeof(Window) == 56, "a window is six doubles and a 32-bit index, padded to 56 bytes");
+
+// Whether w is a line window (see above).
+inline bool is_line(const Window& w) { return w.sy > 0.; }
 
 // The change of frame, written once: the vector (rx, ry) in the frame of an edge of unit direction (ux, uy)
 // (both given in the same frame): (qx, qy) = (r . u, u x r). The children of a window (their source image
@@ -64,13 +72,20 @@ inline double ray_crossing(double sx, double sy, double px, double py, double fa
   return den > 0. ? sx + (px - sx) * (-sy / den) : fallback;
 }
 
-// The same for the image of window w: where the segment from its image to (px, py) crosses its edge
-// (px itself when the point is not above the image).
-inline double ray_crossing(const Window& w, double px, double py) { return ray_crossing(w.sx, w.sy, px, py, px); }
+// The same for window w: where the segment from its image to (px, py) crosses its edge (px itself when the
+// point is not above the image); for a line window, where the parallel through (px, py) does.
+inline double ray_crossing(const Window& w, double px, double py)
+{
+  if(is_line(w))
+    return px - w.sx * (py / w.sy);
+  return ray_crossing(w.sx, w.sy, px, py, px);
+}
 
 // The distance window w offers at the point (x, 0) of its edge.
 inline double window_distance(const Window& w, double x)
 {
+  if(is_line(w))
+    return w.sigma + w.sx * x;
   const double dx = x - w.sx;
   return w.sigma + std::sqrt(dx * dx + w.sy * w.sy);
 }
@@ -82,7 +97,10 @@ inline double window_distance_at(const Window& w, double px, double py)
 {
   const double xc = ray_crossing(w, px, py);
   const double e = (std::min)((std::max)(xc, w.b0), w.b1);
-  const double ax = e - w.sx, bx = px - e;
+  const double bx = px - e;
+  if(is_line(w))
+    return e == xc ? w.sigma + w.sx * px + w.sy * py : w.sigma + w.sx * e + std::sqrt(bx * bx + py * py);
+  const double ax = e - w.sx;
   if(e == xc)
   {
     const double dx = px - w.sx, dy = py - w.sy;
@@ -112,6 +130,8 @@ struct Window_ends
 // The smallest distance a window offers on its own edge: every path it carries beyond is longer.
 inline double window_lower_bound(const Window& w)
 {
+  if(is_line(w))
+    return w.sigma + w.sx * (w.sx > 0. ? w.b0 : w.b1);
   const double e = (std::min)((std::max)(w.sx, w.b0), w.b1) - w.sx;
   return w.sigma + std::sqrt(e * e + w.sy * w.sy);
 }
