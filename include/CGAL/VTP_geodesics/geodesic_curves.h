@@ -87,6 +87,9 @@ extract_curves(const Solver& solver, const std::vector<double>* levels, const NP
   if(!engine.path_record().is_active() && !engine.kept_field().is_active())
     throw Invalid_input_error("curves need the field of the last computation: compute with keep_field(true) "
                               "(exact), or record_paths(true)");
+  if(has_segments(engine.seeds()) && (levels == nullptr || !engine.kept_field().is_active()))
+    throw Invalid_input_error("from sources that are curves, the isolines (their offset curves) only, from the kept "
+                              "field (keep_field(true)); no cell borders yet");
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, index.tm));
   const double scale = index.length_scale;

@@ -118,7 +118,17 @@ public:
       const double v = Curve_field::value(c, x, y, NO_INDEX, which);
       if(which < 0)
         return std::numeric_limits<double>::quiet_NaN();
-      c[static_cast<std::size_t>(which)].active_circle(x, y, cx, cy, b);
+      const Curve_candidate& q = c[static_cast<std::size_t>(which)];
+      if(q.front_at(x, y))
+      {
+        // a straight front: its gradient is its direction; as a circle (for the march's guesses, which it
+        // checks against the field), one far behind the point
+        gx = q.nx;
+        gy = q.ny;
+        q.active_circle(x, y, cx, cy, b);
+        return v - level;
+      }
+      q.active_circle(x, y, cx, cy, b);
       const double dx = x - cx, dy = y - cy, r = std::sqrt(dx * dx + dy * dy);
       if(!(r > 0.))
         return std::numeric_limits<double>::quiet_NaN();
@@ -192,9 +202,15 @@ public:
       next = std::numeric_limits<double>::quiet_NaN();
       if(which >= 0)
       {
-        double cx, cy, b;
-        cc[static_cast<std::size_t>(which)].active_circle(x, y, cx, cy, b);
-        next = circle_on_line(px, py, dx, dy, cx, cy, b, level, u);
+        const Curve_candidate& q = cc[static_cast<std::size_t>(which)];
+        if(q.front_at(x, y))
+          next = q.front_on_line(px, py, dx, dy, level, u);
+        else
+        {
+          double cx, cy, b;
+          q.active_circle(x, y, cx, cy, b);
+          next = circle_on_line(px, py, dx, dy, cx, cy, b, level, u);
+        }
       }
       return v - level;
     };

@@ -210,10 +210,15 @@ public:
       if(best_which >= 0)
       {
         const double* l = line[best_side];
-        double cx, cy, b;
-        (best_side == 0 ? m_cf : m_cg)[static_cast<std::size_t>(best_which)].active_circle(l[0] + u * l[2],
-                                                                                          l[1] + u * l[3], cx, cy, b);
-        next = circle_on_line(l[0], l[1], l[2], l[3], cx, cy, b, level, u);
+        const Curve_candidate& q = (best_side == 0 ? m_cf : m_cg)[static_cast<std::size_t>(best_which)];
+        if(q.front_at(l[0] + u * l[2], l[1] + u * l[3]))
+          next = q.front_on_line(l[0], l[1], l[2], l[3], level, u);
+        else
+        {
+          double cx, cy, b;
+          q.active_circle(l[0] + u * l[2], l[1] + u * l[3], cx, cy, b);
+          next = circle_on_line(l[0], l[1], l[2], l[3], cx, cy, b, level, u);
+        }
       }
       return best - level;
     };

@@ -43,23 +43,61 @@ struct Curve_candidate
   // crosses its interval (gx0, gy0) - (gx1, gy1), else bent at the nearer end (e0, e1: the image to the ends)
   bool window = false;
   double e0 = 0., e1 = 0., low = 0.;  // (low: base plus the image's distance to the interval)
+  // a line window (a piece of a source curve, windows/Window.h), or a side of a piece lying in the face: no image;
+  // where the parallel through the point crosses the interval in front of it, the distance is base + n . p
+  // (n = (nx, ny), the unit direction of the front), else it bends at an end (base + e0 or e1 there)
+  bool line = false;
+  double nx = 0., ny = 0.;
+
+  // whether a line candidate's front reaches (px, py) straight: the parallel through it crosses the interval,
+  // which lies behind it
+  bool line_sees(double px, double py) const
+  {
+    // p - g0 = t (g1 - g0) + s n: seen where 0 <= t <= 1 and s >= 0
+    const double ex = gx1 - gx0, ey = gy1 - gy0, rx = px - gx0, ry = py - gy0;
+    const double den = ex * ny - ey * nx;
+    if(den == 0. || (ex * ry - ey * rx) / den < 0.)
+      return false;
+    const double t = (rx * ny - ry * nx) / den;
+    return t >= 0. && t <= 1.;
+  }
 
   // the candidate's distance at (px, py)
   double distance_at(double px, double py) const
   {
     const double dx = px - x, dy = py - y;
-    if(window)
+    if(line && line_sees(px, py))
+      return base + nx * px + ny * py;
+    if(window && !line)
     {
       const double ex = gx1 - gx0, ey = gy1 - gy0, rx = gx0 - x, ry = gy0 - y;
       const double den = dx * ey - dy * ex;
       const double t = den != 0. ? (rx * dy - ry * dx) / den : -1.;
       if(!(t >= 0. && t <= 1.))  // (the nearer end gives the lesser of the two)
-      {
-        const double ax = px - gx0, ay = py - gy0, bx = px - gx1, by = py - gy1;
-        return base + (std::min)(e0 + std::sqrt(ax * ax + ay * ay), e1 + std::sqrt(bx * bx + by * by));
-      }
+        return bent_distance(px, py);
     }
+    if(line)
+      return bent_distance(px, py);
     return base + std::sqrt(dx * dx + dy * dy);
+  }
+
+  // the distance of a window's path to (px, py) bent at the nearer end of its interval
+  double bent_distance(double px, double py) const
+  {
+    const double ax = px - gx0, ay = py - gy0, bx = px - gx1, by = py - gy1;
+    return base + (std::min)(e0 + std::sqrt(ax * ax + ay * ay), e1 + std::sqrt(bx * bx + by * by));
+  }
+
+  // whether the piece of the candidate's distance that holds at (px, py) is its straight front (a line
+  // candidate that sees the point: no circle, see active_circle())
+  bool front_at(double px, double py) const { return line && line_sees(px, py); }
+
+  // the abscissa u of the line (px, py) + u (dx, dy) where a line candidate's front reaches `level`, from u
+  // (the front's value is linear along the line); u itself if the line runs along the front
+  double front_on_line(double px, double py, double dx, double dy, double level, double u) const
+  {
+    const double slope = nx * dx + ny * dy;
+    return slope != 0. ? (level - base - nx * px - ny * py) / slope : u;
   }
 
   // the piece of the candidate's distance that holds at (px, py), as in distance_at(): there the distance is
@@ -71,12 +109,28 @@ struct Curve_candidate
     b = base;
     if(!window)
       return;
-    const double dx = px - x, dy = py - y;
-    const double ex = gx1 - gx0, ey = gy1 - gy0, rx = gx0 - x, ry = gy0 - y;
-    const double den = dx * ey - dy * ex;
-    const double t = den != 0. ? (rx * dy - ry * dx) / den : -1.;
-    if(t >= 0. && t <= 1.)
-      return;
+    if(line)
+    {
+      // (a front that sees the point has no circle: callers that solve on it ask front_at() first; this one,
+      // far behind the point, is tangent to the front there, for a first guess)
+      if(line_sees(px, py))
+      {
+        const double far = 1e4 * (std::abs(px) + std::abs(py) + std::abs(gx1 - gx0) + std::abs(gy1 - gy0) + 1.);
+        cx = px - far * nx;
+        cy = py - far * ny;
+        b = base + nx * px + ny * py - far;
+        return;
+      }
+    }
+    else
+    {
+      const double dx = px - x, dy = py - y;
+      const double ex = gx1 - gx0, ey = gy1 - gy0, rx = gx0 - x, ry = gy0 - y;
+      const double den = dx * ey - dy * ex;
+      const double t = den != 0. ? (rx * dy - ry * dx) / den : -1.;
+      if(t >= 0. && t <= 1.)
+        return;
+    }
     const double ax = px - gx0, ay = py - gy0, bx = px - gx1, by = py - gy1;
     if(e0 + std::sqrt(ax * ax + ay * ay) <= e1 + std::sqrt(bx * bx + by * by))
     {
@@ -99,7 +153,10 @@ struct Curve_candidate
     if(!window)
       return circle_interval(px, py, dx, dy, x, y, level - base, lo, hi);
     double v_lo, v_hi;
-    seen_on_line(px, py, dx, dy, v_lo, v_hi);
+    if(line)
+      front_seen_on_line(px, py, dx, dy, v_lo, v_hi);
+    else
+      seen_on_line(px, py, dx, dy, v_lo, v_hi);
     lo = std::numeric_limits<double>::infinity();
     hi = -std::numeric_limits<double>::infinity();
     auto hull = [&](double a0, double a1) {
@@ -110,7 +167,21 @@ struct Curve_candidate
       }
     };
     double s0, s1;
-    if(circle_interval(px, py, dx, dy, x, y, level - base, s0, s1))
+    if(line)
+    {
+      // straight, where seen: base + n . (p + u d) < level, a half-line
+      const double slope = nx * dx + ny * dy, at = level - base - nx * px - ny * py;
+      s0 = -std::numeric_limits<double>::infinity();
+      s1 = std::numeric_limits<double>::infinity();
+      if(slope > 0.)
+        s1 = at / slope;
+      else if(slope < 0.)
+        s0 = at / slope;
+      else if(!(at > 0.))
+        s1 = s0;
+      hull((std::max)(s0, v_lo), (std::min)(s1, v_hi));
+    }
+    else if(circle_interval(px, py, dx, dy, x, y, level - base, s0, s1))
       hull((std::max)(s0, v_lo), (std::min)(s1, v_hi));  // straight, where seen
     const double ends[2][3] = { { gx0, gy0, e0 }, { gx1, gy1, e1 } };
     for(const auto& e : ends)  // bent at an end, where not seen
@@ -141,6 +212,33 @@ struct Curve_candidate
     v_lo = -std::numeric_limits<double>::infinity();
     v_hi = std::numeric_limits<double>::infinity();
     const double a[2][2] = { { sign * num0, sign * num1 }, { sign * (den0 - num0), sign * (den1 - num1) } };
+    for(const auto& l : a)  // l[0] + u l[1] >= 0
+    {
+      if(l[1] > 0.)
+        v_lo = (std::max)(v_lo, -l[0] / l[1]);
+      else if(l[1] < 0.)
+        v_hi = (std::min)(v_hi, -l[0] / l[1]);
+      else if(l[0] < 0.)
+        v_lo = std::numeric_limits<double>::infinity();
+    }
+  }
+
+  // The same for a line candidate: where the parallel through p(u) crosses the interval behind p(u).
+  void front_seen_on_line(double px, double py, double dx, double dy, double& v_lo, double& v_hi) const
+  {
+    // t(u) = cross(p(u) - g0, n) / cross(g1 - g0, n) in [0, 1], s(u) = cross(g1 - g0, p(u) - g0) / cross(g1 - g0, n)
+    // >= 0: linear in u
+    const double ex = gx1 - gx0, ey = gy1 - gy0, rx = px - gx0, ry = py - gy0;
+    const double den = ex * ny - ey * nx;
+    v_lo = -std::numeric_limits<double>::infinity();
+    v_hi = std::numeric_limits<double>::infinity();
+    if(den == 0.)
+    {
+      v_lo = v_hi;
+      return;
+    }
+    const double t0 = (rx * ny - ry * nx) / den, t1 = (dx * ny - dy * nx) / den;
+    const double a[3][2] = { { t0, t1 }, { 1. - t0, -t1 }, { (ex * ry - ey * rx) / den, (ex * dy - ey * dx) / den } };
     for(const auto& l : a)  // l[0] + u l[1] >= 0
     {
       if(l[1] > 0.)
@@ -196,15 +294,52 @@ void add_crossing_candidates(const Kept_field& field, Index f, const Face_frame&
     const int k = static_cast<int>(c->halfedge % 3);
     Curve_candidate q{0., 0., c->sigma, label_of(c->origin)};
     q.window = true;
-    frame.from_edge_frame(k, c->sx, c->sy, q.x, q.y);
     frame.from_edge_frame(k, c->b0, 0., q.gx0, q.gy0);
     frame.from_edge_frame(k, c->b1, 0., q.gx1, q.gy1);
+    if(c->sy > 0.)
+    {
+      // a line window: sigma + n . (p - corner k) in the frame of f
+      double ox, oy, tx, ty;
+      frame.from_edge_frame(k, 0., 0., ox, oy);
+      frame.from_edge_frame(k, c->sx, c->sy, tx, ty);
+      q.line = true;
+      q.nx = tx - ox;
+      q.ny = ty - oy;
+      q.base = c->sigma - (q.nx * ox + q.ny * oy);
+      q.e0 = c->sigma + c->sx * c->b0 - q.base;
+      q.e1 = c->sigma + c->sx * c->b1 - q.base;
+      q.low = c->sigma + c->sx * (c->sx > 0. ? c->b0 : c->b1);
+      out.push_back(q);
+      continue;
+    }
+    frame.from_edge_frame(k, c->sx, c->sy, q.x, q.y);
     const double a = c->b0 - c->sx, b = c->b1 - c->sx, s2 = c->sy * c->sy;
     q.e0 = std::sqrt(a * a + s2);
     q.e1 = std::sqrt(b * b + s2);
     q.low = c->sigma + (c->sx >= c->b0 && c->sx <= c->b1 ? -c->sy : (std::min)(q.e0, q.e1));
     out.push_back(q);
   }
+}
+
+// The side `side` of the piece of a source curve from (x0, y0) to (x1, y1) (frame of its face), as a line
+// candidate of that face: the distance to the piece's line where the foot lies on the piece, on that side.
+inline Curve_candidate piece_candidate(double x0, double y0, double x1, double y1, int side, Index label)
+{
+  Curve_candidate q{0., 0., 0., label};
+  const double dx = x1 - x0, dy = y1 - y0, len = std::sqrt(dx * dx + dy * dy);
+  q.window = true;
+  q.line = true;
+  q.nx = len > 0. ? -side * dy / len : 0.;
+  q.ny = len > 0. ? side * dx / len : 0.;
+  q.base = -(q.nx * x0 + q.ny * y0);
+  q.gx0 = x0;
+  q.gy0 = y0;
+  q.gx1 = x1;
+  q.gy1 = y1;
+  q.e0 = -q.base;  // (base + e0 = 0 at the ends)
+  q.e1 = -q.base;
+  q.low = 0.;
+  return q;
 }
 
 // Drops the windows that are nowhere the least of their label in the face: a candidate's distance is convex

@@ -207,6 +207,11 @@ public:
     for(auto it = range.first; it != range.second; ++it)
     {
       const Seed& s = m_seeds[static_cast<std::size_t>(it->second)];
+      if(s.segment)
+      {
+        out.push_back(piece_candidate(s.x, s.y, s.x1, s.y1, s.side, s.label));
+        continue;
+      }
       double x, y;
       seed_in_face(s, f, x, y);
       out.push_back(Curve_candidate{x, y, 0., s.label});

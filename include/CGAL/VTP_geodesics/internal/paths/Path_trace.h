@@ -126,6 +126,8 @@ private:
   bool follow(const Offer& offer, double px, double py, std::vector<Trace_point>& out, Index& origin,
               bool strict = false) const
   {
+    if(offer.sy > 0.)
+      return follow_line(offer, px, py, out, origin);
     const Mesh_arrays& m = m_mesh;
     origin = offer.origin;
     Index h = offer.halfedge;
@@ -216,6 +218,93 @@ private:
       const int through_end = through_vertex(h, x, sx, sy, sigma, out, origin);
       if(through_end != 0)
         return through_end > 0;
+      p.element = e;
+      p.x = x;
+      push(out, p);
+    }
+    return false;
+  }
+
+  // The same for the offer of a line window (a piece of a source curve, offer.sy > 0): the path runs back
+  // against the direction (offer.sx, offer.sy) of the parallel front, face by face, to the face of the piece,
+  // where it ends at its foot on the piece (the paths of a line window meet no vertex but by rounding: a line
+  // through a vertex goes on into the face its side test picks).
+  bool follow_line(const Offer& offer, double px, double py, std::vector<Trace_point>& out, Index& origin) const
+  {
+    const Mesh_arrays& m = m_mesh;
+    origin = offer.origin;
+    Index h = offer.halfedge;
+    double x = offer.bend == offer.bend ? offer.bend : px - offer.sx * (py / offer.sy);
+    x = (std::min)((std::max)(x, 0.), m.geometry[h].length);
+    // (bx, by): the direction back to the piece, in the frame of h (below h)
+    double bx = -offer.sx, by = -offer.sy;
+    Trace_point p;
+    p.kind = Trace_point::ON_EDGE;
+    p.element = h;
+    p.x = x;
+    push(out, p);
+    const Seed& piece = m_seeds[static_cast<std::size_t>(origin - m.nv)];
+    for(Index step = 0; step < m.nf + 8; ++step)
+    {
+      const Index o = m.opposite[h];
+      if(o == NO_INDEX)
+        return false;
+      const Halfedge_geometry& g = m.geometry[o];
+      const double xo = g.length - x;
+      bx = -bx;
+      by = -by;
+      const Index f = Mesh_arrays::face(o);
+      if(f == piece.element)
+      {
+        // the foot: where the line from (xo, 0) along (bx, by) meets the line of the piece (frame of 3f)
+        const Face_frame frame(m, f);
+        double qx, qy, ex, ey, zx, zy;
+        frame.from_edge_frame(static_cast<int>(o % 3), xo, 0., qx, qy);
+        frame.from_edge_frame(static_cast<int>(o % 3), xo + bx, by, ex, ey);
+        ex -= qx;
+        ey -= qy;
+        const double dx = piece.x1 - piece.x, dy = piece.y1 - piece.y;
+        const double den = ex * dy - ey * dx;
+        const double t = den != 0. ? ((piece.x - qx) * dy - (piece.y - qy) * dx) / den : 0.;
+        zx = qx + t * ex;
+        zy = qy + t * ey;
+        push(out, foot_on_piece(piece, zx, zy));
+        return true;
+      }
+      if(!(by > 0.))
+        return false;
+      Index e;
+      double p0x, p0y, wx, wy, position;
+      const bool to_ca = m.is_degenerate_face[f] ? (xo < g.cx || (xo == g.cx && !(g.l_next > 0.)))
+                                                  : !(bx * g.cy - by * (g.cx - xo) >= 0.);
+      if(to_ca)
+      {
+        e = Mesh_arrays::prev(o);  // C -> A
+        p0x = g.cx; p0y = g.cy; wx = -g.cx; wy = -g.cy;
+      }
+      else
+      {
+        e = Mesh_arrays::next(o);  // B -> C
+        p0x = g.length; p0y = 0.; wx = g.cx - g.length; wy = g.cy;
+      }
+      if(m.is_degenerate_face[f])
+        position = std::sqrt((xo - p0x) * (xo - p0x) + p0y * p0y);
+      else
+      {
+        const double den = bx * wy - by * wx;
+        double v = den != 0. ? (bx * (0. - p0y) - by * (xo - p0x)) / den : 0.;
+        v = (std::min)((std::max)(v, 0.), 1.);
+        position = v * std::sqrt(wx * wx + wy * wy);
+      }
+      const double w = std::sqrt(wx * wx + wy * wy);
+      if(!(w > 0.))
+        return false;
+      double nbx, nby;
+      rotate_into(bx, by, wx / w, wy / w, nbx, nby);
+      bx = nbx;
+      by = nby;
+      h = e;
+      x = (std::min)((std::max)(position * (m.geometry[e].length / w), 0.), m.geometry[e].length);
       p.element = e;
       p.x = x;
       push(out, p);

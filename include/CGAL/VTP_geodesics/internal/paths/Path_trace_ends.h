@@ -70,10 +70,63 @@ protected:
       push(out, vertex_point(origin));
       return origin;
     }
-    // (a source point is a point of the path as it is; a source vertex, without its coordinates)
+    // (a source point is a point of the path as it is; a source vertex, without its coordinates; a piece of a
+    // curve, the foot of the last point on it)
     const Seed& s = m_seeds[static_cast<std::size_t>(origin - m_mesh.nv)];
+    if(s.segment)
+    {
+      double px = 0., py = 0.;
+      if(!out.empty() && point_in_frame(out.back(), s.element, px, py))
+        push(out, foot_on_piece(s, px, py));
+      return origin;
+    }
     push(out, s.kind == Seed::AT_VERTEX ? vertex_point(s.element) : static_cast<const Trace_point&>(s));
     return origin;
+  }
+
+  // The point of piece s (a segment seed) nearest to (px, py) (frame of its face), as a point of the path.
+  static Trace_point foot_on_piece(const Seed& s, double px, double py)
+  {
+    const double dx = s.x1 - s.x, dy = s.y1 - s.y;
+    const double d2 = dx * dx + dy * dy;
+    double t = d2 > 0. ? ((px - s.x) * dx + (py - s.y) * dy) / d2 : 0.;
+    t = (std::min)((std::max)(t, 0.), 1.);
+    Trace_point p;
+    p.kind = Trace_point::IN_FACE;
+    p.element = s.element;
+    p.x = s.x + t * dx;
+    p.y = s.y + t * dy;
+    return p;
+  }
+
+  // The point q in the frame of face f (a vertex of f, a point of an edge of f, or a point of f); false if it
+  // is not in f.
+  bool point_in_frame(const Trace_point& q, Index f, double& px, double& py) const
+  {
+    const Mesh_arrays& m = m_mesh;
+    const Face_frame frame(m, f);
+    if(q.kind == Trace_point::IN_FACE)
+    {
+      px = q.x;
+      py = q.y;
+      return q.element == f;
+    }
+    for(int k = 0; k < 3; ++k)
+    {
+      const Index h = 3 * f + static_cast<Index>(k);
+      if(q.kind == Trace_point::AT_VERTEX && m.source[h] == q.element)
+      {
+        px = frame.x[k];
+        py = frame.y[k];
+        return true;
+      }
+      if(q.kind == Trace_point::ON_EDGE && (q.element == h || m.opposite[h] == q.element))
+      {
+        frame.from_edge_frame(k, q.element == h ? q.x : m.geometry[h].length - q.x, 0., px, py);
+        return true;
+      }
+    }
+    return false;
   }
 
   // Whether the image (ix, iy) is at the point (px, py) of the same frame, to 1e-6 of the image's distance

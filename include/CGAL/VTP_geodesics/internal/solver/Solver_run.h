@@ -55,9 +55,9 @@ void run_solver(const MeshIndex& mesh, VertexPointMap vpm, std::vector<Seed> see
   const bool curves = has_segments(seeds);
   const bool sign = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::signed_distance),
                                                        false);
-  if(curves && (settings.virtual_sources || settings.log_map || settings.keep_field || settings.known_distances))
-    throw Invalid_input_error("sources that are curves need windows (not virtual sources), and give no log map, no "
-                              "kept field and no start from initial distances");
+  if(curves && (settings.virtual_sources || settings.log_map || settings.known_distances))
+    throw Invalid_input_error("sources that are curves need windows (not virtual sources), and give no log map and "
+                              "no start from initial distances");
   if(sign && !curves)
     throw Invalid_input_error("signed_distance needs a source that is a curve");
   // signed: each seed is its own label during the run (the side of each vertex's nearest point), then the
