@@ -394,6 +394,8 @@ struct Totals
   double cgal_seconds = 0., vtp_seconds = 0., pvtp_seconds = 0., vsp_seconds = 0., avtp_seconds = 0.;
   std::size_t avtp_runs = 0;
   double avtp_worst_below = 0.;  // the largest (d_vtp - d_avtp) / max distance
+  std::size_t curve_runs = 0, curve_paths = 0;
+  double curve_worst_parallel = 0.;  // the largest |d_pvtp - d_vtp| / max distance from curves
   Path_counts paths[NUMBER_OF_PATH_METHODS];
 };
 
@@ -707,6 +709,138 @@ std::string check_virtual_sources(const Settings& settings, const std::string& w
 }
 
 // Runs one case; returns false on a failure (printed).
+// Distances from a curve (add_source_curve): the curve along mesh edges from s to s2 (a path of the edge graph,
+// breadth first), against points sampled on it every step (16 per edge; one multi-source run): d <= d_S and
+// d >= d_S - step / 2, to TOLERANCE of the largest distance (every point of the curve is within step / 2 of a
+// sample along it, and the samples are on it); the same edges as add_source_edges() give the same distances; PVTP
+// = VTP; the paths of a few vertices have the length of their distance and end on the curve. Returns a
+// description of the first failure, or an empty string.
+std::string check_curve(const Surface_mesh& mesh, Geodesic_distance_solver<Surface_mesh>& solver, Vertex_index s,
+                        Vertex_index s2, Totals& totals)
+{
+  if(s == s2 || mesh.halfedge(s) == Surface_mesh::null_halfedge() || mesh.halfedge(s2) == Surface_mesh::null_halfedge())
+    return std::string();  // (an isolated vertex: no curve along edges)
+  // the path of the edge graph
+  std::vector<Surface_mesh::Halfedge_index> from(mesh.number_of_vertices(), Surface_mesh::null_halfedge());
+  std::vector<Vertex_index> queue(1, s);
+  std::vector<char> seen(mesh.number_of_vertices(), 0);
+  seen[s] = 1;
+  for(std::size_t i = 0; i < queue.size() && !seen[s2]; ++i)
+    for(Surface_mesh::Halfedge_index h : CGAL::halfedges_around_source(queue[i], mesh))
+    {
+      const Vertex_index w = mesh.target(h);
+      if(!seen[w])
+      {
+        seen[w] = 1;
+        from[w] = h;
+        queue.push_back(w);
+      }
+    }
+  if(!seen[s2])
+    return std::string();
+  std::vector<Surface_mesh::Halfedge_index> edges;
+  for(Vertex_index v = s2; v != s; v = mesh.source(from[v]))
+    edges.push_back(from[v]);
+  std::reverse(edges.begin(), edges.end());
+  std::vector<Vertex_index> curve(1, s);
+  for(auto h : edges)
+    curve.push_back(mesh.target(h));
+  ++totals.curve_runs;
+  namespace VP = CGAL::VTP_geodesics::parameters;
+  solver.clear_sources();
+  solver.add_source_curve(curve);
+  solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), VP::record_paths(true));
+  const std::vector<double> d = solver.distances();
+  const double scale = (std::max)(largest_finite(d), 1e-300);
+  std::ostringstream failure;
+  failure.precision(17);
+  // the samples, as face locations on the edges
+  const int per_edge = 16;
+  double step = 0.;
+  std::vector<std::pair<Surface_mesh::Face_index, std::array<double, 3> > > samples;
+  for(auto h : edges)
+  {
+    auto g = mesh.is_border(h) ? mesh.opposite(h) : h;
+    const auto f = mesh.face(g);
+    // the barycentric coordinates of source(g) and target(g) in f
+    int a = 0, b = 0, k = 0;
+    for(auto hh : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+    {
+      if(mesh.source(hh) == mesh.source(g)) a = k;
+      if(mesh.source(hh) == mesh.target(g)) b = k;
+      ++k;
+    }
+    step = (std::max)(step, std::sqrt(CGAL::squared_distance(mesh.point(mesh.source(h)), mesh.point(mesh.target(h))))
+                              / per_edge);
+    for(int i = 0; i <= per_edge; ++i)
+    {
+      std::array<double, 3> bc = { { 0., 0., 0. } };
+      bc[static_cast<std::size_t>(a)] = 1. - double(i) / per_edge;
+      bc[static_cast<std::size_t>(b)] += double(i) / per_edge;
+      samples.emplace_back(f, bc);
+    }
+  }
+  solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), samples);
+  const std::vector<double> ds = solver.distances();
+  for(std::size_t i = 0; i < d.size() && failure.str().empty(); ++i)
+  {
+    if(std::isfinite(d[i]) != std::isfinite(ds[i]) || std::isnan(d[i]))
+      failure << "curve: vertex " << i << " at " << d[i] << ", samples " << ds[i];
+    else if(std::isfinite(d[i]) && (d[i] > ds[i] + TOLERANCE * scale || d[i] < ds[i] - step / 2. - TOLERANCE * scale))
+      failure << "curve: vertex " << i << " at " << d[i] << ", not within [" << ds[i] - step / 2. << ", " << ds[i]
+              << "] (the samples every " << step << ")";
+  }
+  if(!failure.str().empty())
+    return failure.str();
+  // the same edges
+  solver.clear_sources();
+  solver.add_source_edges(edges);
+  solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map());
+  const Difference edges_difference = compare(solver.distances(), d, std::size_t(s));
+  if(!edges_difference.ok())
+    return "curve: add_source_edges differs from add_source_curve by " + std::to_string(edges_difference.max_abs);
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+  solver.clear_sources();
+  solver.add_source_curve(curve);
+  solver.compute<CGAL::Parallel_tag>(vtp_test::Discard_map(), VP::number_of_threads(2));
+  const Difference parallel = compare(solver.distances(), d, std::size_t(s));
+  totals.curve_worst_parallel = (std::max)(totals.curve_worst_parallel, parallel.max_abs / scale);
+  if(!parallel.ok())
+    return "curve: pvtp differs from vtp by " + std::to_string(parallel.max_abs);
+#endif
+  // paths, from the run recording them
+  solver.clear_sources();
+  solver.add_source_curve(curve);
+  solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), VP::record_paths(true));
+  const std::size_t n = d.size();
+  for(std::size_t j = 0; j < 5; ++j)
+  {
+    const Vertex_index v(static_cast<Surface_mesh::size_type>((std::size_t(s) + 1 + j * (n / 5 + 1)) % n));
+    if(!std::isfinite(d[v]))
+      continue;
+    std::vector<vtp_test::Point_3> path;
+    try { solver.shortest_path_points(v, std::back_inserter(path)); }
+    catch(const std::exception& e) { return "curve: path from vertex " + std::to_string(std::size_t(v)) + ": " + e.what(); }
+    double length = 0.;
+    for(std::size_t k = 1; k < path.size(); ++k)
+      length += std::sqrt(CGAL::squared_distance(path[k - 1], path[k]));
+    double off = std::numeric_limits<double>::infinity();  // the end's distance to the curve
+    if(!path.empty())
+      for(auto h : edges)
+        off = (std::min)(off, std::sqrt(CGAL::squared_distance(path.back(), vtp_test::Kernel::Segment_3(mesh.point(mesh.source(h)),
+                                                                                              mesh.point(mesh.target(h))))));
+    ++totals.curve_paths;
+    if(path.empty() || path.front() != mesh.point(v) || !(std::abs(length - d[v]) <= PATH_TOLERANCE * (d[v] + scale * 1e-3))
+       || !(off <= 1e-9 * scale))
+    {
+      failure << "curve: path from vertex " << std::size_t(v) << ": " << path.size() << " points, length " << length
+              << ", distance " << d[v] << ", its end " << off << " off the curve";
+      return failure.str();
+    }
+  }
+  return std::string();
+}
+
 bool run_case(const Settings& settings, std::size_t index, Totals& totals)
 {
   std::ostringstream head;
@@ -794,6 +928,13 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
       {
         ok = false;
         std::cout << "vtp_stress: MISMATCH " << where << ": " << failure << "; " << reproduce << std::endl;
+      }
+      set_current_case(where + ", curve; " + reproduce);
+      const std::string curve_failure = check_curve(c.mesh, solver, s, s2, totals);
+      if(!curve_failure.empty())
+      {
+        ok = false;
+        std::cout << "vtp_stress: MISMATCH " << where << ": " << curve_failure << "; " << reproduce << std::endl;
       }
     }
     if(settings.vsp)
@@ -1035,6 +1176,10 @@ int main(int argc, char** argv)
   if(settings.vsp)
     std::cout << ", vsp " << totals.vsp_seconds << " s";
   std::cout << ")" << std::endl;
+  if(settings.vtp)
+    std::cout << "vtp_stress: curves along edges: " << totals.curve_runs << " curves (bounded by their samples, equal to "
+              << "their edges, " << totals.curve_paths << " paths checked), largest |d_pvtp - d_vtp| / max distance "
+              << totals.curve_worst_parallel << std::endl;
   // the paths, per method: every reached vertex of every run recording them
   for(int m = 0; m < NUMBER_OF_PATH_METHODS; ++m)
   {

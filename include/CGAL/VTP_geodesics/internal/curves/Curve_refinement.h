@@ -75,7 +75,7 @@ inline double refine_isolines(const Mesh_arrays& m, const std::vector<Seed>& see
           if(o.origin >= m.nv)
           {
             const Seed& s = seeds[static_cast<std::size_t>(o.origin - m.nv)];
-            if(s.kind == Seed::IN_FACE && s.element == p.face)
+            if(s.kind == Seed::IN_FACE && !s.segment && s.element == p.face)  // (a piece of a curve: no image)
             {
               ix = s.x;
               iy = s.y;
@@ -97,6 +97,8 @@ inline double refine_isolines(const Mesh_arrays& m, const std::vector<Seed>& see
         else if(Mesh_arrays::face(o.halfedge) == p.face)
         {
           const bool bent = o.bend == o.bend;
+          if(!bent && o.sy > 0.)
+            continue;  // a line window (a piece of a curve): no image, the point stays
           fr.from_edge_frame(static_cast<int>(o.halfedge % 3), bent ? o.bend : o.sx, bent ? 0. : o.sy, ix, iy);
         }
         else

@@ -115,7 +115,12 @@ inline void seed_segment(Propagation_state& st, const Seed& s, Index origin)
     const double px = frame.x[k] - s.x, py = frame.y[k] - s.y;
     double t0 = 0., t1 = L;
     clip_linear(px * dx + py * dy, ux * dx + uy * dy, 0., len, t0, t1);     // in the strip
-    clip_linear(px * nx + py * ny, ux * nx + uy * ny, 0., HUGE_VAL, t0, t1);  // on this side
+    // the segment along this edge (both ends on it, to rounding): the front leaves the edge itself
+    const double tolerance = 1e-12 * (len + L);
+    const double off0 = px * nx + py * ny, off1 = off0 + L * (ux * nx + uy * ny);
+    const bool along = std::abs(off0) <= tolerance && std::abs(off1) <= tolerance;
+    if(!along)
+      clip_linear(off0, ux * nx + uy * ny, 0., HUGE_VAL, t0, t1);  // on this side
     if(!(t1 > t0))
       continue;
     // in the frame of o (from vertex k+1 to vertex k, the other face above)
@@ -124,6 +129,13 @@ inline void seed_segment(Propagation_state& st, const Seed& s, Index origin)
     if(!(w.sy > 0.))
       continue;  // the front leaves the edge into the face of the segment: nothing crosses
     w.sigma = (px + L * ux) * nx + (py + L * uy) * ny;
+    if(along)
+    {
+      // exactly: perpendicular to the edge, at distance 0 on it
+      w.sx = 0.;
+      w.sy = 1.;
+      w.sigma = 0.;
+    }
     w.b0 = L - t1;
     w.b1 = L - t0;
     w.angle = 0.;
