@@ -841,6 +841,160 @@ std::string check_curve(const Surface_mesh& mesh, Geodesic_distance_solver<Surfa
   return std::string();
 }
 
+// Distances from a curve through faces: a walk from a face of s across up to 8 faces (a point inside each face,
+// joined to a point of the edge to the next one; points drawn from `seed`), as face locations whose consecutive
+// points share a face; checked as check_curve() does against points sampled on it (16 per piece), PVTP = VTP, and
+// the paths. Returns a description of the first failure, or an empty string.
+std::string check_curve_through_faces(const Surface_mesh& mesh, Geodesic_distance_solver<Surface_mesh>& solver,
+                                      Vertex_index s, std::uint64_t seed, Totals& totals)
+{
+  typedef Surface_mesh::Face_index Face_index;
+  typedef std::pair<Face_index, std::array<double, 3> > Location;
+  if(mesh.halfedge(s) == Surface_mesh::null_halfedge())
+    return std::string();
+  Surface_mesh::Halfedge_index h = mesh.halfedge(s);
+  if(mesh.is_border(h))
+    h = mesh.opposite(h);
+  if(mesh.is_border(h))
+    return std::string();
+  vtp_test::Random random(seed);
+  auto corner = [&](Face_index f, Vertex_index v) {
+    int k = 0;
+    for(auto hh : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+    {
+      if(mesh.source(hh) == v)
+        return k;
+      ++k;
+    }
+    return -1;
+  };
+  auto inside = [&](Face_index f) {
+    double a = random.uniform(0.1, 0.8), b = random.uniform(0.1, 0.9) * (1. - a);
+    return Location(f, { { a, b, 1. - a - b } });
+  };
+  auto point_of = [&](const Location& l) {
+    int k = 0;
+    double x = 0., y = 0., z = 0.;
+    for(auto hh : CGAL::halfedges_around_face(mesh.halfedge(l.first), mesh))
+    {
+      const auto& p = mesh.point(mesh.source(hh));
+      const double w = l.second[static_cast<std::size_t>(k++)];
+      x += w * p.x();
+      y += w * p.y();
+      z += w * p.z();
+    }
+    return vtp_test::Point_3(x, y, z);
+  };
+  // pieces: pairs of locations in one face
+  std::vector<std::pair<Location, Location> > pieces;
+  std::vector<Location> curve;
+  Face_index f = mesh.face(h);
+  Location at = inside(f);
+  curve.push_back(at);
+  std::vector<Face_index> visited(1, f);
+  for(int step = 0; step < 8; ++step)
+  {
+    // an edge of f to a face not visited yet
+    std::vector<Surface_mesh::Halfedge_index> ways;
+    for(auto hh : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+      if(!mesh.is_border(mesh.opposite(hh))
+         && std::find(visited.begin(), visited.end(), mesh.face(mesh.opposite(hh))) == visited.end())
+        ways.push_back(hh);
+    if(ways.empty())
+      break;
+    const auto e = ways[random.integer(0, ways.size() - 1)];
+    const Face_index g = mesh.face(mesh.opposite(e));
+    const double t = random.uniform(0.2, 0.8);
+    Location in_f(f, { { 0., 0., 0. } }), in_g(g, { { 0., 0., 0. } });
+    in_f.second[static_cast<std::size_t>(corner(f, mesh.source(e)))] = 1. - t;
+    in_f.second[static_cast<std::size_t>(corner(f, mesh.target(e)))] = t;
+    in_g.second[static_cast<std::size_t>(corner(g, mesh.source(e)))] = 1. - t;
+    in_g.second[static_cast<std::size_t>(corner(g, mesh.target(e)))] = t;
+    pieces.emplace_back(at, in_f);
+    curve.push_back(in_f);
+    at = inside(g);
+    pieces.emplace_back(in_g, at);
+    curve.push_back(at);
+    f = g;
+    visited.push_back(g);
+  }
+  if(curve.size() < 2)
+    return std::string();
+  ++totals.curve_runs;
+  namespace VP = CGAL::VTP_geodesics::parameters;
+  solver.clear_sources();
+  solver.add_source_curve(curve);
+  solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map());
+  const std::vector<double> d = solver.distances();
+  const double scale = (std::max)(largest_finite(d), 1e-300);
+  const int per_piece = 16;
+  double step_length = 0.;
+  std::vector<Location> samples;
+  for(const auto& piece : pieces)
+  {
+    step_length = (std::max)(step_length, std::sqrt(CGAL::squared_distance(point_of(piece.first), point_of(piece.second)))
+                                            / per_piece);
+    for(int i = 0; i <= per_piece; ++i)
+    {
+      const double t = double(i) / per_piece;
+      Location l(piece.first.first, { { 0., 0., 0. } });
+      for(std::size_t k = 0; k < 3; ++k)
+        l.second[k] = (1. - t) * piece.first.second[k] + t * piece.second.second[k];
+      samples.push_back(l);
+    }
+  }
+  solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), samples);
+  const std::vector<double> ds = solver.distances();
+  std::ostringstream failure;
+  failure.precision(17);
+  for(std::size_t i = 0; i < d.size() && failure.str().empty(); ++i)
+  {
+    if(std::isfinite(d[i]) != std::isfinite(ds[i]) || std::isnan(d[i]))
+      failure << "curve through faces: vertex " << i << " at " << d[i] << ", samples " << ds[i];
+    else if(std::isfinite(d[i])
+            && (d[i] > ds[i] + TOLERANCE * scale || d[i] < ds[i] - step_length / 2. - TOLERANCE * scale))
+      failure << "curve through faces: vertex " << i << " at " << d[i] << ", not within [" << ds[i] - step_length / 2.
+              << ", " << ds[i] << "] (the samples every " << step_length << ")";
+  }
+  if(!failure.str().empty())
+    return failure.str();
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+  solver.compute<CGAL::Parallel_tag>(vtp_test::Discard_map(), VP::number_of_threads(2));
+  const Difference parallel = compare(solver.distances(), d, std::size_t(s));
+  totals.curve_worst_parallel = (std::max)(totals.curve_worst_parallel, parallel.max_abs / scale);
+  if(parallel.max_abs > TOLERANCE * scale || parallel.reachability != 0)
+    return "curve through faces: pvtp differs from vtp by " + std::to_string(parallel.max_abs);
+#endif
+  solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), VP::record_paths(true));
+  const std::size_t n = d.size();
+  for(std::size_t j = 0; j < 5; ++j)
+  {
+    const Vertex_index v(static_cast<Surface_mesh::size_type>((std::size_t(s) + 3 + j * (n / 5 + 1)) % n));
+    if(!std::isfinite(d[v]))
+      continue;
+    std::vector<vtp_test::Point_3> path;
+    try { solver.shortest_path_points(v, std::back_inserter(path)); }
+    catch(const std::exception& e) { return "curve through faces: path from vertex " + std::to_string(std::size_t(v)) + ": " + e.what(); }
+    double length = 0.;
+    for(std::size_t k = 1; k < path.size(); ++k)
+      length += std::sqrt(CGAL::squared_distance(path[k - 1], path[k]));
+    double off = std::numeric_limits<double>::infinity();
+    if(!path.empty())
+      for(const auto& piece : pieces)
+        off = (std::min)(off, std::sqrt(CGAL::squared_distance(
+                                path.back(), vtp_test::Kernel::Segment_3(point_of(piece.first), point_of(piece.second)))));
+    ++totals.curve_paths;
+    if(path.empty() || path.front() != mesh.point(v) || !(std::abs(length - d[v]) <= PATH_TOLERANCE * (d[v] + scale * 1e-3))
+       || !(off <= 1e-9 * scale))
+    {
+      failure << "curve through faces: path from vertex " << std::size_t(v) << ": " << path.size() << " points, length "
+              << length << ", distance " << d[v] << ", its end " << off << " off the curve";
+      return failure.str();
+    }
+  }
+  return std::string();
+}
+
 bool run_case(const Settings& settings, std::size_t index, Totals& totals)
 {
   std::ostringstream head;
@@ -930,7 +1084,9 @@ bool run_case(const Settings& settings, std::size_t index, Totals& totals)
         std::cout << "vtp_stress: MISMATCH " << where << ": " << failure << "; " << reproduce << std::endl;
       }
       set_current_case(where + ", curve; " + reproduce);
-      const std::string curve_failure = check_curve(c.mesh, solver, s, s2, totals);
+      std::string curve_failure = check_curve(c.mesh, solver, s, s2, totals);
+      if(curve_failure.empty())
+        curve_failure = check_curve_through_faces(c.mesh, solver, s, settings.seed * 1000003u + index, totals);
       if(!curve_failure.empty())
       {
         ok = false;
@@ -1177,8 +1333,8 @@ int main(int argc, char** argv)
     std::cout << ", vsp " << totals.vsp_seconds << " s";
   std::cout << ")" << std::endl;
   if(settings.vtp)
-    std::cout << "vtp_stress: curves along edges: " << totals.curve_runs << " curves (bounded by their samples, equal to "
-              << "their edges, " << totals.curve_paths << " paths checked), largest |d_pvtp - d_vtp| / max distance "
+    std::cout << "vtp_stress: curves along edges and through faces: " << totals.curve_runs << " curves (bounded by their "
+              << "samples, those along edges equal to their edges, " << totals.curve_paths << " paths checked), largest |d_pvtp - d_vtp| / max distance "
               << totals.curve_worst_parallel << std::endl;
   // the paths, per method: every reached vertex of every run recording them
   for(int m = 0; m < NUMBER_OF_PATH_METHODS; ++m)
