@@ -709,6 +709,16 @@ std::string check_virtual_sources(const Settings& settings, const std::string& w
 }
 
 // Runs one case; returns false on a failure (printed).
+// A difference in words: its largest value, the vertices reached by one run only, the invalid values.
+std::string describe(const Difference& d)
+{
+  std::ostringstream os;
+  os.precision(17);
+  os << d.max_abs << " (" << d.reachability << " vertices reached by one run only, " << d.invalid
+     << " NaN or negative, worst vertex " << d.worst << ")";
+  return os.str();
+}
+
 // Distances from a curve (add_source_curve): the curve along mesh edges from s to s2 (a path of the edge graph,
 // breadth first), against points sampled on it every step (16 per edge; one multi-source run): d <= d_S and
 // d >= d_S - step / 2, to TOLERANCE of the largest distance (every point of the curve is within step / 2 of a
@@ -798,7 +808,7 @@ std::string check_curve(const Surface_mesh& mesh, Geodesic_distance_solver<Surfa
   solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map());
   const Difference edges_difference = compare(solver.distances(), d, std::size_t(s));
   if(!edges_difference.ok())
-    return "curve: add_source_edges differs from add_source_curve by " + std::to_string(edges_difference.max_abs);
+    return "curve: add_source_edges differs from add_source_curve by " + describe(edges_difference);
 #ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
   solver.clear_sources();
   solver.add_source_curve(curve);
@@ -806,7 +816,7 @@ std::string check_curve(const Surface_mesh& mesh, Geodesic_distance_solver<Surfa
   const Difference parallel = compare(solver.distances(), d, std::size_t(s));
   totals.curve_worst_parallel = (std::max)(totals.curve_worst_parallel, parallel.max_abs / scale);
   if(!parallel.ok())
-    return "curve: pvtp differs from vtp by " + std::to_string(parallel.max_abs);
+    return "curve: pvtp differs from vtp by " + describe(parallel);
 #endif
   // paths, from the run recording them
   solver.clear_sources();
@@ -963,7 +973,7 @@ std::string check_curve_through_faces(const Surface_mesh& mesh, Geodesic_distanc
   const Difference parallel = compare(solver.distances(), d, std::size_t(s));
   totals.curve_worst_parallel = (std::max)(totals.curve_worst_parallel, parallel.max_abs / scale);
   if(parallel.max_abs > TOLERANCE * scale || parallel.reachability != 0)
-    return "curve through faces: pvtp differs from vtp by " + std::to_string(parallel.max_abs);
+    return "curve through faces: pvtp differs from vtp by " + describe(parallel);
 #endif
   solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), VP::record_paths(true));
   const std::size_t n = d.size();

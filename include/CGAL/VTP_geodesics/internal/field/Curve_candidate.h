@@ -67,7 +67,7 @@ struct Curve_candidate
   {
     const double dx = px - x, dy = py - y;
     if(line && line_sees(px, py))
-      return base + nx * px + ny * py;
+      return (std::max)(0., base + nx * px + ny * py);  // (0 on the curve, to rounding)
     if(window && !line)
     {
       const double ex = gx1 - gx0, ey = gy1 - gy0, rx = gx0 - x, ry = gy0 - y;

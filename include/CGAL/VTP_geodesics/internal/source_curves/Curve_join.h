@@ -70,13 +70,14 @@ inline bool join_curve_points(const Mesh_arrays& m, const std::vector<Seed>& poi
       const bool ok = target.vertex != NO_INDEX
                         ? tracer.from_vertex(target.vertex, trace)
                         : tracer.from_target(engine.targets()[0], engine.path_record().target[0], trace);
-      if(!ok)
+      if(!ok || trace.size() < 2)
       {
         bad = i - 1;
         return false;
       }
-      // the trace goes from b back to a: its inner points, from a's side
-      for(std::size_t k = trace.size(); k-- > 0;)
+      // the trace goes from b back to a: its inner points, from a's side (its ends are b and a, possibly written
+      // otherwise: a point of an edge as a point of a face)
+      for(std::size_t k = trace.size() - 1; k-- > 1;)
       {
         Seed s;
         static_cast<Surface_point&>(s) = trace[k];

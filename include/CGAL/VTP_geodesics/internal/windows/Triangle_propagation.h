@@ -126,8 +126,8 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
     double base, sp, ex, ey;
     if(xc >= w.b0 && xc <= w.b1 && is_line(w))
     {
-      // straight to C along the parallel front
-      const double dist = w.sigma + w.sx * cx + w.sy * cy;
+      // straight to C along the parallel front (never below 0: C on the curve, to rounding)
+      const double dist = (std::max)(0., w.sigma + w.sx * cx + w.sy * cy);
       if(dist < best)
       {
         best = dist;

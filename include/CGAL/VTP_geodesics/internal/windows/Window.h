@@ -99,7 +99,7 @@ inline double window_distance_at(const Window& w, double px, double py)
   const double e = (std::min)((std::max)(xc, w.b0), w.b1);
   const double bx = px - e;
   if(is_line(w))
-    return e == xc ? w.sigma + w.sx * px + w.sy * py : w.sigma + w.sx * e + std::sqrt(bx * bx + py * py);
+    return e == xc ? (std::max)(0., w.sigma + w.sx * px + w.sy * py) : w.sigma + w.sx * e + std::sqrt(bx * bx + py * py);
   const double ax = e - w.sx;
   if(e == xc)
   {
