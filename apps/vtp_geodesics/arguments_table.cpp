@@ -124,10 +124,10 @@ const vtp_support::Option_table<Arguments>& option_table()
       [](Arguments& a, const std::string& n, const std::string& v) { a.output = file_name(n, v); } },
     { "--labels", "FILE",
       "write, one line per vertex of the file, the index of its nearest\n"
-      "source (0-based, in the order the sources were given: the\n"
-      "--source vertices first, then each --source-point, then each curve\n"
-      "of the --source-curve files, then --source-border), or -1 where\n"
-      "the distance is inf",
+      "source (0-based: the --source vertices first, in their order, then\n"
+      "each --source-point, then each curve of the --source-curve files,\n"
+      "then --source-border, whatever the order of the options), or -1\n"
+      "where the distance is inf",
       [](Arguments& a, const std::string& n, const std::string& v) { a.labels = file_name(n, v); } },
     { "--max-distance", "R",
       "distance limit (>= 0): every vertex at distance <= R gets its\n"
