@@ -2,13 +2,18 @@
 # whose vtp_cli_test() runs one command and checks its exit code, its error line and that no file is written):
 # --source-curve FILE, --source-border, --signed.
 #   - source_curve_test.py: the distances against the Euclidean answer on a flat jittered 81 x 81 grid that it
-#     writes (closed polygon, signed both ways, an open segment signed, the border, the labels of mixed sources);
+#     writes (closed polygon, with vtp and pvtp, signed both ways, with a distance limit, an open segment signed, the
+#     border, the labels of mixed sources);
 #     one ctest per case, cli_source_curve_<case>;
 #   - bad input: one error line, exit code 2, no output file.
 
 set(curve_dir "${cli_dir}/curves")
 file(MAKE_DIRECTORY "${curve_dir}")
-foreach(case IN ITEMS polygon signed signed_cw open_signed border labels offset_curves)
+set(curve_cases polygon signed signed_cw limit open_signed border labels offset_curves)
+if(TARGET CGAL::VTP_geodesics_OpenMP_support)
+  list(APPEND curve_cases polygon_pvtp)
+endif()
+foreach(case IN LISTS curve_cases)
   add_test(NAME cli_source_curve_${case}
            COMMAND "${VTP_GEODESICS_PYTHON_WITH_MATPLOTLIB}" "${CMAKE_CURRENT_SOURCE_DIR}/source_curve_test.py"
                    ${case} --tool "$<TARGET_FILE:vtp_geodesics>" --work "${curve_dir}/${case}")

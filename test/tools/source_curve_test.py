@@ -12,6 +12,8 @@ the expected values below are computed from the curve's coordinates alone, never
 
 Cases:
   polygon         a closed counter-clockwise polygon: every vertex at its Euclidean distance to the polygon (1e-12)
+  polygon_pvtp    the same with --method pvtp --threads 2
+  limit           the same signed, with --max-distance 0.1: the signed distance within it, inf beyond
   signed          the same with --signed: negative inside, positive outside, |value| = the unsigned distance
   signed_cw       the same polygon walked clockwise: positive inside, negative outside
   open_signed     an open segment: unsigned = distance to the segment; --signed: negative on its left (+y) where the
@@ -146,20 +148,33 @@ def main():
     inside = inside_polygon(P, POLYGON)
     on_curve = polygon_distance <= 1e-9  # no sign there
 
-    if a.case in ("polygon", "signed", "signed_cw"):
+    if a.case in ("polygon", "polygon_pvtp", "signed", "signed_cw"):
         curve = closed if a.case != "signed_cw" else closed[::-1]
         write_curves(work("polygon.txt"), [curve])
-        extra = [] if a.case == "polygon" else ["--signed"]
+        extra = {"polygon": [], "polygon_pvtp": ["--method", "pvtp", "--threads", "2"]}.get(a.case, ["--signed"])
         run_tool(a.tool, [mesh, "--source-curve", work("polygon.txt"), "--output", work("d.txt")] + extra)
         d = read_values(work("d.txt"))
-        if a.case == "polygon":
-            check.close("distance to the closed polygon = Euclidean", d, polygon_distance)
+        if a.case.startswith("polygon"):
+            check.close("distance to the closed polygon = Euclidean (%s)" % (" ".join(extra) or "vtp"), d,
+                        polygon_distance)
         else:
             sign = np.where(inside, -1.0, 1.0) * (1.0 if a.case == "signed" else -1.0)
             check.close("signed distance: |value| = Euclidean distance to the polygon", np.abs(d), polygon_distance)
             check.close("signed distance = %s inside" % ("negative" if a.case == "signed" else "positive"),
                         d, sign * polygon_distance, mask=~on_curve)
             check.true("vertices inside and outside both present", inside.sum() > 100 and (~inside).sum() > 100)
+    elif a.case == "limit":
+        write_curves(work("polygon.txt"), [closed])
+        run_tool(a.tool, [mesh, "--source-curve", work("polygon.txt"), "--signed", "--max-distance", "0.1",
+                          "--output", work("d.txt")])
+        d = read_values(work("d.txt"))
+        sign = np.where(inside, -1.0, 1.0)
+        clear = np.abs(polygon_distance - 0.1) > 1e-9
+        within = polygon_distance < 0.1
+        check.close("--max-distance 0.1: the signed distance within it", d, sign * polygon_distance,
+                    mask=within & clear & ~on_curve)
+        check.true("--max-distance 0.1: inf beyond it", bool(np.all(np.isinf(d[~within & clear]))),
+                   "(%d vertices)" % int((~within & clear).sum()))
     elif a.case == "open_signed":
         A, B = (0.2, 0.5), (0.8, 0.5)
         write_curves(work("segment.txt"), [[A, B]])
