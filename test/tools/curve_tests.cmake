@@ -92,6 +92,9 @@ vtp_cli_test(source_border_plane 0 "${curve_dir}/border.txt" "${curve_dir}/borde
 vtp_cli_test(source_curve_vsp 2 "${curve_bad}.vsp.out" ""
              ERROR "^--source-curve and --source-border need --method vtp, pvtp, avtp or pavtp, not vsp"
              "${curve_plane}" --source-border --method vsp --output "${curve_bad}.vsp.out")
+# The picture of a signed run from a curve (the isolines interpolated: the library's curves need the kept field)
+vtp_cli_test(source_curve_picture 0 "${curve_dir}/signed.png" "" CHECK png
+             "${curve_plane}" --source-curve "${curve_bad}.square.txt" --signed --picture "${curve_dir}/signed.png")
 
 # A crash of the library (include/, reported): on plane_grid.off, the curve from (0.58, 0.58) to (0.42, 0.58) (from
 # right to left along y = 0.58; the other way works) ends the tool with a segmentation fault in add_source_curve()
