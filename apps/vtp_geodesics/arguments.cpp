@@ -11,6 +11,7 @@
 // arguments_table.cpp, the checks of combinations of options in arguments_checks.cpp.
 
 #include "arguments.h"
+#include "query_points.h"
 
 #include <vtp_support/methods.h>
 #include <vtp_support/mesh_formats.h>
@@ -45,8 +46,23 @@ Arguments parse_arguments(int argc, char** argv)
     has_mesh = true;
   });
   if(!a.help)
+  {
     check_arguments(a);
-  if(a.sources.empty() && a.source_points.empty() && a.farthest_points == 0)
+    // the curves of the --source-curve files (before the mesh is read: a bad file fails at once)
+    for(const std::string& file : a.source_curve_files)
+    {
+      const std::vector<Point_file_curve> curves = read_curve_file(file);
+      for(std::size_t k = 0; k < curves.size(); ++k)
+      {
+        Arguments::Curve c;
+        c.name = "curve " + std::to_string(k + 1) + " of --source-curve file '" + file + "' (lines "
+                 + std::to_string(curves[k].first_line) + "-" + std::to_string(curves[k].last_line) + ")";
+        c.points = curves[k].points;
+        a.source_curves.push_back(c);
+      }
+    }
+  }
+  if(a.sources.empty() && a.source_points.empty() && !a.has_curve_sources() && a.farthest_points == 0)
     a.sources.push_back(0);
   return a;
 }
@@ -55,13 +71,14 @@ void print_usage(std::ostream& os, const std::string& default_mesh)
 {
   os << "usage: vtp_geodesics [MESH] [options]\n"
         "\n"
-        "Computes exact geodesic distances from sources (vertices or points of the surface) to all\n"
-        "vertices of a triangle mesh by vertex-oriented triangle propagation (VTP): the distance of a\n"
-        "vertex is its distance to the nearest source. Optionally: the nearest source of each vertex,\n"
-        "a distance limit, distances at targets, geodesic paths, farthest-point sampling with\n"
-        "its geodesic Voronoi cells, geodesic polar coordinates (the log map), and the exact\n"
-        "distance and nearest source at any points of the surface (--query-points), from the\n"
-        "field that the run keeps.\n"
+        "Computes exact geodesic distances from sources (vertices, points of the surface, curves\n"
+        "drawn on it, its border) to all vertices of a triangle mesh by vertex-oriented triangle\n"
+        "propagation (VTP): the distance of a vertex is its distance to the nearest source (signed\n"
+        "with --signed: negative on the left of the curves). Optionally: the nearest source of\n"
+        "each vertex, a distance limit, distances at targets, geodesic paths, farthest-point\n"
+        "sampling with its geodesic Voronoi cells, geodesic polar coordinates (the log map), and\n"
+        "the exact distance and nearest source at any points of the surface (--query-points),\n"
+        "from the field that the run keeps.\n"
         "\n";
   const std::size_t column = 25;
   vtp_support::print_help_item(os, "MESH", "mesh file: " + vtp_support::readable_extensions_text() + "\n(default: "

@@ -32,10 +32,22 @@ using vtp_support::Tool_error;
 struct Arguments
 {
   std::string mesh;                       // empty: the default mesh
-  // Sources: the vertices of --source (file order indices), then the points of --source-point; vertex 0 if
-  // neither is given. Their order numbers the sources (the labels).
+  // Sources: the vertices of --source (file order indices), then the points of --source-point, then the curves
+  // of the --source-curve files (in the order of the files, each file's curves in its order), then the border
+  // (--source-border); vertex 0 if none is given. Their order numbers the sources (the labels).
   std::vector<std::size_t> sources;
   std::vector<std::array<double, 3> > source_points;
+  std::vector<std::string> source_curve_files;   // --source-curve FILE, in order
+  // The curves of those files, read by parse_arguments() (a curve: its points, and its name for the messages,
+  // "curve 2 of --source-curve file 'f' (lines 5-9)").
+  struct Curve
+  {
+    std::string name;
+    std::vector<std::array<double, 3> > points;
+  };
+  std::vector<Curve> source_curves;
+  bool source_border = false;                    // --source-border
+  bool signed_distance = false;                  // --signed
   std::string labels;                     // empty: none
   double max_distance = std::numeric_limits<double>::infinity();
   bool has_max_distance = false;
@@ -99,7 +111,13 @@ struct Arguments
   // --keep-field, or implied by --query-points
   bool wants_field() const { return keep_field || !query_points.empty(); }
 
-  std::size_t number_of_sources() const { return sources.size() + source_points.size(); }
+  bool has_curve_sources() const { return !source_curve_files.empty() || source_border; }
+  // (the curves counted once the files are read; before, one per file)
+  std::size_t number_of_sources() const
+  {
+    return sources.size() + source_points.size()
+           + (source_curves.empty() ? source_curve_files.size() : source_curves.size()) + (source_border ? 1 : 0);
+  }
   // several sources: the outputs tell the nearest one (the labels)
   bool several_sources() const { return number_of_sources() > 1 || farthest_points > 1; }
   bool has_targets() const { return !targets.empty() || !target_points.empty(); }

@@ -29,7 +29,8 @@ void check_sampling_arguments(const Arguments& a)
     return;
   }
   if(a.number_of_sources() > 0)
-    throw Tool_error("--farthest-points chooses the sources: it takes no --source nor --source-point");
+    throw Tool_error("--farthest-points chooses the sources: it takes no --source, --source-point, --source-curve "
+                     "nor --source-border");
   if(a.has_targets() || a.has_paths() || a.has_traces() || a.has_max_distance)
     throw Tool_error("--farthest-points takes no --target, --target-point, --path-to, --path-to-point, "
                      "--straightest-geodesic nor --max-distance");
@@ -52,6 +53,27 @@ void check_log_map_arguments(const Arguments& a, const vtp_support::Method_info&
   if(a.farthest_points > 0 || a.through_pinches)
     throw Tool_error("the log map (--log-map-output, --picture-colour angle) takes no --farthest-points nor "
                      "--through-pinches");
+  if(a.has_curve_sources())
+    throw Tool_error("the log map (--log-map-output, --picture-colour angle) takes no --source-curve nor "
+                     "--source-border (its sources are points)");
+}
+
+// Sources that are curves (--source-curve, --source-border) and --signed.
+void check_curve_arguments(const Arguments& a, const vtp_support::Method_info& m)
+{
+  if(a.signed_distance && !a.has_curve_sources())
+    throw Tool_error("--signed needs a source that is a curve (--source-curve or --source-border)");
+  if(!a.has_curve_sources())
+    return;
+  if(m.virtual_sources)
+    throw Tool_error("--source-curve and --source-border need --method vtp, pvtp, avtp or pavtp, not "
+                     + std::string(m.name) + " (virtual sources stand for points only)");
+  if(a.check_cgal)
+    throw Tool_error("--check-cgal takes no --source-curve nor --source-border (CGAL's reference has point "
+                     "sources only)");
+  if(a.through_pinches)
+    throw Tool_error("--source-curve and --source-border take no --through-pinches (curves are not joined through "
+                     "the vertices that the repair split)");
 }
 
 // The kept field: exact methods, and a field that the last run keeps (the runs through the split vertices of
@@ -81,6 +103,7 @@ void check_arguments(const Arguments& a)
   check_sampling_arguments(a);
   check_log_map_arguments(a, *m);
   check_field_arguments(a, *m);
+  check_curve_arguments(a, *m);
   if((a.has_lambda || a.has_lambda_g) && !m->approximate)
     throw Tool_error("--lambda and --lambda-g need --method avtp or pavtp");
   if(!a.target_output.empty() && !a.has_targets())

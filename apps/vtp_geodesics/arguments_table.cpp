@@ -75,7 +75,8 @@ const vtp_support::Option_table<Arguments>& option_table()
   static const vtp_support::Option_table<Arguments> table = {
     { "--source", "V[,V...]",
       "source vertices: indices in file order, separated by commas\n"
-      "(default: 0, unless --source-point is given); may be repeated\n"
+      "(default: 0, unless --source-point, --source-curve or\n"
+      "--source-border is given); may be repeated\n"
       "(the lists are joined). The distance of a vertex is to its\n"
       "nearest source",
       [](Arguments& a, const std::string& n, const std::string& v) { append(a.sources, parse_index_list(n, v)); } },
@@ -83,6 +84,32 @@ const vtp_support::Option_table<Arguments>& option_table()
       "adds as a source the point of the surface nearest to (X,Y,Z),\n"
       "located with CGAL's locate_with_AABB_tree; may be repeated",
       [](Arguments& a, const std::string& n, const std::string& v) { a.source_points.push_back(parse_point(n, v)); } },
+    { "--source-curve", "FILE",
+      "adds as sources the curves of FILE: one point \"X Y Z\" per line\n"
+      "(blanks between the numbers), each located on the surface as\n"
+      "--source-point locates its point (a point farther from the\n"
+      "surface than 1e-6 of the diagonal of the mesh's bounding box is\n"
+      "an error); a blank line starts another curve; a curve whose last\n"
+      "point repeats its first is closed. Consecutive points in one face\n"
+      "are joined straight, others by the shortest geodesic between them.\n"
+      "Each curve is one source (one label); may be repeated (the files'\n"
+      "curves in the order of the files). A line that is not three finite\n"
+      "numbers, a curve of one point, an empty file: an error",
+      [](Arguments& a, const std::string& n, const std::string& v) { a.source_curve_files.push_back(file_name(n, v)); } },
+    { "--source-border", nullptr,
+      "adds the border of the mesh (every border loop) as one source,\n"
+      "after the others (its label is the last); a mesh without border\n"
+      "is an error",
+      [](Arguments& a, const std::string&, const std::string&) { a.source_border = true; } },
+    { "--signed", nullptr,
+      "signed distances (needs --source-curve or --source-border):\n"
+      "negative on the left of the curves (left: face normal x direction\n"
+      "of travel; inside a counter-clockwise loop on the plane z = 0 seen\n"
+      "from above; the border runs with the surface on its left: all\n"
+      "distances are <= 0). Closed curves that do not bound consistently\n"
+      "oriented parts of the surface are an error; the sign for open\n"
+      "curves: see the manual (tools, --signed)",
+      [](Arguments& a, const std::string&, const std::string&) { a.signed_distance = true; } },
     { "--output", "FILE",
       "write the distances; the format follows the extension of FILE:\n"
       "  .ply: the mesh as read (file vertex order) with per-vertex\n"
@@ -97,9 +124,10 @@ const vtp_support::Option_table<Arguments>& option_table()
       [](Arguments& a, const std::string& n, const std::string& v) { a.output = file_name(n, v); } },
     { "--labels", "FILE",
       "write, one line per vertex of the file, the index of its nearest\n"
-      "source (0-based, in the order the sources were given: the\n"
-      "--source vertices first, then each --source-point), or -1 where\n"
-      "the distance is inf",
+      "source (0-based: the --source vertices first, in their order, then\n"
+      "each --source-point, then each curve of the --source-curve files,\n"
+      "then --source-border, whatever the order of the options), or -1\n"
+      "where the distance is inf",
       [](Arguments& a, const std::string& n, const std::string& v) { a.labels = file_name(n, v); } },
     { "--max-distance", "R",
       "distance limit (>= 0): every vertex at distance <= R gets its\n"

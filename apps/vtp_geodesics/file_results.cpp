@@ -34,9 +34,27 @@ File_results file_results(const Arguments& args, const vtp_support::Input_mesh& 
   r.log_map = log_map_on_file_vertices(args, input, result);  // (before the distances are moved)
   if(!args.picture.empty() && !input.direct)
     r.mesh_distances = result.distances;
-  if(request.run.want_labels)
-    r.labels = input.labels_on_file_vertices(result.labels, result.distances, -1);
-  r.distances = input.on_file_vertices(std::move(result.distances));
+  if(args.signed_distance && !input.direct)
+  {
+    // signed (--signed) on a repaired mesh: each file vertex gets the value of its copy of the least absolute value
+    // (the first such), and that copy's label
+    std::vector<double> magnitude(result.distances.size());
+    for(std::size_t i = 0; i < magnitude.size(); ++i)
+      magnitude[i] = std::abs(result.distances[i]);
+    if(request.run.want_labels)
+      r.labels = input.labels_on_file_vertices(result.labels, magnitude, -1);
+    r.distances.assign(input.file_vertices, std::numeric_limits<double>::infinity());
+    for(std::size_t i = 0; i < input.file_vertices; ++i)
+      for(vtp_support::Vertex_index c : input.mesh_vertices_of(i))
+        if(magnitude[std::size_t(c)] < std::abs(r.distances[i]))
+          r.distances[i] = result.distances[std::size_t(c)];
+  }
+  else
+  {
+    if(request.run.want_labels)
+      r.labels = input.labels_on_file_vertices(result.labels, result.distances, -1);
+    r.distances = input.on_file_vertices(std::move(result.distances));
+  }
   for(std::size_t i = args.sources.size(); i-- > 0;)
   {
     r.distances[args.sources[i]] = 0.;

@@ -30,8 +30,9 @@ namespace vtp_geodesics_app {
 
 struct File_results
 {
-  // Per vertex of the file: the distance (the smallest of its copies; 0 at a source vertex; +inf if
-  // unreachable), and the label of its nearest source (the request wanted labels: -1 where none).
+  // Per vertex of the file: the distance (the smallest of its copies, with --signed the one of least absolute
+  // value; 0 at a source vertex; +inf if unreachable), and the label of its nearest source (the request wanted
+  // labels: -1 where none).
   std::vector<double> distances;
   std::vector<int> labels;
   // Per vertex of the mesh of the computation, when it is not the file's (a repaired mesh) and a picture is

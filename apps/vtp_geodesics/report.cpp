@@ -48,6 +48,13 @@ Report make_report(const std::string& mesh_file, const Arguments& args, const vt
   if(!args.source_points.empty())
     report.sources_text += (args.sources.empty() ? "" : " and ") + std::to_string(args.source_points.size())
                            + (args.source_points.size() == 1 ? " surface point" : " surface points");
+  if(!args.source_curves.empty())
+    report.sources_text += (report.sources_text.empty() ? "" : " and ") + std::to_string(args.source_curves.size())
+                           + (args.source_curves.size() == 1 ? " curve" : " curves");
+  if(args.source_border)
+    report.sources_text += (report.sources_text.empty() ? "" : " and ") + std::string("the border");
+  if(args.signed_distance)
+    report.sources_text += " (signed)";
   report.log_map_strict = args.log_map_strict;
   report.has_max_distance = args.has_max_distance;
   report.max_distance_limit = args.max_distance;

@@ -34,7 +34,7 @@ struct Report
   std::string method;                      // the method asked for (--method)
   std::string repairs;                     // what the repair did; empty if nothing
   std::size_t vertices = 0, faces = 0;     // of the file
-  std::size_t sources = 0;                 // number of sources (vertices and points of the command line)
+  std::size_t sources = 0;                 // number of sources (vertices, points, curves, the border)
   bool single_vertex_source = false;       // one source, a vertex:
   std::size_t source = 0;                  // that vertex (file order)
   std::string sources_text;                // for people: "0, 17, 42 and 1 surface point"

@@ -15,6 +15,7 @@
 #include <vtp_support/number_format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -72,7 +73,32 @@ void add_paths(const Arguments& args, const vtp_support::Input_mesh& input,
   }
 }
 
+// The length of the diagonal of the bounding box of the mesh's vertices (0 without vertex).
+double bounding_box_diagonal(const vtp_support::Mesh& mesh)
+{
+  bool first = true;
+  double lo[3] = { 0., 0., 0. }, hi[3] = { 0., 0., 0. };
+  for(vtp_support::Vertex_index v : mesh.vertices())
+  {
+    const vtp_support::Point_3& p = mesh.point(v);
+    const double x[3] = { p.x(), p.y(), p.z() };
+    for(int k = 0; k < 3; ++k)
+    {
+      lo[k] = first ? x[k] : (std::min)(lo[k], x[k]);
+      hi[k] = first ? x[k] : (std::max)(hi[k], x[k]);
+    }
+    first = false;
+  }
+  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1])
+                   + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
 } // namespace
+
+// A point of a --source-curve farther from the surface than this fraction of the diagonal of the mesh's bounding
+// box is an error (the other points of the command line are replaced by their nearest surface points: a curve
+// far off the surface is more likely a curve of another mesh, or in other units).
+const double curve_point_tolerance = 1e-6;
 
 Request make_request(const Arguments& args, const vtp_support::Method_info& method,
                      const vtp_support::Input_mesh& input)
@@ -88,7 +114,7 @@ Request make_request(const Arguments& args, const vtp_support::Method_info& meth
     args.query_points.empty() ? std::vector<std::array<double, 3> >() : read_query_points(args.query_points);
   std::unique_ptr<Point_locator> locator;
   if(!args.source_points.empty() || !args.target_points.empty() || !args.path_to_points.empty()
-     || !query_points.empty())
+     || !query_points.empty() || !args.source_curves.empty())
     locator.reset(new Point_locator(input.mesh));
   auto locate_all = [&locator](const std::vector<std::array<double, 3> >& points, const char* option) {
     std::vector<Located_point> located;
@@ -100,6 +126,31 @@ Request make_request(const Arguments& args, const vtp_support::Method_info& meth
   r.source_points = locate_all(args.source_points, "--source-point");
   const std::vector<Located_point> target_points = locate_all(args.target_points, "--target-point");
   const std::vector<Located_point> path_points = locate_all(args.path_to_points, "--path-to-point");
+  if(!args.source_curves.empty())
+  {
+    const double tolerance = curve_point_tolerance * bounding_box_diagonal(input.mesh);
+    for(const Arguments::Curve& c : args.source_curves)
+    {
+      Run_request::Curve curve;
+      curve.name = c.name;
+      r.source_curves.push_back(std::vector<Located_point>());
+      for(std::size_t i = 0; i < c.points.size(); ++i)
+      {
+        const Located_point q = locator->locate(c.points[i], c.name);
+        const double dx = q.point[0] - c.points[i][0], dy = q.point[1] - c.points[i][1],
+                     dz = q.point[2] - c.points[i][2];
+        const double off = std::sqrt(dx * dx + dy * dy + dz * dz);
+        if(!(off <= tolerance))
+          throw Tool_error(c.name + ": point " + std::to_string(i + 1) + " (" + point_text(c.points[i])
+                           + ") is off the surface (at " + vtp_support::double_to_string(off)
+                           + " from it; at most 1e-6 of the mesh's bounding box diagonal, "
+                           + vtp_support::double_to_string(tolerance) + ")");
+        curve.points.push_back(q.location);
+        r.source_curves.back().push_back(q);
+      }
+      r.run.source_curves.push_back(curve);
+    }
+  }
   for(std::size_t i = 0; i < query_points.size(); ++i)
     r.run.query_locations.push_back(
       locator->locate(query_points[i], "--query-points (line " + std::to_string(i + 1) + ")").location);
@@ -123,9 +174,16 @@ Request make_request(const Arguments& args, const vtp_support::Method_info& meth
     run.source_locations.push_back(r.source_points[j].location);
     run.source_location_labels.push_back(args.sources.size() + j);
   }
+  for(std::size_t k = 0; k < r.run.source_curves.size(); ++k)
+    run.source_curve_labels.push_back(args.sources.size() + r.source_points.size() + k);
+  run.source_border = args.source_border;
+  run.source_border_label = args.sources.size() + r.source_points.size() + r.run.source_curves.size();
+  run.signed_distance = args.signed_distance;
   run.want_curves = !args.curves_output.empty();
   // the picture draws the curves of the library but after runs through the split vertices (it interpolates then)
-  const bool picture_curves = !args.picture.empty() && !args.through_pinches;
+  // and from sources that are curves (the library's curves need the kept field, which it does not keep for them
+  // yet; --curves-output asks for it all the same)
+  const bool picture_curves = !args.picture.empty() && !args.through_pinches && !args.has_curve_sources();
   run.picture_isolines = picture_curves && !args.colour_labels && args.isolines > 0;
   run.picture_borders = picture_curves && args.colour_labels;
   run.curve_levels = args.levels;

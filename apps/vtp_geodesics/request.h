@@ -31,6 +31,8 @@ struct Request
 {
   Run_request run;
   std::vector<Located_point> source_points;  // --source-point, located on the mesh
+  // the points of each curve of --source-curve, located on the mesh (the picture draws them)
+  std::vector<std::vector<Located_point> > source_curves;
   // The paths of --path-output, in its order (the --path-to vertices, then the --path-to-point points): a path
   // to a source vertex is its single point, given here; the others are traced by the run, path k being
   // run.paths[traced[k]] (traced[k] is -1 for a path given here).
@@ -39,7 +41,8 @@ struct Request
 };
 
 // Checks the vertices of the arguments against the file, locates the points of the arguments on the mesh and
-// makes the request. Throws Tool_error (a vertex out of range, a point that cannot be located, a path from or a
+// makes the request. Throws Tool_error (a vertex out of range, a point that cannot be located, a point of a
+// --source-curve farther from the surface than 1e-6 of the diagonal of the mesh's bounding box, a path from or a
 // first sample at a vertex in no face).
 Request make_request(const Arguments& args, const vtp_support::Method_info& method,
                      const vtp_support::Input_mesh& input);

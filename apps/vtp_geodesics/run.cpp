@@ -228,6 +228,30 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
     solver.add_source(request.source_locations[i]);
     label_of_source.push_back(request.source_location_labels[i]);
   }
+  for(std::size_t i = 0; i < request.source_curves.size(); ++i)
+  {
+    try
+    {
+      solver.add_source_curve(request.source_curves[i].points);
+    }
+    catch(const VTP::Invalid_input_error& e)
+    {
+      throw Tool_error(request.source_curves[i].name + ": " + e.what());
+    }
+    label_of_source.push_back(request.source_curve_labels[i]);
+  }
+  if(request.source_border)
+  {
+    try
+    {
+      solver.add_source_border();
+    }
+    catch(const VTP::Invalid_input_error& e)
+    {
+      throw Tool_error(std::string("--source-border: ") + e.what());
+    }
+    label_of_source.push_back(request.source_border_label);
+  }
 
   // The targets, all as face locations: the target vertices (but isolated ones, which no propagation reaches),
   // the target points, then the end points of the paths (so that the run records their trace-back).
@@ -282,7 +306,8 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
                         .targets(targets)
                         .stop_at_targets(request.stop_at_targets && !join)
                         .record_paths(record)
-                        .keep_field(keep);
+                        .keep_field(keep)
+                        .signed_distance(request.signed_distance);
       if(request.log_map)
         compute_log_map<Tag>(solver, mesh, request, np, labels, r);
       else if(request.want_labels)

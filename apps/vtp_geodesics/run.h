@@ -58,6 +58,18 @@ struct Run_request
   std::vector<std::size_t> source_vertex_labels;
   std::vector<Face_location> source_locations;
   std::vector<std::size_t> source_location_labels;
+  // then the curves (each one source: its points, joined by the library), and the border of the mesh
+  struct Curve
+  {
+    std::string name;                     // for the errors: "curve 1 of --source-curve file 'f' (lines 1-5)"
+    std::vector<Face_location> points;
+  };
+  std::vector<Curve> source_curves;
+  std::vector<std::size_t> source_curve_labels;
+  bool source_border = false;
+  std::size_t source_border_label = 0;
+  bool signed_distance = false;           // --signed: negative on the left of the curves
+  bool has_curve_sources() const { return !source_curves.empty() || source_border; }
   bool want_labels = false;               // fill Run_result::labels
   double max_distance = std::numeric_limits<double>::infinity();
   // Targets: mesh vertices and points of the surface whose distance must be final when the run stops (with

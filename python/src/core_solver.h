@@ -19,6 +19,7 @@
 //   repair.cpp     the repair of V and F that are not a valid mesh (the tools' repair), and the caller's indices:
 //                  sources, targets and results mapped between the vertices and faces of V and F and the mesh's
 //   queries.cpp    distances() (keep_field: the field of the run kept), path(), distance(), locate()
+//   source_curves.cpp  curve_distances(): distances from vertices, points, curves and the border (signed or not)
 //   field.cpp      field_query(): the distance and nearest source at any vertex or point of the surface, from
 //                  the field that the last distances(..., keep_field=True) kept
 //   matrices.cpp   matrix_dense(), matrix_sparse(): rows on all cores, Ctrl-C and progress every 0.2 s
@@ -162,6 +163,13 @@ public:
   double mean_edge_length() const { return m_solver->mean_edge_length(); }
   double preprocessing_seconds() const { return m_solver->preprocessing_seconds(); }
   py::dict statistics() const;
+
+  // source_curves.cpp
+  py::tuple curve_distances(const Index_array& sources, const Index_array& point_faces, const Double_array& point_bary,
+                            const Index_array& curve_faces, const Double_array& curve_bary, const Double_array& curve_xyz,
+                            const Index_array& curve_offsets, bool border, bool signed_distance, double max_distance,
+                            const Index_array& targets, const std::string& method_name, double lam, int threads,
+                            bool want_labels);
 
   // queries.cpp
   py::tuple distances(const Index_array& sources, const Index_array& point_faces, const Double_array& point_bary,
@@ -329,6 +337,7 @@ void define_log_map(py::class_<Core_solver>& c);
 void define_curves(py::class_<Core_solver>& c);
 void define_field(py::class_<Core_solver>& c);
 void define_patches(py::class_<Core_solver>& c);
+void define_source_curves(py::class_<Core_solver>& c);
 
 } // namespace vtp_python
 

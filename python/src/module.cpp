@@ -49,6 +49,7 @@ PYBIND11_MODULE(_core, m)
   vp::define_curves(solver);
   vp::define_field(solver);
   vp::define_patches(solver);
+  vp::define_source_curves(solver);
   vp::define_io(m);
   m.def("method_table", &method_table);
   m.attr("recommended_lambda") = vtp_support::default_lambda;

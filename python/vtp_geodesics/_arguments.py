@@ -109,6 +109,15 @@ def xyz_rows(xyz):
     return xyz
 
 
+def xyz_rows_named(xyz, name):
+    """Positions (k, 3) named ``name`` in the messages -> float64 (k, 3)."""
+    a = as_float_array(xyz, name)
+    if a.ndim != 2 or a.shape[1] != 3:
+        raise ValueError("%s must be xyz rows of shape (k, 3) or (faces, barycentric) arrays, got shape %s"
+                         % (name, a.shape))
+    return a
+
+
 def surface_points(points, locate, name="points"):
     """``points`` -> (faces int64 (k,), barycentric float64 (k, 3)) in the order given: ``(faces, barycentric)``
     arrays as they are, xyz positions (k, 3) through ``locate`` (their nearest surface points); None: none."""

@@ -4,8 +4,11 @@ geodesic path, the distance between two points, the nearest surface points, stra
 import collections as _collections
 import math as _math
 
+import numpy as _np
+
 from ._arguments import (SOURCE_DEFAULT, check_float, check_method, check_threads, one_point, query_sources,
-                         recommended_lambda, trace_directions, trace_starts, vertex_list, xyz_rows)
+                         recommended_lambda, surface_points, trace_directions, trace_starts, vertex_list, xyz_rows,
+                         xyz_rows_named)
 
 
 #: A polyline on the surface: ``path(..., return_locations=True)`` (the C++ ``Surface_polyline``).
@@ -42,19 +45,38 @@ reached_border : bool (a batch: (n,))
 class Queries:
     """The queries of ``Solver`` (which holds the compiled solver ``_core``)."""
 
-    def distances(self, sources=SOURCE_DEFAULT, *, points=None, max_distance=_math.inf, targets=None, method="vtp",
-                  lam=recommended_lambda, return_labels=False, threads=0, keep_field=False):
+    def distances(self, sources=SOURCE_DEFAULT, *, points=None, curves=None, source_border=False, signed=False,
+                  max_distance=_math.inf, targets=None, method="vtp", lam=recommended_lambda, return_labels=False,
+                  threads=0, keep_field=False):
         """Geodesic distances from the nearest source to every vertex.
 
         Parameters
         ----------
         sources : int or array-like of int, default 0
-            Source vertices (indices into V). The default is vertex 0 when no ``points`` are given, no vertex
-            when some are.
+            Source vertices (indices into V). The default is vertex 0 when no ``points``, ``curves`` or
+            ``source_border`` are given, no vertex when some are.
         points : (faces, barycentric) or array-like (k, 3), optional
             Sources at points of the surface: a pair of arrays, face indices (k,) and barycentric
             coordinates (k, 3) with respect to the corners F[f, 0], F[f, 1], F[f, 2] (non-negative, sum 1);
             or xyz positions (k, 3), each replaced by the nearest point of the surface (see ``locate``).
+        curves : list of curves, optional
+            Sources that are curves drawn on the surface, each one source (one label): a curve is xyz positions
+            (k, 3), located as ``points`` are (a position farther from the surface than 1e-6 of the diagonal of
+            the mesh's bounding box raises ValueError), or ``(faces, barycentric)`` arrays; at least two distinct
+            points. Consecutive points in one face are joined straight inside it, points that share no face by the
+            shortest geodesic between them; a curve whose last point is its first is closed. The tool's
+            ``--source-curve``.
+        source_border : bool, default False
+            The border of the mesh (every border loop) as one more source, after the curves (ValueError if the
+            mesh has no border). The tool's ``--source-border``.
+        signed : bool, default False
+            Signed distances (needs ``curves`` or ``source_border``): negative on the left of the curves (left =
+            face normal x direction of travel: inside a counter-clockwise loop on the plane z = 0 seen from above;
+            the border runs with the surface on its left, so every value is <= 0). ValueError when every curve
+            is closed and some part of the surface lies on the left of a piece and on the right of another
+            (curves not oriented consistently). For open curves: negative where the nearest point is inside a
+            piece and on its left, when the curves do not separate the surface (see the manual). The tool's
+            ``--signed``.
         max_distance : float, default inf
             Distance limit: vertices farther get ``inf``; the work is that of the region within it.
         targets : array-like of int, optional
@@ -81,23 +103,71 @@ class Queries:
         Returns
         -------
         distances : ndarray float64 (n,)
-            ``inf`` for vertices no source reaches or beyond ``max_distance``.
+            The distance of each vertex to its nearest source (signed with ``signed=True``: negative on the left
+            of the curves, and the tool's ``--signed`` values bit for bit); ``inf`` for vertices no source reaches
+            or beyond ``max_distance``.
         labels : ndarray int64 (n,), only with ``return_labels=True``
-            Index of the nearest source in the order given: the ``sources`` vertices first, then the
-            ``points``; -1 where the distance is ``inf``. Where two sources are equally near, either.
+            Index of the nearest source in the order: the ``sources`` vertices first, then the ``points``, then
+            the ``curves`` (one index each), then the border (``source_border=True``: the last index), as the
+            tool's ``--labels``; -1 where the distance is ``inf``. Where two sources are equally near, either.
 
         Raises
         ------
         ValueError
             No source, an index out of range, invalid barycentric coordinates, a negative limit, an
-            unknown method; ``keep_field=True`` with an approximate method or with ``targets``. TypeError for
-            non-integer indices.
+            unknown method; ``keep_field=True`` with an approximate method or with ``targets``; a curve of fewer
+            than two distinct points or with a point off the surface, ``source_border=True`` on a mesh without
+            border, ``signed=True`` without a curve or with closed curves not oriented consistently,
+            ``keep_field=True`` with curves (not available yet). TypeError for non-integer indices.
         """
+        if curves is not None or source_border or signed:
+            return self._curve_distances(sources, points, curves, source_border, signed, max_distance, targets,
+                                         method, lam, return_labels, threads, keep_field)
         src, pf, pb = query_sources(sources, points, self._core.locate)
         tgt = vertex_list(targets, "targets")
         d, labels, _ = self._core.distances(src, pf, pb, check_float(max_distance, "max_distance"), tgt,
                                             check_method(method), check_float(lam, "lam"),
                                             check_threads(threads), bool(return_labels), bool(keep_field))
+        return (d, labels) if return_labels else d
+
+    def _curve_distances(self, sources, points, curves, source_border, signed, max_distance, targets, method, lam,
+                         return_labels, threads, keep_field):
+        """``distances()`` with curves, the border or ``signed``."""
+        if keep_field:
+            raise ValueError("keep_field=True is not available with curves or source_border yet (the library keeps "
+                             "no field for sources that are curves)")
+        curves = [] if curves is None else curves
+        if isinstance(curves, _np.ndarray) or (isinstance(curves, tuple) and len(curves) == 2
+                                                and _np.ndim(curves[0]) == 1):
+            raise TypeError("curves must be a list of curves (each an (k, 3) array or a (faces, barycentric) pair), "
+                            "got one curve: wrap it in a list")
+        if sources is SOURCE_DEFAULT and (points is not None or len(curves) > 0 or source_border):
+            src = _np.zeros(0, dtype=_np.int64)
+        else:
+            src = vertex_list(sources, "sources")
+        pf, pb = surface_points(points, self._core.locate)
+        faces, bary, xyz, offsets = [], [], [], [0]
+        for k, c in enumerate(curves):
+            name = "curves[%d]" % k
+            if isinstance(c, tuple) and len(c) == 2:
+                f, b = surface_points(c, self._core.locate, name)
+                x = _np.full((f.shape[0], 3), _np.nan)
+            else:
+                x = xyz_rows_named(c, name)
+                f, b = self._core.locate(x)
+            faces.append(f)
+            bary.append(b)
+            xyz.append(x)
+            offsets.append(offsets[-1] + f.shape[0])
+        cat = lambda arrays, empty: _np.ascontiguousarray(_np.concatenate(arrays)) if arrays else empty
+        cf = cat(faces, _np.zeros(0, dtype=_np.int64))
+        cb = cat(bary, _np.zeros((0, 3)))
+        cx = cat(xyz, _np.zeros((0, 3)))
+        tgt = vertex_list(targets, "targets")
+        d, labels = self._core.curve_distances(src, pf, pb, cf, cb, cx, _np.asarray(offsets, dtype=_np.int64),
+                                               bool(source_border), bool(signed),
+                                               check_float(max_distance, "max_distance"), tgt, check_method(method),
+                                               check_float(lam, "lam"), check_threads(threads), bool(return_labels))
         return (d, labels) if return_labels else d
 
     def path(self, target, *, sources=SOURCE_DEFAULT, points=None, max_distance=_math.inf, return_locations=False):

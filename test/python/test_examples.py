@@ -1,4 +1,5 @@
-# The Python examples of the log map, the polar patches, the straightest geodesics and the curves (examples/python/):
+# The Python examples of the log map, the polar patches, the straightest geodesics, the curves and the distance from
+# a curve (examples/python/):
 # each runs on the bundled elephant, checks its own results and exits non-zero if a check fails (kept_field.py is run
 # by test_field.py).
 
@@ -18,6 +19,7 @@ EXAMPLES = os.path.join(HERE, "..", "..", "examples", "python")
     ("straightest_geodesic.py", "walks from the centroid of face 0"),
     ("isolines_and_cell_borders.py", "cell areas sum to"),
     ("polar_patch.py", "walked back to"),
+    ("distance_from_curve.py", "largest excess over the distance to one of its points"),
 ])
 def test_example_runs(name, expected, tmp_path):
     if name == "polar_patch.py" and importlib.util.find_spec("matplotlib") is None:
