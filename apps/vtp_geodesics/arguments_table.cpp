@@ -248,7 +248,9 @@ const vtp_support::Option_table<Arguments>& option_table()
       "--isolines, or --levels) and, with several sources or\n"
       "--farthest-points, the borders of their cells, as OBJ polylines:\n"
       "'v' and 'l' lines, one group per level ('g level_<value>') and per\n"
-      "pair of neighbour cells ('g border_<i>_<j>'); see the manual (curves)",
+      "pair of neighbour cells ('g border_<i>_<j>'); see the manual (curves);\n"
+      "from a --source-curve, the isolines are its offset curves (no cell\n"
+      "borders from sources that are curves yet)",
       [](Arguments& a, const std::string& n, const std::string& v) { a.curves_output = file_name(n, v); } },
     { "--levels", "A,B,...",
       "the levels of --curves-output (each >= 0), instead of those of\n"

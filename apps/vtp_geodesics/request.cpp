@@ -180,12 +180,11 @@ Request make_request(const Arguments& args, const vtp_support::Method_info& meth
   run.source_border_label = args.sources.size() + r.source_points.size() + r.run.source_curves.size();
   run.signed_distance = args.signed_distance;
   run.want_curves = !args.curves_output.empty();
-  // the picture draws the curves of the library but after runs through the split vertices (it interpolates then)
-  // and from sources that are curves (the library's curves need the kept field, which it does not keep for them
-  // yet; --curves-output asks for it all the same)
-  const bool picture_curves = !args.picture.empty() && !args.through_pinches && !args.has_curve_sources();
+  // the picture draws the curves of the library but after runs through the split vertices (it interpolates then),
+  // and the borders of cells of sources that are curves (the library draws their isolines only)
+  const bool picture_curves = !args.picture.empty() && !args.through_pinches;
   run.picture_isolines = picture_curves && !args.colour_labels && args.isolines > 0;
-  run.picture_borders = picture_curves && args.colour_labels;
+  run.picture_borders = picture_curves && args.colour_labels && !args.has_curve_sources();
   run.curve_levels = args.levels;
   run.keep_field = args.wants_field();
   run.curve_isolines = args.isolines;

@@ -75,8 +75,9 @@ Curve_request curve_request(const Solver& solver, const Run_request& request, bo
     c.output_levels = curve_levels(solver, request.curve_levels, request.curve_isolines);
   if(request.picture_isolines)
     c.picture_levels = picture_levels(solver, request.curve_isolines);
-  c.output_borders = request.want_curves && several_sources;
-  c.picture_borders = request.picture_borders && several_sources;
+  // (no cell borders from sources that are curves: the library draws their isolines, their offset curves, only)
+  c.output_borders = request.want_curves && several_sources && !request.has_curve_sources();
+  c.picture_borders = request.picture_borders && several_sources && !request.has_curve_sources();
   return c;
 }
 

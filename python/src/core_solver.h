@@ -169,7 +169,7 @@ public:
                             const Index_array& curve_faces, const Double_array& curve_bary, const Double_array& curve_xyz,
                             const Index_array& curve_offsets, bool border, bool signed_distance, double max_distance,
                             const Index_array& targets, const std::string& method_name, double lam, int threads,
-                            bool want_labels);
+                            bool want_labels, bool keep_field);
 
   // queries.cpp
   py::tuple distances(const Index_array& sources, const Index_array& point_faces, const Double_array& point_bary,

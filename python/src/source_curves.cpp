@@ -61,7 +61,7 @@ py::tuple Core_solver::curve_distances(const Index_array& sources, const Index_a
                                        const Double_array& curve_bary, const Double_array& curve_xyz,
                                        const Index_array& curve_offsets, bool border, bool signed_distance,
                                        double max_distance, const Index_array& targets, const std::string& method_name,
-                                       double lam, int threads, bool want_labels)
+                                       double lam, int threads, bool want_labels, bool keep_field)
 {
   const vtp_support::Method_info& method = method_named(method_name, lam);
   check_limit(max_distance);
@@ -85,6 +85,15 @@ py::tuple Core_solver::curve_distances(const Index_array& sources, const Index_a
   if(m_through_pinches && !m_repairs.empty())
     value_error("curves and source_border: the curves are not joined through the vertices that the repair split "
                 "(the solver was made with through_pinches=True)");
+  if(keep_field)
+  {
+    if(method.approximate || method.virtual_sources)
+      value_error(std::string("keep_field=True needs an exact method (\"vtp\" or \"pvtp\"), got method=\"")
+                  + method.name + "\": the field of the approximate methods is not the distance inside the faces");
+    if(targets.size() > 0)
+      value_error("keep_field=True cannot be used with targets (the run stops once the targets are known: the "
+                  "field would be partial)");
+  }
   // the points given as xyz: on the surface, within the tolerance
   const double* xyz = curve_xyz.data();
   const std::size_t located = (std::min)(curve_points.size(), static_cast<std::size_t>(curve_xyz.size()) / 3);
@@ -181,13 +190,21 @@ py::tuple Core_solver::curve_distances(const Index_array& sources, const Index_a
                           .targets(live_targets)
                           .stop_at_targets(!live_targets.empty())
                           .statistics(m_statistics)
-                          .signed_distance(signed_distance);
+                          .signed_distance(signed_distance)
+                          .keep_field(keep_field);
         if(want_labels)
           m_solver->template compute<Tag>(vdm, np.nearest_source_map(boost::make_iterator_property_map(
                                                  labels.begin(), index)));
         else
           m_solver->template compute<Tag>(vdm, np);
       });
+    if(keep_field)
+    {
+      // (the field is the distance's magnitude: field queries and curves are unsigned)
+      m_field_labels.assign(label_of_source.begin(), label_of_source.end());
+      m_field_sources = source_vertices.size() + source_points.size() + curves.size() + (border ? 1 : 0);
+      m_field_kept = true;
+    }
     if(want_labels)
       for(std::size_t& l : labels)
         if(l != VTP::no_source)

@@ -98,7 +98,10 @@ class Queries:
             and "pvtp" only, not with ``targets``), until its next computation: ``field_distance()``,
             ``field_nearest_source()``, ``field_isolines()``, ``field_cell_borders()`` and
             ``field_cell_areas()`` then answer from it, exactly, at any point and any level, without a new
-            propagation. Its memory: ``field_bytes`` (about that of the windows propagated).
+            propagation. Its memory: ``field_bytes`` (about that of the windows propagated). From curves (and
+            the border) too: ``field_isolines()`` then gives their geodesic offset curves; the field is the
+            unsigned distance (also after ``signed=True``), and ``field_cell_borders()`` / ``field_cell_areas()``
+            raise ValueError (not available for sources that are curves yet).
 
         Returns
         -------
@@ -117,8 +120,8 @@ class Queries:
             No source, an index out of range, invalid barycentric coordinates, a negative limit, an
             unknown method; ``keep_field=True`` with an approximate method or with ``targets``; a curve of fewer
             than two distinct points or with a point off the surface, ``source_border=True`` on a mesh without
-            border, ``signed=True`` without a curve or with closed curves not oriented consistently,
-            ``keep_field=True`` with curves (not available yet). TypeError for non-integer indices.
+            border, ``signed=True`` without a curve or with closed curves not oriented consistently. TypeError
+            for non-integer indices.
         """
         if curves is not None or source_border or signed:
             return self._curve_distances(sources, points, curves, source_border, signed, max_distance, targets,
@@ -133,9 +136,6 @@ class Queries:
     def _curve_distances(self, sources, points, curves, source_border, signed, max_distance, targets, method, lam,
                          return_labels, threads, keep_field):
         """``distances()`` with curves, the border or ``signed``."""
-        if keep_field:
-            raise ValueError("keep_field=True is not available with curves or source_border yet (the library keeps "
-                             "no field for sources that are curves)")
         curves = [] if curves is None else curves
         if isinstance(curves, _np.ndarray) or (isinstance(curves, tuple) and len(curves) == 2
                                                 and _np.ndim(curves[0]) == 1):
@@ -167,7 +167,8 @@ class Queries:
         d, labels = self._core.curve_distances(src, pf, pb, cf, cb, cx, _np.asarray(offsets, dtype=_np.int64),
                                                bool(source_border), bool(signed),
                                                check_float(max_distance, "max_distance"), tgt, check_method(method),
-                                               check_float(lam, "lam"), check_threads(threads), bool(return_labels))
+                                               check_float(lam, "lam"), check_threads(threads), bool(return_labels),
+                                               bool(keep_field))
         return (d, labels) if return_labels else d
 
     def path(self, target, *, sources=SOURCE_DEFAULT, points=None, max_distance=_math.inf, return_locations=False):

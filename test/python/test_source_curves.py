@@ -139,7 +139,7 @@ def test_bad_input(grid):
     with pytest.raises(ValueError, match="not oriented consistently"):
         solver.distances(curves=[xyz(outer), xyz(inner)], signed=True)
     with pytest.raises(ValueError, match="keep_field"):
-        solver.distances(curves=[xyz(CLOSED)], keep_field=True)
+        solver.distances(curves=[xyz(CLOSED)], keep_field=True, method="avtp")
     with pytest.raises(TypeError, match="list of curves"):
         solver.distances(curves=xyz(CLOSED))
     # a closed surface has no border
@@ -211,3 +211,29 @@ def test_python_equals_tool(grid, tool, tmp_path, case):
     got = read_tool_text(out)
     assert got.shape == expected.shape
     assert np.array_equal(got, expected), "largest difference %g" % np.max(np.abs(got - expected))
+
+
+def test_kept_field_offset_curves(grid):
+    """keep_field=True with a curve: the field at random points of the surface is the Euclidean distance to the
+    polygon, and its isolines (the offset curves) lie at their level from it, to 1e-12; no cell borders."""
+    V, F, solver = grid
+    d = solver.distances(curves=[xyz(CLOSED)], keep_field=True)
+    assert np.max(np.abs(d - polyline_distance(V[:, :2], CLOSED))) <= 1e-12
+    rng = np.random.default_rng(3)
+    faces = rng.integers(0, len(F), 500)
+    b = rng.dirichlet([1.0, 1.0, 1.0], 500)
+    P = np.einsum("ij,ijk->ik", b, V[F[faces]])
+    field = solver.field_distance((faces, b))
+    assert np.max(np.abs(field - polyline_distance(P[:, :2], CLOSED))) <= 1e-12
+    levels = [0.02, 0.05, 0.125]
+    curves = solver.field_isolines(levels)
+    assert len(curves) >= 3
+    for c in curves:
+        assert c.level in levels
+        assert np.max(np.abs(polyline_distance(c.points[:, :2], CLOSED) - c.level)) <= 1e-12
+    # inside and outside: both sides of the polygon at 0.02 and 0.05
+    for level in levels[:2]:
+        sides = {bool(inside_polygon(c.points[:1, :2], POLYGON)[0]) for c in curves if c.level == level}
+        assert sides == {True, False}
+    with pytest.raises(ValueError, match="cell borders"):
+        solver.field_cell_borders()

@@ -19,10 +19,6 @@ foreach(case IN LISTS curve_cases)
                    ${case} --tool "$<TARGET_FILE:vtp_geodesics>" --work "${curve_dir}/${case}")
   set_tests_properties(cli_source_curve_${case} PROPERTIES TIMEOUT 120)
 endforeach()
-# The offset curves (--levels with --curves-output) need the kept field of a run from curves, which the library
-# refuses for now ("sources that are curves ... give no kept field"): the tool asks for it as it does for points,
-# and this test is to be enabled once the library keeps the field of curves.
-set_tests_properties(cli_source_curve_offset_curves PROPERTIES DISABLED TRUE)
 
 # Bad input. data/plane_grid.off is the unit square of the plane z = 0 (11 x 11 vertices); every file is written
 # here, at configure time.
@@ -96,11 +92,8 @@ vtp_cli_test(source_curve_vsp 2 "${curve_bad}.vsp.out" ""
 vtp_cli_test(source_curve_picture 0 "${curve_dir}/signed.png" "" CHECK png
              "${curve_plane}" --source-curve "${curve_bad}.square.txt" --signed --picture "${curve_dir}/signed.png")
 
-# A crash of the library (include/, reported): on plane_grid.off, the curve from (0.58, 0.58) to (0.42, 0.58) (from
-# right to left along y = 0.58; the other way works) ends the tool with a segmentation fault in add_source_curve()
-# (release build). This test checks that the run succeeds with one distance per vertex; disabled until the library
-# is fixed.
+# Two points of edges joined by a geodesic from right to left (the library's join once kept the end point traced
+# as a point of a face: two consecutive points with no common face, a crash): one distance per vertex.
 file(WRITE "${curve_dir}/leftwards.txt" "0.58 0.58 0\n0.42 0.58 0\n")
 vtp_cli_test(source_curve_leftwards 0 "${curve_dir}/leftwards.out" "" LINES 121 SOURCE_LINE none
              "${curve_plane}" --source-curve "${curve_dir}/leftwards.txt" --output "${curve_dir}/leftwards.out")
-set_tests_properties(cli_source_curve_leftwards PROPERTIES DISABLED TRUE)

@@ -24,8 +24,7 @@ Cases:
                   them) and --source-border: the distance is the least of the five, the label (--labels) the
                   index of the nearest in that order (vertices, points, curves, border) where it is clear
   offset_curves   --levels A,B --curves-output: the isolines of the distance to the polygon are its offset curves
-                  (every point at distance A or B from the polygon, 1e-9); needs the kept field with curves (the
-                  library does not keep it for curves yet: registered but disabled until it does)
+                  (every point at distance A or B from the polygon, 1e-9), from the kept field of the curves
 """
 
 import argparse
