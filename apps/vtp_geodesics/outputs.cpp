@@ -244,6 +244,7 @@ void write_outputs(Output_files& files, const Arguments& args, const vtp_support
       for(std::size_t v : results.samples)
         p.markers.push_back(point_of_file_vertex(input, v));
       p.polylines = results.paths;
+      p.polylines.insert(p.polylines.end(), run.source_curves.begin(), run.source_curves.end());
       if(args.colour_labels)
         p.labels = &run.labels;
       if(args.colour_angle)

@@ -239,6 +239,8 @@ Run_result run_propagation(const vtp_support::Mesh& mesh, const Run_request& req
     {
       throw Tool_error(request.source_curves[i].name + ": " + e.what());
     }
+    // the curve as the library joined it (the picture draws it)
+    r.source_curves.push_back(to_arrays(solver.source_curve(label_of_source.size()).points));
     label_of_source.push_back(request.source_curve_labels[i]);
   }
   if(request.source_border)

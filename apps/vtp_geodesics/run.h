@@ -120,6 +120,7 @@ struct Run_result
   std::vector<double> target_location_distances; // per target location
   std::vector<std::vector<std::array<double, 3> > > paths; // per path: its points, target first, source last
   std::vector<std::vector<std::array<double, 3> > > traces; // per trace: its points, start first
+  std::vector<std::vector<std::array<double, 3> > > source_curves; // per source curve: its points as joined
   std::vector<double> reference;          // CGAL::Surface_mesh_shortest_path's, if check_cgal
   double cgal_seconds = 0.;
   std::size_t join_runs = 0;              // --through-pinches: the runs that joined the copies

@@ -208,7 +208,28 @@ public:
       throw Invalid_input_error(name + ": points " + std::to_string(bad) + " and " + std::to_string(bad + 1)
                                 + " are not connected by the surface");
     internal::add_curve_seeds(m_mesh.arrays, joined, label, m_sources);
+    m_curves.emplace_back(static_cast<std::size_t>(label), std::move(joined));
     ++m_source_count;
+  }
+
+  /// the curve of source `i` of the source set (added by `add_source_curve()`) as the solver joined it: its
+  /// points given and, between two that share no face, the points of the shortest geodesic between them (every
+  /// two consecutive points share a face); a closed curve ends with its first point again.
+  /// \throws Invalid_input_error if source `i` is not a curve.
+  Polyline source_curve(std::size_t i) const
+  {
+    for(const auto& c : m_curves)
+      if(c.first == i)
+      {
+        Polyline r;
+        for(const internal::Seed& q : c.second)
+        {
+          r.points.push_back(internal::point_of<Point_3>(m_mesh, m_vpm, q));
+          r.locations.push_back(internal::location_of(m_mesh, q));
+        }
+        return r;
+      }
+    throw Invalid_input_error("source " + std::to_string(i) + " is not a curve of the source set");
   }
 
   /// adds the border of the mesh (every border loop) to the source set, as one source; each loop runs with the
@@ -255,6 +276,7 @@ public:
   void clear_sources()
   {
     m_sources.clear();
+    m_curves.clear();
     m_source_count = 0;
   }
 
@@ -604,6 +626,7 @@ private:
   double m_preprocessing_seconds = 0.;
   std::vector<internal::Seed> m_sources;  // the seeds of the source set (several for a curve)
   std::size_t m_source_count = 0;
+  std::vector<std::pair<std::size_t, std::vector<internal::Seed> > > m_curves;  // (source, its joined points)
   internal::Propagation_engine m_engine;  // per vertex index
   std::vector<double> m_distances;       // those of m_engine, in the order of vertices(tm)
   Propagation_statistics m_statistics;
