@@ -174,12 +174,12 @@ public:
   std::array<Index, 3> edge_of(const Halfedge& h, Index label) const
   {
     const std::string name = "source " + std::to_string(label) + " (edges)";
-    const vertex_descriptor a = CGAL::source(h, tm), b = CGAL::target(h, tm);
+    const vertex_descriptor a = source(h, tm), b = target(h, tm);
     if(!is_vertex(a) || !is_vertex(b))
       throw Invalid_input_error(name + ": a half-edge is not a half-edge of the mesh");
-    typename boost::graph_traits<TriangleMesh>::face_descriptor f = CGAL::face(h, tm);
+    face_descriptor f = face(h, tm);
     if(f == boost::graph_traits<TriangleMesh>::null_face())
-      f = CGAL::face(CGAL::opposite(h, tm), tm);
+      f = face(opposite(h, tm), tm);
     const Index fi = f == boost::graph_traits<TriangleMesh>::null_face() ? NO_INDEX : face_index(f);
     if(fi == NO_INDEX)
       throw Invalid_input_error(name + ": a half-edge has no face of the mesh");

@@ -50,16 +50,23 @@ void run_solver(const MeshIndex& mesh, VertexPointMap vpm, std::vector<Seed> see
   if(settings.keep_field && settings.known_distances)
     throw Invalid_input_error("keep_field cannot start from initial distances (the field of the known region is "
                               "not known)");
-  start_log_map(np, settings, mesh, vpm, seeds, engine.direction());
-  std::vector<Target> targets = mesh.targets_of(CGAL::parameters::get_parameter(np, internal_np::targets));
   const bool curves = has_segments(seeds);
   const bool sign = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::signed_distance),
                                                        false);
-  if(curves && (settings.virtual_sources || settings.log_map || settings.known_distances))
+  const bool log_map = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::log_map_t>::value
+                       || !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::log_map_via_t>::value;
+  if(curves && (settings.virtual_sources || log_map || settings.known_distances))
     throw Invalid_input_error("sources that are curves need windows (not virtual sources), and give no log map and "
                               "no start from initial distances");
   if(sign && !curves)
     throw Invalid_input_error("signed_distance needs a source that is a curve");
+  start_log_map(np, settings, mesh, vpm, seeds, engine.direction());
+  std::vector<Target> targets = mesh.targets_of(CGAL::parameters::get_parameter(np, internal_np::targets));
+  if(sign)
+    for(const Target& t : targets)
+      if(t.vertex == NO_INDEX)
+        throw Invalid_input_error("signed_distance: the targets must be vertices (a target inside a face or an edge "
+                                  "is not signed)");
   // signed: each seed is its own label during the run (the side of each vertex's nearest point), then the
   // user's labels again
   std::vector<Index> user_labels;

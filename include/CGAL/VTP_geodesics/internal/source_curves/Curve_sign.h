@@ -32,8 +32,11 @@ namespace internal {
 // piece of a curve (its label is a segment seed, seen from one side) is on that side. A part whose vertices of
 // that kind are all on one side is that side, all of its vertices. A part with vertices on both sides (the
 // curves do not separate it: an open curve, a loop around a handle) keeps the side of each vertex whose nearest
-// point lies inside a piece, and its vertices nearest to a point where pieces meet or end are positive; when
-// every curve is closed, that is an error (the curves are not oriented consistently, or do not bound).
+// point lies inside a piece; a vertex nearest to a point where pieces meet takes the side of the first such
+// vertex found from it along the edges of the part (breadth first, through vertices of its kind: the wedge beyond
+// a corner of a curve lies between two strips of the same side), and a vertex nearest to an end of an open curve
+// is positive; when every curve is closed, such a part is an error (the curves are not oriented consistently,
+// or do not bound).
 //
 // `label` holds, per vertex, the index in `seeds` of the seed of its nearest point (NO_INDEX: unreached);
 // `dist` is signed in place. `position`: the numbers of the vertices for the error message.
@@ -104,12 +107,43 @@ inline void sign_distances(const Mesh_arrays& m, const std::vector<Seed>& seeds,
                                 "of the surface (the part around vertex "
                                 + std::to_string(position[example[p]])
                                 + " lies on the left of a piece of a curve and on the right of another)");
+  // the sides in the parts on both sides: from the vertices nearest to the inside of a piece, breadth first to
+  // those nearest to a point where pieces meet (not to the ends of open curves)
+  std::vector<signed char> side(nv, 0);
+  std::vector<Index> queue;
+  for(Index v = 0; v < nv; ++v)
+    if(part[v] != NO_INDEX && seen[part[v]] == 3 && label[v] != NO_INDEX && seeds[label[v]].segment)
+    {
+      side[v] = seeds[label[v]].side > 0 ? 1 : -1;
+      queue.push_back(v);
+    }
+  for(std::size_t i = 0; i < queue.size(); ++i)
+  {
+    const Index v = queue[i];
+    for(Index c = m.corner_begin[v]; c < m.corner_begin[v + 1]; ++c)
+    {
+      const Index h = m.corners[c];
+      const Index e[2] = { h, Mesh_arrays::prev(h) };
+      for(Index g : e)
+      {
+        if(cut[g])
+          continue;
+        const Index w = g == h ? m.target(h) : m.source[g];
+        if(side[w] != 0 || part[w] != part[v] || label[w] == NO_INDEX)
+          continue;
+        const Seed& s = seeds[label[w]];
+        if(s.segment || s.curve_end)
+          continue;
+        side[w] = side[v];
+        queue.push_back(w);
+      }
+    }
+  }
   for(Index v = 0; v < nv; ++v)
   {
     if(part[v] == NO_INDEX || label[v] == NO_INDEX || !(dist[v] > 0.))
       continue;
-    const Seed& s = seeds[label[v]];
-    const bool left = seen[part[v]] == 1 || (seen[part[v]] == 3 && s.segment && s.side > 0);
+    const bool left = seen[part[v]] == 1 || (seen[part[v]] == 3 && side[v] > 0);
     if(left)
       dist[v] = -dist[v];
   }
