@@ -624,6 +624,163 @@ TEST(Source_curves, cube_ring)
 }
 
 // =========================================================================================================
+// A torus: loops that do not separate the surface
+
+// Torus (R = 1, r = 0.3), n columns around the axis (u) and m rows around the tube (v), cells split alternately,
+// outward oriented; vertex (i, j) has index j * n + i.
+Surface_mesh sc_torus(int n, int m)
+{
+  Polygon_soup soup;
+  for(int j = 0; j < m; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      const double u = 2. * PI * i / n, v = 2. * PI * j / m;
+      soup.points.push_back(Point_3((1. + 0.3 * std::cos(v)) * std::cos(u), (1. + 0.3 * std::cos(v)) * std::sin(u),
+                                    0.3 * std::sin(v)));
+    }
+  for(int j = 0; j < m; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      auto id = [&](int a, int b) { return std::size_t((b % m) * n + (a % n)); };
+      add_cell(soup, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1), (i + j) % 2 == 1);
+    }
+  return to_mesh<Surface_mesh>(soup);
+}
+
+// The loop around the tube at column i (a meridian), walked with v increasing (its left: u decreasing) or not.
+std::vector<Vertex_index> sc_meridian(int n, int m, int i, bool increasing)
+{
+  std::vector<Vertex_index> r;
+  for(int k = 0; k <= m; ++k)
+  {
+    const int j = increasing ? k % m : (m - k) % m;
+    r.push_back(Vertex_index(static_cast<Surface_mesh::size_type>(j * n + i)));
+  }
+  return r;
+}
+
+// One meridian is closed and does not separate the torus: signed is rejected (the rule of Curve_sign.h: every
+// curve closed, a part on both sides), unsigned is fine. Two meridians walked in opposite directions bound a band:
+// accepted, negative on the band on their left. Walked in the same direction: rejected.
+TEST(Source_curves, torus_loops_that_do_not_separate)
+{
+  const int n = 48, m = 16, i0 = 10, i1 = 30;
+  const Surface_mesh t = sc_torus(n, m);
+  {
+    Sc_solver solver(t);
+    solver.add_source_curve(sc_meridian(n, m, i0, true));
+    const Sc_result r = sc_run(solver, t);
+    for(int j = 0; j < m; ++j)
+      EXPECT_EQ(r.d[std::size_t(j * n + i0)], 0.);
+    EXPECT_THROW(sc_run(solver, t, VSCP::signed_distance(true)), VSC::Invalid_input_error);
+  }
+  {
+    Sc_solver same(t);
+    same.add_source_curve(sc_meridian(n, m, i0, true));
+    same.add_source_curve(sc_meridian(n, m, i1, true));
+    EXPECT_THROW(sc_run(same, t, VSCP::signed_distance(true)), VSC::Invalid_input_error);
+  }
+  Sc_solver band(t);
+  band.add_source_curve(sc_meridian(n, m, i0, false));  // left: u increasing, into the band
+  band.add_source_curve(sc_meridian(n, m, i1, true));   // left: u decreasing, into the band
+  const Sc_result u = sc_run(band, t), s = sc_run(band, t, VSCP::signed_distance(true));
+  std::vector<double> e(u.d.size());
+  std::size_t negative = 0;
+  for(std::size_t v = 0; v < u.d.size(); ++v)
+  {
+    const int i = int(v % n);
+    e[v] = i > i0 && i < i1 ? -u.d[v] : u.d[v];
+    negative += e[v] < 0.;
+  }
+  EXPECT_GT(negative, std::size_t(100));
+  EXPECT_TRUE(identical(s.d, e)) << "the band between the two meridians negative, the rest positive";
+  // an open curve on the torus: accepted (its sign: the side of the nearest piece, or positive)
+  Sc_solver open(t);
+  open.add_source_curve(std::vector<Vertex_index>{ Vertex_index(5), Vertex_index(5 * n + 20) });
+  EXPECT_NO_THROW(sc_run(open, t, VSCP::signed_distance(true)));
+}
+
+// =========================================================================================================
+// A distance limit and targets with a curve
+
+TEST(Source_curves, square_polygon_distance_limit_and_targets)
+{
+  const Surface_mesh& m = sc_square();
+  Sc_solver solver(m);
+  solver.add_source_curve(sc_locate_all(m, sc_polygon));
+  const auto e = sc_expected(m, [](double x, double y) { return sc_polyline_distance(x, y, sc_polygon); });
+  const double limit = 0.1;
+  for(bool parallel : { false, true })
+  {
+#ifndef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+    if(parallel)
+      continue;
+#endif
+    const Sc_result r = sc_run(solver, m, VSCP::maximum_distance(limit), parallel);
+    std::size_t within = 0, beyond = 0;
+    for(std::size_t v = 0; v < e.size(); ++v)
+      if(e[v] < limit - 1e-9)
+      {
+        ++within;
+        EXPECT_NEAR(r.d[v], e[v], 1e-12) << "vertex " << v << (parallel ? " (PVTP)" : "");
+      }
+      else if(e[v] > limit + 1e-9)
+      {
+        ++beyond;
+        EXPECT_EQ(r.d[v], INF) << "vertex " << v << (parallel ? " (PVTP)" : "");
+        EXPECT_EQ(r.label[v], VSC::no_source);
+      }
+    EXPECT_GT(within, std::size_t(1000));
+    EXPECT_GT(beyond, std::size_t(1000));
+  }
+  // targets: vertices and points of faces, their distances exact
+  const std::vector<Sc_location> targets = { sc_locate_2d(m, 0.05, 0.93), sc_locate_2d(m, 0.5, 0.5),
+                                             sc_locate_2d(m, 0.71, 0.5) };
+  solver.compute(Discard_map(0.), VSCP::targets(targets));
+  ASSERT_EQ(solver.number_of_targets(), targets.size());
+  for(std::size_t k = 0; k < targets.size(); ++k)
+  {
+    const Point_3 q = point_of(m, targets[k]);
+    EXPECT_NEAR(solver.target_distance(k), sc_polyline_distance(q.x(), q.y(), sc_polygon), 1e-12) << "target " << k;
+  }
+}
+
+// With signed_distance, the distances of the targets are signed as those of the vertices are (negative inside a
+// counterclockwise polygon), or the combination is refused; it is not the unsigned distance.
+TEST(Source_curves, square_polygon_signed_distance_of_targets)
+{
+  const Surface_mesh& m = sc_square();
+  Sc_solver solver(m);
+  solver.add_source_curve(sc_locate_all(m, sc_polygon));
+  const std::vector<Sc_location> targets = { sc_locate_2d(m, 0.05, 0.93), sc_locate_2d(m, 0.5, 0.5) };
+  try
+  {
+    const Sc_result r = sc_run(solver, m, VSCP::targets(targets).signed_distance(true));
+    // the vertex distances of the same run (stopped once the targets are final: the others are +infinity, not
+    // compared) are signed
+    auto e = sc_expected(m, [](double x, double y) {
+      const double d = sc_polyline_distance(x, y, sc_polygon);
+      return sc_inside(x, y, sc_polygon) ? -d : d;
+    });
+    for(std::size_t v = 0; v < e.size(); ++v)
+      if(r.d[v] == INF)
+        e[v] = NOT_A_VERTEX;
+    EXPECT_TRUE(distances_near(r.d, e, EXACT_TOLERANCE, "square, polygon, signed, with targets"));
+    for(std::size_t k = 0; k < targets.size(); ++k)
+    {
+      const Point_3 q = point_of(m, targets[k]);
+      const double d = sc_polyline_distance(q.x(), q.y(), sc_polygon);
+      EXPECT_NEAR(solver.target_distance(k), sc_inside(q.x(), q.y(), sc_polygon) ? -d : d, 1e-12)
+        << "target " << k << " at (" << q.x() << ", " << q.y() << "), signed";
+    }
+  }
+  catch(const VSC::Invalid_input_error&)
+  {
+    SUCCEED() << "targets with signed_distance refused";
+  }
+}
+
+// =========================================================================================================
 // The elephant: invariants
 
 // d_S - h/2 <= d <= d_S, d_S the distance from points sampled at most h apart along the curve (one run).
