@@ -31,6 +31,7 @@
 #include <queue>
 #include <random>
 #include <set>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -509,6 +510,70 @@ TEST(Source_curves, square_open_curve_crossing_faces)
   EXPECT_GT(left, std::size_t(100));
   EXPECT_GT(at_corner, std::size_t(100));
   EXPECT_TRUE(distances_near(rs.d, es, EXACT_TOLERANCE, "square, open curve, signed (rule of Curve_sign.h)"));
+}
+
+// On a regular grid, an open straight curve given as two vertices (joined along the straight line, through
+// vertices of the mesh): every vertex whose nearest point lies strictly inside the curve (not at its ends) is on
+// one side of it, negative on the left. The curve has one piece as given; the library splits it at the vertices and
+// edges it passes, and here the foot of every vertex of the strip is such a split point (a tie between the pieces
+// that meet there and the point itself). A closed polygon through vertices of the same grid, signed.
+TEST(Source_curves, regular_grid_straight_curves_through_vertices)
+{
+  const int n = 40;
+  const Surface_mesh m = to_mesh<Surface_mesh>(planar_grid(n, n, 1., 1.));
+  auto vertex = [&](int i, int j) { return Vertex_index(static_cast<Surface_mesh::size_type>(grid_vertex(n, i, j))); };
+  struct Case
+  {
+    const char* name;
+    std::array<int, 4> ij;
+  };
+  for(const Case& c : { Case{ "horizontal, along edges", {{ 4, 20, 36, 20 }} },
+                        Case{ "diagonal, through vertices", {{ 4, 4, 36, 36 }} } })
+  {
+    const std::array<double, 2> a = {{ double(c.ij[0]) / n, double(c.ij[1]) / n }},
+                                b = {{ double(c.ij[2]) / n, double(c.ij[3]) / n }};
+    Sc_solver solver(m);
+    solver.add_source_curve(std::vector<Vertex_index>{ vertex(c.ij[0], c.ij[1]), vertex(c.ij[2], c.ij[3]) });
+    const Sc_result u = sc_run(solver, m);
+    EXPECT_TRUE(distances_near(u.d, sc_expected(m, [&](double x, double y) { return sc_segment_distance(x, y, a, b); }),
+                               EXACT_TOLERANCE, std::string("regular grid, ") + c.name + ", unsigned"));
+    const Sc_result r = sc_run(solver, m, VSCP::signed_distance(true));
+    std::vector<double> e(num_vertices(m), NOT_A_VERTEX);
+    std::size_t strip = 0, positive_on_left = 0;
+    std::ostringstream examples;
+    for(Vertex_index v : vertices(m))
+    {
+      const double x = m.point(v).x(), y = m.point(v).y();
+      double t;
+      const double d = sc_segment_distance(x, y, a, b, &t);
+      if(d < 1e-12 || t <= 1e-9 || t >= 1. - 1e-9)
+        continue;  // on the curve, or nearest to an end
+      const double cross = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0]);
+      e[std::size_t(v)] = cross > 0. ? -d : d;
+      ++strip;
+      if(cross > 0. && r.d[std::size_t(v)] > 0. && positive_on_left++ < 6)
+        examples << " (" << x * n << ", " << y * n << ")";
+    }
+    EXPECT_GT(strip, std::size_t(500));
+    EXPECT_EQ(positive_on_left, std::size_t(0)) << c.name << ": vertices on the left of the curve, beside it, that "
+                                                << "are positive, e.g. at grid points" << examples.str();
+    EXPECT_TRUE(distances_near(r.d, e, EXACT_TOLERANCE, std::string("regular grid, ") + c.name + ", signed, the strip"));
+  }
+  // a closed polygon through vertices of the grid (and along edges): negative inside
+  const std::vector<std::array<int, 2> > corners = { {{ 10, 10 }}, {{ 30, 12 }}, {{ 30, 30 }}, {{ 12, 26 }}, {{ 10, 10 }} };
+  std::vector<Vertex_index> loop;
+  std::vector<std::array<double, 2> > polygon;
+  for(const auto& q : corners)
+  {
+    loop.push_back(vertex(q[0], q[1]));
+    polygon.push_back({{ double(q[0]) / n, double(q[1]) / n }});
+  }
+  Sc_solver solver(m);
+  solver.add_source_curve(loop);
+  const Sc_result r = sc_run(solver, m, VSCP::signed_distance(true));
+  EXPECT_TRUE(distances_near(r.d, sc_expected(m, [&](double x, double y) {
+    const double d = sc_polyline_distance(x, y, polygon);
+    return sc_inside(x, y, polygon) && d > 1e-12 ? -d : d; }), EXACT_TOLERANCE, "regular grid, polygon through vertices, signed"));
 }
 
 // Two loops: the sign rule (Curve_sign.h) takes curves that bound parts consistently (an annulus: outer loop
