@@ -1,7 +1,7 @@
 // curve_benchmark: the two bars of issue 47 on a mesh, side by side in one run (benchmark/README.md, "Sources that
 // are curves"):
 //
-//   curve_benchmark MESH [--vertices A,B,C,...] [--step H] [--repeats R] [--no-check] [--no-timing]
+//   curve_benchmark MESH [--vertices A,B,C,...] [--step H] [--repeats R] [--no-check] [--no-timing] [--dense S]
 //
 // The curve is the open curve through the vertices A, B, C, ... (indices in the file, as the tools take them;
 // default 0,1000,5000), given to add_source_curve(), which joins each two that share no face by the shortest
@@ -20,6 +20,10 @@
 //    is paid once per curve, before compute(). Printed: both times, their ratio (and with the joining), the
 //    windows created, and the propagation wall-clock seconds of the statistics.
 //
+// 3. With --dense S (S >= 2), the joining of a dense curve: the vertices of a path of mesh edges from A to B (breadth
+//    first), every S-th (so that consecutive points share no face and each pair is joined by a run), timed as
+//    add_source_curve() (the least of R), per pair, against the run from A alone.
+//
 // Output: one "name value" line per measure.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -37,6 +41,7 @@
 #include <iostream>
 #include <iterator>
 #include <limits>
+#include <queue>
 #include <set>
 #include <sstream>
 #include <string>
@@ -193,6 +198,7 @@ int main(int argc, char** argv)
   double step = 0.;
   int repeats = 3;
   bool check = true, timing = true;
+  int dense = 0;
   for(int i = 2; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -206,6 +212,8 @@ int main(int argc, char** argv)
       check = false;
     else if(a == "--no-timing")
       timing = false;
+    else if(a == "--dense" && i + 1 < argc)
+      dense = std::atoi(argv[++i]);
     else
     {
       std::cerr << "unknown option " << a << "\n";
@@ -318,6 +326,53 @@ int main(int argc, char** argv)
                   repeats, single_cpu, curve_cpu, join_cpu, curve_cpu / single_cpu, (curve_cpu + join_cpu) / single_cpu,
                   single_wall, curve_wall, single_windows, curve_windows,
                   double(curve_windows) / double(single_windows), curve_cpu / single_cpu <= 1.5 ? "met" : "FAILED");
+    }
+
+    if(dense >= 2 && curve.size() >= 2)
+    {
+      // the path of edges from A to B, breadth first, every dense-th vertex (and B)
+      std::vector<Vertex> parent(num_vertices(mesh), Mesh::null_vertex());
+      std::queue<Vertex> queue;
+      parent[std::size_t(curve[0])] = curve[0];
+      queue.push(curve[0]);
+      while(!queue.empty())
+      {
+        const Vertex x = queue.front();
+        queue.pop();
+        for(Vertex y : CGAL::vertices_around_target(mesh.halfedge(x), mesh))
+          if(parent[std::size_t(y)] == Mesh::null_vertex())
+          {
+            parent[std::size_t(y)] = x;
+            queue.push(y);
+          }
+      }
+      if(parent[std::size_t(curve[1])] == Mesh::null_vertex())
+        throw std::runtime_error("the first two vertices are not connected");
+      std::vector<Vertex> path(1, curve[1]);
+      while(path.back() != curve[0])
+        path.push_back(parent[std::size_t(path.back())]);
+      std::reverse(path.begin(), path.end());
+      std::vector<Vertex> points;
+      for(std::size_t i = 0; i < path.size(); i += std::size_t(dense))
+        points.push_back(path[i]);
+      if(points.back() != path.back())
+        points.push_back(path.back());
+      double join = INF, single = INF;
+      for(int r = 0; r < repeats; ++r)
+      {
+        solver.clear_sources();
+        double c0 = cpu_seconds();
+        solver.add_source_curve(points);
+        join = (std::min)(join, cpu_seconds() - c0);
+        solver.clear_sources();
+        solver.add_source(curve[0]);
+        c0 = cpu_seconds();
+        solver.compute(CGAL::Constant_property_map<Vertex, double>(0.));
+        single = (std::min)(single, cpu_seconds() - c0);
+      }
+      std::printf("dense_curve_edges %zu\ndense_curve_points %zu\ndense_curve_join_cpu_seconds %.4f\n"
+                  "dense_curve_join_cpu_seconds_per_pair %.6f\ndense_curve_join_vs_single_vertex_run %.3f\n",
+                  path.size() - 1, points.size(), join, join / double(points.size() - 1), join / single);
     }
   }
   catch(const std::exception& e)
