@@ -576,6 +576,27 @@ TEST(Source_curves, regular_grid_straight_curves_through_vertices)
     return sc_inside(x, y, polygon) && d > 1e-12 ? -d : d; }), EXACT_TOLERANCE, "regular grid, polygon through vertices, signed"));
 }
 
+// PVTP = VTP to 1e-12 with signed_distance too, on the same open curves of the regular grid (where the side of a
+// vertex beside the curve is decided between pieces at equal distance).
+TEST(Source_curves, regular_grid_open_curves_signed_pvtp_equals_vtp)
+{
+#ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
+  const int n = 40;
+  const Surface_mesh m = to_mesh<Surface_mesh>(planar_grid(n, n, 1., 1.));
+  auto vertex = [&](int i, int j) { return Vertex_index(static_cast<Surface_mesh::size_type>(grid_vertex(n, i, j))); };
+  for(const std::array<int, 4>& c : { std::array<int, 4>{{ 4, 20, 36, 20 }}, std::array<int, 4>{{ 4, 4, 36, 36 }} })
+  {
+    Sc_solver solver(m);
+    solver.add_source_curve(std::vector<Vertex_index>{ vertex(c[0], c[1]), vertex(c[2], c[3]) });
+    const Sc_result a = sc_run(solver, m, VSCP::signed_distance(true)),
+                    b = sc_run(solver, m, VSCP::signed_distance(true), true);
+    EXPECT_TRUE(distances_near(b.d, a.d, EXACT_TOLERANCE, "regular grid, open curve, signed, PVTP = VTP"));
+  }
+#else
+  GTEST_SKIP() << "no OpenMP";
+#endif
+}
+
 // Two loops: the sign rule (Curve_sign.h) takes curves that bound parts consistently (an annulus: outer loop
 // counterclockwise, inner clockwise; two disjoint loops, both counterclockwise) and rejects the others (two nested
 // loops both counterclockwise: the annulus is left of the outer one and right of the inner one; two disjoint loops
@@ -1009,6 +1030,69 @@ TEST(Source_curves, elephant_curve_along_edges_equals_add_source_edges)
   Sc_solver unsigned_run(m);
   unsigned_run.add_source_curve(loop);
   EXPECT_EQ(r.d[std::size_t(centre)], -sc_run(unsigned_run, m).d[std::size_t(centre)]);
+}
+
+// A closed curve of edges (add_source_edges, in no order): the border of the faces within k edges of a vertex, with
+// the faces on the left: negative inside (the vertices nearer than k edges), positive outside, |signed| = unsigned
+// bit for bit; the opposite half-edges: the signs flip.
+TEST(Source_curves, elephant_border_of_a_region_as_edges_signed)
+{
+  const Surface_mesh& m = elephant();
+  const Vertex_index centre(1234);
+  std::vector<int> level(num_vertices(m), -1);
+  std::queue<Vertex_index> q;
+  level[std::size_t(centre)] = 0;
+  q.push(centre);
+  while(!q.empty())
+  {
+    const Vertex_index x = q.front();
+    q.pop();
+    for(Vertex_index y : vertices_around_target(m.halfedge(x), m))
+      if(level[std::size_t(y)] < 0)
+      {
+        level[std::size_t(y)] = level[std::size_t(x)] + 1;
+        q.push(y);
+      }
+  }
+  for(int k : { 3, 10 })
+  {
+    auto in_region = [&](Sc_face f) {
+      if(f == Surface_mesh::null_face())
+        return false;
+      for(Vertex_index v : vertices_around_face(m.halfedge(f), m))
+        if(level[std::size_t(v)] < 0 || level[std::size_t(v)] > k)
+          return false;
+      return true;
+    };
+    std::vector<Sc_halfedge> edges, reversed;
+    for(Sc_halfedge h : halfedges(m))
+      if(in_region(m.face(h)) && !in_region(m.face(m.opposite(h))))
+      {
+        edges.push_back(h);
+        reversed.push_back(m.opposite(h));
+      }
+    for(bool flip : { false, true })
+    {
+      Sc_solver solver(m);
+      solver.add_source_edges(flip ? reversed : edges);
+      const Sc_result u = sc_run(solver, m), s = sc_run(solver, m, VSCP::signed_distance(true));
+      std::size_t inside = 0, wrong = 0, not_abs = 0;
+      for(std::size_t v = 0; v < u.d.size(); ++v)
+      {
+        not_abs += !(std::abs(s.d[v]) == u.d[v]);
+        if(level[v] >= 0 && level[v] < k)
+        {
+          ++inside;
+          wrong += !(flip ? s.d[v] > 0. : s.d[v] < 0.);
+        }
+        else if(level[v] < 0 || level[v] > k)
+          wrong += !(flip ? s.d[v] < 0. : s.d[v] > 0.);
+      }
+      EXPECT_GT(inside, std::size_t(10));
+      EXPECT_EQ(wrong, std::size_t(0)) << "k = " << k << (flip ? ", reversed" : "");
+      EXPECT_EQ(not_abs, std::size_t(0)) << "k = " << k << (flip ? ", reversed" : "");
+    }
+  }
 }
 
 // PVTP (2 threads) = VTP to 1e-12 of the largest distance (the package claims bitwise equality for PVSP only;
