@@ -840,7 +840,8 @@ TEST(Source_curves, square_polygon_distance_limit_and_targets)
 }
 
 // With signed_distance, the distances of the targets are signed as those of the vertices are (negative inside a
-// counterclockwise polygon), or the combination is refused; it is not the unsigned distance.
+// counterclockwise polygon), or the combination is refused; it is not the unsigned distance. Targets that are
+// vertices and targets that are points of faces.
 TEST(Source_curves, square_polygon_signed_distance_of_targets)
 {
   const Surface_mesh& m = sc_square();
@@ -865,7 +866,21 @@ TEST(Source_curves, square_polygon_signed_distance_of_targets)
       const Point_3 q = point_of(m, targets[k]);
       const double d = sc_polyline_distance(q.x(), q.y(), sc_polygon);
       EXPECT_NEAR(solver.target_distance(k), sc_inside(q.x(), q.y(), sc_polygon) ? -d : d, 1e-12)
-        << "target " << k << " at (" << q.x() << ", " << q.y() << "), signed";
+        << "target " << k << " at (" << q.x() << ", " << q.y() << "), a point of a face, signed";
+    }
+    // vertex targets: the vertex nearest to (0.5, 0.5), inside, and a corner of the square, outside
+    Vertex_index centre = *vertices(m).begin();
+    for(Vertex_index v : vertices(m))
+      if(distance(m.point(v), Point_3(0.5, 0.5, 0.)) < distance(m.point(centre), Point_3(0.5, 0.5, 0.)))
+        centre = v;
+    const std::vector<Vertex_index> vertex_targets = { centre, Vertex_index(0) };
+    sc_run(solver, m, VSCP::targets(vertex_targets).signed_distance(true));
+    for(std::size_t k = 0; k < vertex_targets.size(); ++k)
+    {
+      const Point_3& q = m.point(vertex_targets[k]);
+      const double d = sc_polyline_distance(q.x(), q.y(), sc_polygon);
+      EXPECT_NEAR(solver.target_distance(k), sc_inside(q.x(), q.y(), sc_polygon) ? -d : d, 1e-12)
+        << "vertex target " << k << " at (" << q.x() << ", " << q.y() << "), signed";
     }
   }
   catch(const VSC::Invalid_input_error&)
