@@ -1216,6 +1216,12 @@ TEST(Source_curves, bad_input_is_rejected)
   solver.add_source_curve(std::vector<Sc_location>{ good, good2 });
   EXPECT_THROW(sc_run(solver, m, VSCP::keep_field(true)), VSC::Invalid_input_error);
   EXPECT_THROW(sc_run(solver, m, VSCP::virtual_sources(true)), VSC::Invalid_input_error);
+  // (the log map: its own test below)
+  std::vector<double> known(num_vertices(m), INF);
+  known[0] = 0.5;
+  EXPECT_THROW(sc_run(solver, m, VSCP::initial_distances(boost::make_iterator_property_map(known.begin(),
+                                                                                           get(boost::vertex_index, m)))),
+               VSC::Invalid_input_error);
   // the solver still works after all that
   const Sc_result r = sc_run(solver, m);
   const Point_3 a = point_of(m, good), b = point_of(m, good2);
@@ -1237,4 +1243,17 @@ TEST(Source_curves, bad_input_is_rejected)
   EXPECT_EQ(r2.d[30], INF);
   EXPECT_EQ(r2.label[30], VSC::no_source);
   EXPECT_NEAR(r2.d[4], std::sqrt(0.5), 1e-12);  // (1,0)
+}
+
+// The log map with a curve: rejected (Invalid_input_error), as the kept field and virtual sources are. In its own
+// test, last: it crashed (a segmentation fault in internal::prepare_log_map(), before the check).
+TEST(Source_curves, log_map_with_a_curve_is_rejected)
+{
+  const Surface_mesh& m = sc_square();
+  Sc_solver solver(m);
+  solver.add_source_curve(std::vector<Sc_location>{ sc_locate_2d(m, 0.5, 0.5), sc_locate_2d(m, 0.7, 0.6) });
+  std::vector<std::array<double, 2> > polar(num_vertices(m));
+  EXPECT_THROW(sc_run(solver, m, VSCP::log_map(boost::make_iterator_property_map(polar.begin(),
+                                                                                 get(boost::vertex_index, m)))),
+               VSC::Invalid_input_error);
 }
