@@ -4,7 +4,7 @@
 //   (unsigned = Euclidean distance to the polygon, signed = negative inside, walked clockwise the sign flips),
 //   the border (= distance to the sides), an open curve crossing faces (Euclidean distance; the sign rule of
 //   open curves of internal/source_curves/Curve_sign.h), pairs of loops that the sign rule accepts and rejects,
-//   a distance limit and targets (signed targets too);
+//   a distance limit and targets (signed vertex targets; targets inside faces refused when signed);
 // - a regular grid: straight curves through vertices (the side of the vertices beside an open curve, PVTP = VTP
 //   signed), a closed polygon through vertices;
 // - the unit cube (12 x 12 squares a side): the ring z = 0.5 through four vertices that share no face (joined
@@ -16,9 +16,7 @@
 //   argmin), a curve along edges = add_source_edges() of the same edges, the border of a region as edges (signed),
 //   PVTP = VTP, AVTP never below VTP;
 // - bad input: Invalid_input_error, never a crash.
-//
-// Its own executable (CMakeLists.txt): this file includes the test meshes (<CGAL/Surface_mesh.h>) before
-// <CGAL/VTP_geodesics.h>, which does not compile first (internal/mesh/Mesh_index.h calls CGAL::source() qualified).
+
 
 #include "vtp_test_meshes.h"
 #include "vtp_test_utils.h"
@@ -508,7 +506,17 @@ TEST(Source_curves, square_open_curve_crossing_faces)
     }
     else if(t * len <= 1e-9 || (1. - t) * len <= 1e-9)
     {
-      es[std::size_t(v)] = best;  // nearest to an end or a corner: positive
+      // nearest to an end: positive; to a corner: the side of the wedge beyond it, between the strips of the two
+      // pieces on the outer side of the turn (the left if the curve turns right there)
+      const std::size_t corner = t * len <= 1e-9 ? k_best : k_best + 1;
+      double sign = 1.;
+      if(corner > 0 && corner + 1 < p.size())
+      {
+        const double turn = (p[corner][0] - p[corner - 1][0]) * (p[corner + 1][1] - p[corner][1])
+                            - (p[corner][1] - p[corner - 1][1]) * (p[corner + 1][0] - p[corner][0]);
+        sign = turn < 0. ? -1. : 1.;
+      }
+      es[std::size_t(v)] = sign * best;
       ++at_corner;
     }
   }
@@ -596,8 +604,22 @@ TEST(Source_curves, regular_grid_open_curves_signed_pvtp_equals_vtp)
   {
     Sc_solver solver(m);
     solver.add_source_curve(std::vector<Vertex_index>{ vertex(c[0], c[1]), vertex(c[2], c[3]) });
-    const Sc_result a = sc_run(solver, m, VSCP::signed_distance(true)),
-                    b = sc_run(solver, m, VSCP::signed_distance(true), true);
+    Sc_result a = sc_run(solver, m, VSCP::signed_distance(true)), b = sc_run(solver, m, VSCP::signed_distance(true), true);
+    // (a vertex nearest to an end of the curve and, at the same distance, to the strip of the piece there -- on the
+    // perpendicular to the curve at its end -- is positive or on the side of the piece: either, whichever reached
+    // it first; not compared)
+    const std::array<double, 2> p0 = {{ double(c[0]) / n, double(c[1]) / n }}, p1 = {{ double(c[2]) / n, double(c[3]) / n }};
+    std::size_t compared = 0;
+    for(Vertex_index v : vertices(m))
+    {
+      double t;
+      sc_segment_distance(m.point(v).x(), m.point(v).y(), p0, p1, &t);
+      if(t <= 1e-9 || t >= 1. - 1e-9)
+        a.d[std::size_t(v)] = b.d[std::size_t(v)] = std::abs(a.d[std::size_t(v)]);
+      else
+        ++compared;
+    }
+    EXPECT_GT(compared, std::size_t(500));
     EXPECT_TRUE(distances_near(b.d, a.d, EXACT_TOLERANCE, "regular grid, open curve, signed, PVTP = VTP"));
   }
 #else
@@ -848,26 +870,16 @@ TEST(Source_curves, square_polygon_signed_distance_of_targets)
   Sc_solver solver(m);
   solver.add_source_curve(sc_locate_all(m, sc_polygon));
   const std::vector<Sc_location> targets = { sc_locate_2d(m, 0.05, 0.93), sc_locate_2d(m, 0.5, 0.5) };
-  try
+  // targets inside faces are not signed: refused with signed_distance; unsigned, their distances are right
+  EXPECT_THROW(sc_run(solver, m, VSCP::targets(targets).signed_distance(true)), VSC::Invalid_input_error);
+  sc_run(solver, m, VSCP::targets(targets));
+  for(std::size_t k = 0; k < targets.size(); ++k)
   {
-    const Sc_result r = sc_run(solver, m, VSCP::targets(targets).signed_distance(true));
-    // the vertex distances of the same run (stopped once the targets are final: the others are +infinity, not
-    // compared) are signed
-    auto e = sc_expected(m, [](double x, double y) {
-      const double d = sc_polyline_distance(x, y, sc_polygon);
-      return sc_inside(x, y, sc_polygon) ? -d : d;
-    });
-    for(std::size_t v = 0; v < e.size(); ++v)
-      if(r.d[v] == INF)
-        e[v] = NOT_A_VERTEX;
-    EXPECT_TRUE(distances_near(r.d, e, EXACT_TOLERANCE, "square, polygon, signed, with targets"));
-    for(std::size_t k = 0; k < targets.size(); ++k)
-    {
-      const Point_3 q = point_of(m, targets[k]);
-      const double d = sc_polyline_distance(q.x(), q.y(), sc_polygon);
-      EXPECT_NEAR(solver.target_distance(k), sc_inside(q.x(), q.y(), sc_polygon) ? -d : d, 1e-12)
-        << "target " << k << " at (" << q.x() << ", " << q.y() << "), a point of a face, signed";
-    }
+    const Point_3 q = point_of(m, targets[k]);
+    EXPECT_NEAR(solver.target_distance(k), sc_polyline_distance(q.x(), q.y(), sc_polygon), 1e-12)
+      << "target " << k << " at (" << q.x() << ", " << q.y() << "), a point of a face";
+  }
+  {
     // vertex targets: the vertex nearest to (0.5, 0.5), inside, and a corner of the square, outside
     Vertex_index centre = *vertices(m).begin();
     for(Vertex_index v : vertices(m))
@@ -882,10 +894,6 @@ TEST(Source_curves, square_polygon_signed_distance_of_targets)
       EXPECT_NEAR(solver.target_distance(k), sc_inside(q.x(), q.y(), sc_polygon) ? -d : d, 1e-12)
         << "vertex target " << k << " at (" << q.x() << ", " << q.y() << "), signed";
     }
-  }
-  catch(const VSC::Invalid_input_error&)
-  {
-    SUCCEED() << "targets with signed_distance refused";
   }
 }
 
@@ -1211,11 +1219,13 @@ TEST(Source_curves, bad_input_is_rejected)
   solver.add_source(Vertex_index(7));
   EXPECT_THROW(sc_run(solver, m, VSCP::signed_distance(true)), VSC::Invalid_input_error);
   EXPECT_THROW(solver.compute(Discard_map(0.), Vertex_index(7), VSCP::signed_distance(true)), VSC::Invalid_input_error);
-  // curves with what they do not support (said in the brief of the solver: virtual sources, log map, kept field)
+  // curves with what they do not support: virtual sources, the log map (its own test below), initial distances
   solver.clear_sources();
   solver.add_source_curve(std::vector<Sc_location>{ good, good2 });
-  EXPECT_THROW(sc_run(solver, m, VSCP::keep_field(true)), VSC::Invalid_input_error);
   EXPECT_THROW(sc_run(solver, m, VSCP::virtual_sources(true)), VSC::Invalid_input_error);
+  // (the kept field works with curves: the field on the curve is 0)
+  sc_run(solver, m, VSCP::keep_field(true));
+  EXPECT_NEAR(solver.field_distance(good), 0., 1e-12);
   // (the log map: its own test below)
   std::vector<double> known(num_vertices(m), INF);
   known[0] = 0.5;
@@ -1245,7 +1255,7 @@ TEST(Source_curves, bad_input_is_rejected)
   EXPECT_NEAR(r2.d[4], std::sqrt(0.5), 1e-12);  // (1,0)
 }
 
-// The log map with a curve: rejected (Invalid_input_error), as the kept field and virtual sources are. In its own
+// The log map with a curve: rejected (Invalid_input_error), as virtual sources are. In its own
 // test, last: it crashed (a segmentation fault in internal::prepare_log_map(), before the check).
 TEST(Source_curves, log_map_with_a_curve_is_rejected)
 {
