@@ -4,6 +4,7 @@
   curve_error.py DIST.txt --cube MESH.off                     the cube ring z = 0.5 of curve_cases.py cube
   curve_error.py DIST.txt --polygon MESH.off CURVE            a flat mesh (z = 0) whose domain is convex: the
                                                               Euclidean distance to the polygon of CURVE's vertices
+  curve_error.py DIST.txt --polyline MESH.off CURVE           the same, CURVE an open polyline (unsigned only)
   curve_error.py DIST.txt --reference REF.txt                 another per-vertex file (e.g. our exact distances)
   options: --signed / --unsigned (default: from DIST's header line), --flip (negate DIST; default: on for a signed
            file written by geometry-central's driver, 'gc_geo curve_heat signed'), --label TEXT
@@ -19,7 +20,8 @@ The exact answers (our sign: negative on the left; left = outward face normal x 
   polygon: the Euclidean distance to the closed polyline of the curve's vertices (on a flat mesh with a convex
         border the geodesic distance is the Euclidean one); signed negative inside a counter-clockwise polygon.
 Prints one line: label, vertices, max |error| / max |exact|, mean |error| / max |exact|, max |error|, the vertex of
-the largest error and its distance from the curve (in the answer), max |exact|.
+the largest error and its distance from the curve (in the answer), max |exact|, and off=K: the vertices whose error
+exceeds 1e-9 of max |exact| (for a closed polygon: how many inside and outside it, and how many above the answer).
 """
 import argparse
 import re
@@ -69,15 +71,19 @@ def cube_answer(P):
     return d, s
 
 
-def polygon_answer(P, loop):
+def polygon_answer(P, loop, closed=True):
     Q = P[loop][:, :2]
     A, B = Q, np.roll(Q, -1, axis=0)
+    if not closed:
+        A, B = Q[:-1], Q[1:]
     X = P[:, :2]
     best = np.full(len(X), np.inf)
     for a, b in zip(A, B):  # distance to each segment
         ab = b - a
         t = np.clip(((X - a) @ ab) / (ab @ ab), 0.0, 1.0)
         best = np.minimum(best, np.hypot(*(X - a - t[:, None] * ab).T))
+    if not closed:
+        return best, None
     # inside: even-odd crossing of a ray to +x
     inside = np.zeros(len(X), dtype=bool)
     for a, b in zip(A, B):
@@ -97,6 +103,7 @@ def main():
     g = ap.add_mutually_exclusive_group(required=True)
     g.add_argument("--cube", metavar="MESH")
     g.add_argument("--polygon", nargs=2, metavar=("MESH", "CURVE"))
+    g.add_argument("--polyline", nargs=2, metavar=("MESH", "CURVE"))
     g.add_argument("--reference", metavar="REF")
     sg = ap.add_mutually_exclusive_group()
     sg.add_argument("--signed", dest="signed", action="store_true", default=None)
@@ -121,6 +128,12 @@ def main():
     elif a.polygon:
         du, ds = polygon_answer(read_off(a.polygon[0]), read_curve(a.polygon[1]))
         exact = ds if signed else du
+        side = ds
+    elif a.polyline:
+        if signed:
+            sys.exit("--polyline: an open polyline has no sign here")
+        du, _ = polygon_answer(read_off(a.polyline[0]), read_curve(a.polyline[1]), closed=False)
+        exact = du
     else:
         rh, exact = read_values(a.reference)
         if signed and "gc_geo curve_heat signed" in rh:
@@ -133,12 +146,18 @@ def main():
         print("%s: %d non-finite values" % (a.dist, bad.sum()), file=sys.stderr)
     err = np.abs(d - exact)
     scale = np.max(np.abs(exact))
+    off = err > 1e-9 * scale
+    off_text = "  off=%d" % off.sum()
+    if a.polygon and off.any():
+        above = np.abs(d) > np.abs(exact)
+        off_text += " (inside %d, outside %d; above the answer %d)" % ((off & (side < 0)).sum(), (off & (side > 0)).sum(),
+                                                                       (off & above).sum())
     i = int(np.nanargmax(np.where(bad, np.inf, err)))
     label = a.label or a.dist
     print("%s  %s  n=%d  max_rel=%.3e  mean_rel=%.3e  max_abs=%.3e  at_vertex=%d (answer %.4g, from curve %.4g)"
-          "  max_dist=%.6g%s" % (label, "signed" if signed else "unsigned", len(d), err.max() / scale,
-                                 np.mean(err) / scale, err.max(), i, exact[i], du[i], scale,
-                                 "  flipped" if flip else ""))
+          "  max_dist=%.6g%s%s" % (label, "signed" if signed else "unsigned", len(d), err.max() / scale,
+                                   np.mean(err) / scale, err.max(), i, exact[i], du[i], scale, off_text,
+                                   "  flipped" if flip else ""))
 
 
 if __name__ == "__main__":

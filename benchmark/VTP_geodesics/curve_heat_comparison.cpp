@@ -3,13 +3,14 @@
 // anchor's driver reads (geometry-central's `curve_heat` mode): whitespace-separated 0-based vertex indices, each
 // joined to the next by a mesh edge, the last joined to the first (the curve is closed here by repeating the first).
 //
-//   curve_heat_comparison MESH.off CURVE OUT.txt [signed] [REPEATS] [samples=K]
+//   curve_heat_comparison MESH.off CURVE OUT.txt [signed] [REPEATS] [samples=K] [open]
 //
 // OUT.txt: a '#' header line, then one distance per vertex in the OFF file's vertex order (ours: negative on the
 // left of the curve, left = outward face normal x direction of travel). Timings on stderr, one line:
 //   curve_heat_comparison: signed|unsigned nV=.. curve_vertices=.. build_s=.. compute_s=.. propagation_s=..
 // build_s: the solver's constructor (the mesh's arrays), once; compute_s: add_source_curve() + compute() (wall),
 // propagation_s: statistics().seconds (the propagation alone); with REPEATS > 1 the median of each over the runs.
+// open: the curve is not closed (its last vertex is not joined to its first; unsigned only): the smallest cases.
 //
 // samples=K: a check of the curve run that does not use curve sources: one more run from point sources, K points
 // evenly spaced along each edge of the curve (its ends included), gives d_S; the distance d from the curve must lie
@@ -56,13 +57,15 @@ int main(int argc, char** argv)
     std::cerr << "usage: curve_heat_comparison MESH.off CURVE OUT.txt [signed] [REPEATS]\n";
     return 2;
   }
-  bool is_signed = false;
+  bool is_signed = false, is_open = false;
   int repeats = 1, samples = 0;
   for(int i = 4; i < argc; ++i)
   {
     const std::string a = argv[i];
     if(a == "signed")
       is_signed = true;
+    else if(a == "open")
+      is_open = true;
     else if(a.rfind("samples=", 0) == 0 && std::atoi(a.c_str() + 8) > 0)
       samples = std::atoi(a.c_str() + 8);
     else if(std::atoi(argv[i]) > 0)
@@ -102,15 +105,21 @@ int main(int argc, char** argv)
       return 1;
     }
   }
+  if(is_open && is_signed)
+  {
+    std::cerr << "curve_heat_comparison: signed needs a closed curve here\n";
+    return 2;
+  }
   // each consecutive pair (and the last with the first) must be a mesh edge, as the anchor's driver requires
-  for(std::size_t i = 0; i < curve.size(); ++i)
+  for(std::size_t i = 0; i + (is_open ? 1 : 0) < curve.size(); ++i)
     if(!halfedge(curve[i], curve[(i + 1) % curve.size()], mesh).second)
     {
       std::cerr << "curve_heat_comparison: vertices " << curve[i] << " and " << curve[(i + 1) % curve.size()]
                 << " are not joined by an edge\n";
       return 1;
     }
-  curve.push_back(curve.front()); // closed
+  if(!is_open)
+    curve.push_back(curve.front()); // closed
 
   const double b0 = now();
   CGAL::VTP_geodesics::Geodesic_distance_solver<Mesh> solver(mesh);
@@ -133,7 +142,7 @@ int main(int argc, char** argv)
   std::fprintf(stderr,
                "curve_heat_comparison: %s nV=%zu curve_vertices=%zu build_s=%.6f compute_s=%.6f propagation_s=%.6f "
                "repeats=%d windows_created=%zu\n",
-               is_signed ? "signed" : "unsigned", n, curve.size() - 1, build_s, median(t_compute), median(t_prop),
+               is_signed ? "signed" : "unsigned", n, curve.size() - (is_open ? 0 : 1), build_s, median(t_compute), median(t_prop),
                repeats, solver.statistics().windows_created);
   if(samples > 0)
   {
