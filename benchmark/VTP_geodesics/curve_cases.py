@@ -17,6 +17,9 @@ curve_heat_comparison and of the anchor driver's curve_heat mode).
       a UV sphere of radius R: two poles and NLAT - 1 rings of NLON vertices (NLAT even: the ring at latitude 0
       exists), quads split along alternating diagonals, caps of triangles; the loop is the equator walked
       eastward (counter-clockwise seen from +z, the north on its left), starting at its vertex START (default 0).
+  curve_cases.py points MESH.off CURVE OUT.txt
+      the closed curve CURVE of MESH as the points `X Y Z` of `vtp_geodesics --source-curve` (its first point
+      repeated last: closed).
 """
 import math
 import random
@@ -138,6 +141,18 @@ def main(argv):
             sys.exit("grid: need JITTER in [0, 0.25] and 0 <= LO < HI < N")
         pts, fcs, loop = grid(n, jit, seed, lo, hi)
         out_off, out_curve = argv[7], argv[8]
+    elif kind == "points" and len(argv) == 5:
+        with open(argv[2]) as f:
+            toks = [t for line in f for t in line.split("#", 1)[0].split()]
+        nv = int(toks[1])
+        pts = [tuple(toks[4 + 3 * i:7 + 3 * i]) for i in range(nv)]
+        with open(argv[3]) as f:
+            loop = [int(t) for t in f.read().split()]
+        with open(argv[4], "w") as f:
+            for i in loop + loop[:1]:
+                f.write("%s %s %s\n" % pts[i])
+        print("%s: %d points" % (argv[4], len(loop) + 1))
+        return
     elif kind == "sphere" and len(argv) in (7, 8):
         nlon, nlat, r = int(argv[2]), int(argv[3]), float(argv[4])
         if nlat % 2 or nlat < 4 or nlon < 3:
