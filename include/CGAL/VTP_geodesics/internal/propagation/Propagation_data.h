@@ -91,6 +91,9 @@ public:
   Direction_record direction;          // the log map
   std::vector<Index> fifo;             // queued lists (sequential scheduling: FIFO order)
   Known_vertices known;                // runs from known distances
+  // whether a source is a piece of a curve, so that the lists may hold line windows (set by seed_sources();
+  // without, the lists are filtered and propagated without testing the kind of each window)
+  bool line_windows = false;
   // if set, every vertex whose distance becomes finite through light() is appended (Local_propagation.h)
   std::vector<Index>* reached = nullptr;
 

@@ -313,7 +313,7 @@ public:
     const Halfedge_geometry& g = m.geometry[h];
     const Index a = m.source[h];
     const Index b = m.source[Mesh_arrays::next(h)];
-    filter_list(s.in, g.length, dist[a], dist[b], settings.minimum_window_ratio * g.length, s.list);
+    filter_list(s.in, g.length, dist[a], dist[b], settings.minimum_window_ratio * g.length, s.list, line_windows);
     Offer offer;
     if(s.in.empty())
       return offer;
@@ -327,7 +327,7 @@ public:
     const Index h_ac = m.opposite[Mesh_arrays::prev(h)];
     const Propagation_result r = propagate_list(g, s.in, s.list.ends, settings.minimum_window_ratio,
                                                 h_ac != NO_INDEX, h_cb != NO_INDEX, s.out_ac, s.out_cb, s.list.xc,
-                                                direction.is_active());
+                                                direction.is_active(), line_windows);
     s.propagated += r.propagated;
     offer.distance = r.distance_to_C;
     if(offer.distance < std::numeric_limits<double>::infinity())

@@ -242,6 +242,7 @@ inline Seed seed_from_barycentric(const Mesh_arrays& m, Index f, double b0, doub
 inline void seed_sources(Propagation_state& st, const std::vector<Seed>& seeds)
 {
   const Mesh_arrays& m = *st.mesh;
+  st.line_windows = has_segments(seeds);
   st.seed_label.resize(seeds.size());
   for(std::size_t i = 0; i < seeds.size(); ++i)
     st.seed_label[i] = seeds[i].label;

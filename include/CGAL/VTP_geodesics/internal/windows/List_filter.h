@@ -39,24 +39,25 @@ namespace internal {
 // no shortest path: every point beyond is reached at least as fast through X or Y. A line window offers
 // sigma + sx q, |sx| < 1: the same holds, and the ends are roots of linear equations.
 // Returns false when nothing is left; otherwise `e` holds the distances at the new ends.
-inline bool trim_by_vertices(Window& w, Window_ends& e, double L, double dX, double dY)
+template <bool line>
+inline bool trim_by_vertices_of(Window& w, Window_ends& e, double L, double dX, double dY)
 {
-  e.f0 = window_distance(w, w.b0);
-  e.f1 = window_distance(w, w.b1);
+  e.f0 = distance_of<line>(w, w.b0);
+  e.f1 = distance_of<line>(w, w.b1);
   // prefix dominated by X
   if(e.f1 > dX + w.b1)
     return false;
   if(e.f0 > dX + w.b0)
   {
     const double D = dX - w.sigma;
-    const double den = is_line(w) ? 1. - w.sx : 2. * (w.sx + D);
-    double t = !(den > 0.) ? w.b0 : is_line(w) ? -D / den : (w.sx * w.sx + w.sy * w.sy - D * D) / den;
+    const double den = line ? 1. - w.sx : 2. * (w.sx + D);
+    double t = !(den > 0.) ? w.b0 : line ? -D / den : (w.sx * w.sx + w.sy * w.sy - D * D) / den;
     if(!(t > w.b0)) t = w.b0;
     if(t > w.b1) t = w.b1;
     if(t != w.b0)
     {
       w.b0 = t;
-      e.f0 = window_distance(w, t);
+      e.f0 = distance_of<line>(w, t);
     }
   }
   // suffix dominated by Y
@@ -65,7 +66,7 @@ inline bool trim_by_vertices(Window& w, Window_ends& e, double L, double dX, dou
   if(e.f1 > dY + (L - w.b1))
   {
     double nb1;
-    if(is_line(w))
+    if constexpr(line)
     {
       // sigma + sx x > dY + L - x beyond (dY + L - sigma) / (1 + sx)
       const double den = 1. + w.sx;
@@ -84,10 +85,16 @@ inline bool trim_by_vertices(Window& w, Window_ends& e, double L, double dX, dou
     if(nb1 != w.b1)
     {
       w.b1 = nb1;
-      e.f1 = window_distance(w, nb1);
+      e.f1 = distance_of<line>(w, nb1);
     }
   }
   return w.b1 > w.b0;
+}
+
+// (the kind of w tested once)
+inline bool trim_by_vertices(Window& w, Window_ends& e, double L, double dX, double dY)
+{
+  return is_line(w) ? trim_by_vertices_of<true>(w, e, L, dX, dY) : trim_by_vertices_of<false>(w, e, L, dX, dY);
 }
 
 inline bool trim_by_vertices(Window& w, double L, double dX, double dY)
@@ -141,8 +148,10 @@ inline void sort_by_start(std::vector<Window>& ws, std::vector<Window>& buffer)
 // right parts of the windows cut in two (sorted too), with the distances at the ends of its
 // windows in scratch.ends. During the filtering, a window that is cut away
 // stays in place, shorter than `min_length` (see is_alive()); it is dropped at the end.
-inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB, double min_length,
-                        List_scratch& scratch)
+// (`mixed`: the list may hold line windows; a list of point windows only is filtered without testing their kind)
+template <bool mixed>
+inline void filter_list_of(std::vector<Window>& ws, double L, double dA, double dB, double min_length,
+                           List_scratch& scratch)
 {
   const std::size_t n = ws.size();
   sort_by_start(ws, scratch.buffer);
@@ -151,7 +160,8 @@ inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB,
   for(std::size_t i = 0; i < n; ++i)
   {
     Window& w = ws[i];
-    if(!trim_by_vertices(w, ends[i], L, dA, dB) || !is_alive(w, min_length))
+    const bool kept = mixed ? trim_by_vertices(w, ends[i], L, dA, dB) : trim_by_vertices_of<false>(w, ends[i], L, dA, dB);
+    if(!kept || !is_alive(w, min_length))
       w.b1 = w.b0 - 1.;
   }
   // Sweep in the order of the starts (trimming may have moved a few of them: skipping a pair is
@@ -188,7 +198,7 @@ inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB,
       const Index a = active[j];
       Window& v = ws[static_cast<std::size_t>(a)];
       if(w.b1 > w.b0 && v.b1 > w.b0)
-        prune_pair(v, ends[static_cast<std::size_t>(a)], w, ew, pieces);
+        prune_pair<mixed>(v, ends[static_cast<std::size_t>(a)], w, ew, pieces);
       if(v.b1 > v.b0 && v.b1 > w.b0)
         active[kept++] = a;
     }
@@ -210,6 +220,16 @@ inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB,
     }
   ws.resize(k);
   ends.resize(k);
+}
+
+// (`lines`: the list may hold line windows, i.e. a source of the run is a curve)
+inline void filter_list(std::vector<Window>& ws, double L, double dA, double dB, double min_length,
+                        List_scratch& scratch, bool lines = true)
+{
+  if(lines)
+    filter_list_of<true>(ws, L, dA, dB, min_length, scratch);
+  else
+    filter_list_of<false>(ws, L, dA, dB, min_length, scratch);
 }
 
 } // namespace internal

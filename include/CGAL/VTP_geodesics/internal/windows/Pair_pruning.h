@@ -37,10 +37,12 @@ inline int compare_distances(double fa, double fb)
 
 // Sign of window_distance(w, x) - F, as compare_distances() gives it (with the tolerance taken
 // from F), without the square root.
+template <bool points>
 inline int compare_distance_to(const Window& w, double x, double F)
 {
-  if(is_line(w))
-    return compare_distances(window_distance(w, x), F);
+  if constexpr(!points)
+    if(is_line(w))
+      return compare_distances(window_distance(w, x), F);
   const double dx = x - w.sx;
   const double q = dx * dx + w.sy * w.sy;
   const double tol = 1e-13 * F;
@@ -55,14 +57,15 @@ inline int compare_distance_to(const Window& w, double x, double F)
 
 // Sign of window_distance(a, x) - window_distance(b, x), where at least one of them is known
 // (fa, fb; `known_a`, `known_b`): one square root at most.
+template <bool points>
 inline int compare_at(const Window& a, bool known_a, double fa, const Window& b, bool known_b, double fb, double x)
 {
   if(known_a && known_b)
     return compare_distances(fa, fb);
   if(known_b)
-    return compare_distance_to(a, x, fb);
+    return compare_distance_to<points>(a, x, fb);
   CGAL_assertion(known_a);
-  return -compare_distance_to(b, x, fa);
+  return -compare_distance_to<points>(b, x, fa);
 }
 
 // Whether the quadratic q(x) = (qa x + qb) x + qc may vanish inside (l, r); false only if it has
@@ -88,26 +91,30 @@ inline bool may_vanish_inside(double qa, double qb, double qc, double l, double 
 
 // A polynomial q(x) = (qa x + qb) x + qc that vanishes wherever windows a and b offer the same distance at
 // (x, 0) (it may vanish elsewhere too: its roots are candidates only).
+template <bool points>
 inline void difference_polynomial(const Window& a, const Window& b, double& qa, double& qb, double& qc)
 {
-  if(is_line(a) && is_line(b))
+  if constexpr(!points)  // (points: both are point windows)
   {
-    // (sigma_a - sigma_b) + (sx_a - sx_b) x
-    qa = 0.;
-    qb = a.sx - b.sx;
-    qc = a.sigma - b.sigma;
-    return;
-  }
-  if(is_line(a) || is_line(b))
-  {
-    // beta + n x = sqrt((x - px)^2 + py^2), beta = sigma_line - sigma_point, squared once
-    const Window& l = is_line(a) ? a : b;
-    const Window& p = is_line(a) ? b : a;
-    const double beta = l.sigma - p.sigma, n = l.sx;
-    qa = n * n - 1.;
-    qb = 2. * (beta * n + p.sx);
-    qc = beta * beta - p.sx * p.sx - p.sy * p.sy;
-    return;
+    if(is_line(a) && is_line(b))
+    {
+      // (sigma_a - sigma_b) + (sx_a - sx_b) x
+      qa = 0.;
+      qb = a.sx - b.sx;
+      qc = a.sigma - b.sigma;
+      return;
+    }
+    if(is_line(a) || is_line(b))
+    {
+      // beta + n x = sqrt((x - px)^2 + py^2), beta = sigma_line - sigma_point, squared once
+      const Window& l = is_line(a) ? a : b;
+      const Window& p = is_line(a) ? b : a;
+      const double beta = l.sigma - p.sigma, n = l.sx;
+      qa = n * n - 1.;
+      qb = 2. * (beta * n + p.sx);
+      qc = beta * beta - p.sx * p.sx - p.sy * p.sy;
+      return;
+    }
   }
   // sqrt(Qa) = beta + sqrt(Qb), beta = sigma_b - sigma_a, squared twice
   const double beta = b.sigma - a.sigma;
@@ -167,12 +174,15 @@ inline bool starts_later(const Window_piece& x, const Window_piece& y) { return 
 // both ends (the other loses the whole overlap, provided q keeps its sign).
 //
 // prune_pair() settles the ties and leaves the others to settle_pair().
+template <bool points>
 inline void settle_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb, double l, double r, int sl, int sr,
                         std::vector<Window_piece>& pieces)
 {
+  // (points: both are point windows, tested once by prune_pair())
+  auto distance = [](const Window& w, double x) { return points ? distance_of<false>(w, x) : window_distance(w, x); };
   const bool al = (l == a.b0), bl = (l == b.b0), ar = (r == a.b1), br = (r == b.b1);
   double qa, qb, qc;
-  difference_polynomial(a, b, qa, qb, qc);
+  difference_polynomial<points>(a, b, qa, qb, qc);
 
   // The same window shorter at both ends, or at one end with a near-tie at the other: if q keeps
   // its sign inside, so does fa - fb, and the other window loses the whole overlap.
@@ -190,11 +200,11 @@ inline void settle_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb, 
       Window_piece piece;
       piece.w = w;
       piece.w.b0 = r;
-      piece.e.f0 = window_distance(w, r);
+      piece.e.f0 = distance(w, r);
       piece.e.f1 = e.f1;
       pieces.push_back(piece);
       std::push_heap(pieces.begin(), pieces.end(), starts_later);
-      e.f1 = window_distance(w, l);
+      e.f1 = distance(w, l);
       w.b1 = l;
       return;
     }
@@ -202,20 +212,20 @@ inline void settle_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb, 
       w.b1 = w.b0 - 1.;
     else if(starts)
     {
-      e.f0 = window_distance(w, r);
+      e.f0 = distance(w, r);
       w.b0 = r;
     }
     else
     {
-      e.f1 = window_distance(w, l);
+      e.f1 = distance(w, l);
       w.b1 = l;
     }
     return;
   }
-  const double fal = al ? ea.f0 : window_distance(a, l);
-  const double fbl = bl ? eb.f0 : window_distance(b, l);
-  const double far = ar ? ea.f1 : window_distance(a, r);
-  const double fbr = br ? eb.f1 : window_distance(b, r);
+  const double fal = al ? ea.f0 : distance(a, l);
+  const double fbl = bl ? eb.f0 : distance(b, l);
+  const double far = ar ? ea.f1 : distance(a, r);
+  const double fbr = br ? eb.f1 : distance(b, r);
   CGAL_assertion(compare_distances(fal, fbl) == sl || sl == 0 || compare_distances(fal, fbl) == 0);
 
   // Candidate break points: the roots and the apex of the quadratic. Extra candidates are
@@ -263,8 +273,8 @@ inline void settle_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb, 
   end_sign[0] = compare_distances(fal, fbl);
   for(int i = 1; i < nc - 1; ++i)
   {
-    fa[i] = window_distance(a, cuts[i]);
-    fb[i] = window_distance(b, cuts[i]);
+    fa[i] = distance(a, cuts[i]);
+    fb[i] = distance(b, cuts[i]);
     end_sign[i] = compare_distances(fa[i], fb[i]);
   }
   fa[nc - 1] = far;
@@ -309,6 +319,8 @@ inline void settle_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb, 
   }
 }
 
+// `mixed`: the list may hold line windows (else both are point windows, untested).
+template <bool mixed>
 inline void prune_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb, std::vector<Window_piece>& pieces)
 {
   const double l = (std::max)(a.b0, b.b0);
@@ -316,11 +328,19 @@ inline void prune_pair(Window& a, Window_ends& ea, Window& b, Window_ends& eb, s
   if(!(r > l))
     return;
   // l is the start of a or b, r the end of a or b: there the distance is known
-  const int sl = compare_at(a, l == a.b0, ea.f0, b, l == b.b0, eb.f0, l);
-  const int sr = compare_at(a, r == a.b1, ea.f1, b, r == b.b1, eb.f1, r);
+  if(!mixed || (!is_line(a) && !is_line(b)))
+  {
+    const int sl = compare_at<true>(a, l == a.b0, ea.f0, b, l == b.b0, eb.f0, l);
+    const int sr = compare_at<true>(a, r == a.b1, ea.f1, b, r == b.b1, eb.f1, r);
+    if(sl != 0 || sr != 0)
+      settle_pair<true>(a, ea, b, eb, l, r, sl, sr, pieces);
+    return;
+  }
+  const int sl = compare_at<false>(a, l == a.b0, ea.f0, b, l == b.b0, eb.f0, l);
+  const int sr = compare_at<false>(a, r == a.b1, ea.f1, b, r == b.b1, eb.f1, r);
   if(sl == 0 && sr == 0)
     return;
-  settle_pair(a, ea, b, eb, l, r, sl, sr, pieces);
+  settle_pair<false>(a, ea, b, eb, l, r, sl, sr, pieces);
 }
 
 } // namespace internal

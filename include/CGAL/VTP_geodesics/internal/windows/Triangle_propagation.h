@@ -49,6 +49,7 @@ struct Propagation_result
 // child edge: a ray that does not meet the line of the child edge properly (only by rounding,
 // for the ray through C) is sent to C. `turn` is the direction of the child edge in the frame of h (its
 // atan2, for the log map; 0 without it).
+template <bool mixed>
 inline void emit_child(const Window& w, double p0, double p1,
                        double ox, double oy, double ux, double uy, double lc, double c_pos,
                        double min_length, double turn, std::vector<Window>& out)
@@ -60,7 +61,7 @@ inline void emit_child(const Window& w, double p0, double p1,
   rotate_into(p0 - ox, -oy, ux, uy, px0, py0);
   rotate_into(p1 - ox, -oy, ux, uy, px1, py1);
   double x0, x1;
-  if(is_line(w))
+  if(mixed && is_line(w))
   {
     // the direction turns with the frame; sigma becomes the distance at the origin of the child edge
     rotate_into(w.sx, w.sy, ux, uy, c.sx, c.sy);
@@ -98,13 +99,14 @@ inline void emit_child(const Window& w, double p0, double p1,
 // The children are appended to out_ac (frame of A -> C) and out_cb (frame of C -> B); when
 // `want_ac` / `want_cb` is false (border edge) the corresponding children are not computed. With
 // `want_angles` (the log map), the children's angles get the change of frame.
+template <bool mixed>
 inline Propagation_result
-propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
-               const std::vector<Window_ends>& ends,
-               double min_ratio,
-               bool want_ac, bool want_cb,
-               std::vector<Window>& out_ac, std::vector<Window>& out_cb,
-               std::vector<double>& scratch_xc, bool want_angles = false)
+propagate_list_of(const Halfedge_geometry& g, const std::vector<Window>& ws,
+                  const std::vector<Window_ends>& ends,
+                  double min_ratio,
+                  bool want_ac, bool want_cb,
+                  std::vector<Window>& out_ac, std::vector<Window>& out_cb,
+                  std::vector<double>& scratch_xc, bool want_angles)
 {
   CGAL_precondition(ends.size() == ws.size());
   Propagation_result res;
@@ -121,10 +123,11 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
   for(std::size_t i = 0; i < n; ++i)
   {
     const Window& w = ws[i];
-    const double xc = ray_crossing(w, cx, cy);
+    const bool line = mixed && is_line(w);  // (tested once per window, in lists that hold line windows)
+    const double xc = line ? cx - w.sx * (cy / w.sy) : ray_crossing(w.sx, w.sy, cx, cy, cx);
     scratch_xc[i] = xc;
     double base, sp, ex, ey;
-    if(xc >= w.b0 && xc <= w.b1 && is_line(w))
+    if(line && xc >= w.b0 && xc <= w.b1)
     {
       // straight to C along the parallel front (never below 0: C on the curve, to rounding)
       const double dist = (std::max)(0., w.sigma + w.sx * cx + w.sy * cy);
@@ -186,16 +189,31 @@ propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
     {
       const double p1 = (std::min)(w.b1, (std::min)(xc, sp_s));
       if(p1 > w.b0)
-        emit_child(w, w.b0, p1, 0., 0., uax, uay, lac, lac, min_ac, turn_ac, out_ac);
+        emit_child<mixed>(w, w.b0, p1, 0., 0., uax, uay, lac, lac, min_ac, turn_ac, out_ac);
     }
     if(want_cb && lcb > 0.)
     {
       const double p0 = (std::max)(w.b0, (std::max)(xc, sp_s));
       if(w.b1 > p0)
-        emit_child(w, p0, w.b1, cx, cy, ubx, uby, lcb, 0., min_cb, turn_cb, out_cb);
+        emit_child<mixed>(w, p0, w.b1, cx, cy, ubx, uby, lcb, 0., min_cb, turn_cb, out_cb);
     }
   }
   return res;
+}
+
+// (`lines`: the list may hold line windows, i.e. a source of the run is a curve; without, the list is propagated
+// without testing the kind of each window)
+inline Propagation_result
+propagate_list(const Halfedge_geometry& g, const std::vector<Window>& ws,
+               const std::vector<Window_ends>& ends,
+               double min_ratio,
+               bool want_ac, bool want_cb,
+               std::vector<Window>& out_ac, std::vector<Window>& out_cb,
+               std::vector<double>& scratch_xc, bool want_angles = false, bool lines = true)
+{
+  if(lines)
+    return propagate_list_of<true>(g, ws, ends, min_ratio, want_ac, want_cb, out_ac, out_cb, scratch_xc, want_angles);
+  return propagate_list_of<false>(g, ws, ends, min_ratio, want_ac, want_cb, out_ac, out_cb, scratch_xc, want_angles);
 }
 
 // The window from a point source at (t, 0) of h, at distance sigma, that covers the whole edge X -> Y of

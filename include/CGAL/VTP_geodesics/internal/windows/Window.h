@@ -81,13 +81,23 @@ inline double ray_crossing(const Window& w, double px, double py)
   return ray_crossing(w.sx, w.sy, px, py, px);
 }
 
-// The distance window w offers at the point (x, 0) of its edge.
+// The distance window w offers at the point (x, 0) of its edge; distance_of<true> for a line window,
+// distance_of<false> for a point window (the hot loops of the lists test the kind once per window).
+template <bool line>
+inline double distance_of(const Window& w, double x)
+{
+  if constexpr(line)
+    return w.sigma + w.sx * x;
+  else
+  {
+    const double dx = x - w.sx;
+    return w.sigma + std::sqrt(dx * dx + w.sy * w.sy);
+  }
+}
+
 inline double window_distance(const Window& w, double x)
 {
-  if(is_line(w))
-    return w.sigma + w.sx * x;
-  const double dx = x - w.sx;
-  return w.sigma + std::sqrt(dx * dx + w.sy * w.sy);
+  return is_line(w) ? distance_of<true>(w, x) : distance_of<false>(w, x);
 }
 
 // The smallest distance that window w offers at a point (px, py), py >= 0, of the face it is about to
