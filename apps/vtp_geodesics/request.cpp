@@ -13,6 +13,7 @@
 #include "query_points.h"
 
 #include <vtp_support/number_format.h>
+#include <vtp_support/surface_locator.h>
 
 #include <algorithm>
 #include <cmath>
@@ -73,32 +74,7 @@ void add_paths(const Arguments& args, const vtp_support::Input_mesh& input,
   }
 }
 
-// The length of the diagonal of the bounding box of the mesh's vertices (0 without vertex).
-double bounding_box_diagonal(const vtp_support::Mesh& mesh)
-{
-  bool first = true;
-  double lo[3] = { 0., 0., 0. }, hi[3] = { 0., 0., 0. };
-  for(vtp_support::Vertex_index v : mesh.vertices())
-  {
-    const vtp_support::Point_3& p = mesh.point(v);
-    const double x[3] = { p.x(), p.y(), p.z() };
-    for(int k = 0; k < 3; ++k)
-    {
-      lo[k] = first ? x[k] : (std::min)(lo[k], x[k]);
-      hi[k] = first ? x[k] : (std::max)(hi[k], x[k]);
-    }
-    first = false;
-  }
-  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1])
-                   + (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
-
 } // namespace
-
-// A point of a --source-curve farther from the surface than this fraction of the diagonal of the mesh's bounding
-// box is an error (the other points of the command line are replaced by their nearest surface points: a curve
-// far off the surface is more likely a curve of another mesh, or in other units).
-const double curve_point_tolerance = 1e-6;
 
 Request make_request(const Arguments& args, const vtp_support::Method_info& method,
                      const vtp_support::Input_mesh& input)
@@ -128,7 +104,7 @@ Request make_request(const Arguments& args, const vtp_support::Method_info& meth
   const std::vector<Located_point> path_points = locate_all(args.path_to_points, "--path-to-point");
   if(!args.source_curves.empty())
   {
-    const double tolerance = curve_point_tolerance * bounding_box_diagonal(input.mesh);
+    const double tolerance = vtp_support::curve_point_tolerance * vtp_support::bounding_box_diagonal(input.mesh);
     for(const Arguments::Curve& c : args.source_curves)
     {
       Run_request::Curve curve;

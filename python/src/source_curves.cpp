@@ -25,34 +25,6 @@
 
 namespace vtp_python {
 
-namespace {
-
-// The length of the diagonal of the bounding box of the mesh's vertices (as the tool's request.cpp).
-double bounding_box_diagonal(const Mesh& mesh)
-{
-  bool first = true;
-  double lo[3] = { 0., 0., 0. }, hi[3] = { 0., 0., 0. };
-  for(Vertex_index v : mesh.vertices())
-  {
-    const Point_3& p = mesh.point(v);
-    const double x[3] = { p.x(), p.y(), p.z() };
-    for(int k = 0; k < 3; ++k)
-    {
-      lo[k] = first ? x[k] : (std::min)(lo[k], x[k]);
-      hi[k] = first ? x[k] : (std::max)(hi[k], x[k]);
-    }
-    first = false;
-  }
-  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1])
-                   + (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
-
-// A point given as xyz farther from the surface than this fraction of the diagonal of the mesh's bounding box is
-// refused (the tool's --source-curve: the same rule).
-const double curve_point_tolerance = 1e-6;
-
-} // namespace
-
 // Returns (distances (n,), labels (n,) int64 or None). The curves: their points (curve_faces (K,), curve_bary
 // (K, 3), with respect to F's corners), curve k being points curve_offsets[k] .. curve_offsets[k + 1]; curve_xyz
 // (K, 3): the position each point was located from (NaN for a point given as (face, barycentric)).
@@ -99,7 +71,7 @@ py::tuple Core_solver::curve_distances(const Index_array& sources, const Index_a
   const std::size_t located = (std::min)(curve_points.size(), static_cast<std::size_t>(curve_xyz.size()) / 3);
   if(located > 0)
   {
-    const double tolerance = curve_point_tolerance * bounding_box_diagonal(m_mesh);
+    const double tolerance = vtp_support::curve_point_tolerance * vtp_support::bounding_box_diagonal(m_mesh);
     std::size_t curve = 0;
     for(std::size_t i = 0; i < located; ++i)
     {

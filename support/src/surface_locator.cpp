@@ -75,4 +75,23 @@ std::array<double, 3> Surface_locator::point_of(const Face_location& l) const
   return r;
 }
 
+double bounding_box_diagonal(const Mesh& mesh)
+{
+  bool first = true;
+  double lo[3] = { 0., 0., 0. }, hi[3] = { 0., 0., 0. };
+  for(Vertex_index v : mesh.vertices())
+  {
+    const Point_3& p = mesh.point(v);
+    const double x[3] = { p.x(), p.y(), p.z() };
+    for(int k = 0; k < 3; ++k)
+    {
+      lo[k] = first ? x[k] : (std::min)(lo[k], x[k]);
+      hi[k] = first ? x[k] : (std::max)(hi[k], x[k]);
+    }
+    first = false;
+  }
+  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1])
+                   + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
 } // namespace vtp_support

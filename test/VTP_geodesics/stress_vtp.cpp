@@ -719,6 +719,63 @@ std::string describe(const Difference& d)
   return os.str();
 }
 
+// The distances d from a curve against ds, those from points sampled on it at most `step` apart (along it): d <= ds
+// and d >= ds - step / 2, to TOLERANCE * scale, the same vertices reached. `name` starts the description of the
+// first failure (an empty string if none).
+std::string check_sampled_bounds(const std::string& name, const std::vector<double>& d, const std::vector<double>& ds,
+                                 double step, double scale)
+{
+  std::ostringstream failure;
+  failure.precision(17);
+  for(std::size_t i = 0; i < d.size() && failure.str().empty(); ++i)
+  {
+    if(std::isfinite(d[i]) != std::isfinite(ds[i]) || std::isnan(d[i]))
+      failure << name << ": vertex " << i << " at " << d[i] << ", samples " << ds[i];
+    else if(std::isfinite(d[i]) && (d[i] > ds[i] + TOLERANCE * scale || d[i] < ds[i] - step / 2. - TOLERANCE * scale))
+      failure << name << ": vertex " << i << " at " << d[i] << ", not within [" << ds[i] - step / 2. << ", " << ds[i]
+              << "] (the samples every " << step << ")";
+  }
+  return failure.str();
+}
+
+// The paths of five vertices (from vertex `first` on, spread over the mesh) after a run from a curve recording
+// them that gave the distances d: each starts at its vertex, has the length of its distance within
+// PATH_TOLERANCE, and ends on the curve (the segments `pieces`) within 1e-9 * scale. Counted in totals.curve_paths.
+std::string check_curve_paths(const std::string& name, const Surface_mesh& mesh,
+                              Geodesic_distance_solver<Surface_mesh>& solver, const std::vector<double>& d,
+                              double scale, std::size_t first, const std::vector<vtp_test::Kernel::Segment_3>& pieces,
+                              Totals& totals)
+{
+  const std::size_t n = d.size();
+  for(std::size_t j = 0; j < 5; ++j)
+  {
+    const Vertex_index v(static_cast<Surface_mesh::size_type>((first + j * (n / 5 + 1)) % n));
+    if(!std::isfinite(d[v]))
+      continue;
+    std::vector<vtp_test::Point_3> path;
+    try { solver.shortest_path_points(v, std::back_inserter(path)); }
+    catch(const std::exception& e) { return name + ": path from vertex " + std::to_string(std::size_t(v)) + ": " + e.what(); }
+    double length = 0.;
+    for(std::size_t k = 1; k < path.size(); ++k)
+      length += std::sqrt(CGAL::squared_distance(path[k - 1], path[k]));
+    double off = std::numeric_limits<double>::infinity();  // the end's distance to the curve
+    if(!path.empty())
+      for(const auto& piece : pieces)
+        off = (std::min)(off, std::sqrt(CGAL::squared_distance(path.back(), piece)));
+    ++totals.curve_paths;
+    if(path.empty() || path.front() != mesh.point(v) || !(std::abs(length - d[v]) <= PATH_TOLERANCE * (d[v] + scale * 1e-3))
+       || !(off <= 1e-9 * scale))
+    {
+      std::ostringstream failure;
+      failure.precision(17);
+      failure << name << ": path from vertex " << std::size_t(v) << ": " << path.size() << " points, length " << length
+              << ", distance " << d[v] << ", its end " << off << " off the curve";
+      return failure.str();
+    }
+  }
+  return std::string();
+}
+
 // Distances from a curve (add_source_curve): the curve along mesh edges from s to s2 (a path of the edge graph,
 // breadth first), against points sampled on it every step (16 per edge; one multi-source run): d <= d_S and
 // d >= d_S - step / 2, to TOLERANCE of the largest distance (every point of the curve is within step / 2 of a
@@ -762,8 +819,6 @@ std::string check_curve(const Surface_mesh& mesh, Geodesic_distance_solver<Surfa
   solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), VP::record_paths(true));
   const std::vector<double> d = solver.distances();
   const double scale = (std::max)(largest_finite(d), 1e-300);
-  std::ostringstream failure;
-  failure.precision(17);
   // the samples, as face locations on the edges
   const int per_edge = 16;
   double step = 0.;
@@ -791,17 +846,9 @@ std::string check_curve(const Surface_mesh& mesh, Geodesic_distance_solver<Surfa
     }
   }
   solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), samples);
-  const std::vector<double> ds = solver.distances();
-  for(std::size_t i = 0; i < d.size() && failure.str().empty(); ++i)
-  {
-    if(std::isfinite(d[i]) != std::isfinite(ds[i]) || std::isnan(d[i]))
-      failure << "curve: vertex " << i << " at " << d[i] << ", samples " << ds[i];
-    else if(std::isfinite(d[i]) && (d[i] > ds[i] + TOLERANCE * scale || d[i] < ds[i] - step / 2. - TOLERANCE * scale))
-      failure << "curve: vertex " << i << " at " << d[i] << ", not within [" << ds[i] - step / 2. << ", " << ds[i]
-              << "] (the samples every " << step << ")";
-  }
-  if(!failure.str().empty())
-    return failure.str();
+  const std::string bounds = check_sampled_bounds("curve", d, solver.distances(), step, scale);
+  if(!bounds.empty())
+    return bounds;
   // the same edges
   solver.clear_sources();
   solver.add_source_edges(edges);
@@ -822,33 +869,10 @@ std::string check_curve(const Surface_mesh& mesh, Geodesic_distance_solver<Surfa
   solver.clear_sources();
   solver.add_source_curve(curve);
   solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), VP::record_paths(true));
-  const std::size_t n = d.size();
-  for(std::size_t j = 0; j < 5; ++j)
-  {
-    const Vertex_index v(static_cast<Surface_mesh::size_type>((std::size_t(s) + 1 + j * (n / 5 + 1)) % n));
-    if(!std::isfinite(d[v]))
-      continue;
-    std::vector<vtp_test::Point_3> path;
-    try { solver.shortest_path_points(v, std::back_inserter(path)); }
-    catch(const std::exception& e) { return "curve: path from vertex " + std::to_string(std::size_t(v)) + ": " + e.what(); }
-    double length = 0.;
-    for(std::size_t k = 1; k < path.size(); ++k)
-      length += std::sqrt(CGAL::squared_distance(path[k - 1], path[k]));
-    double off = std::numeric_limits<double>::infinity();  // the end's distance to the curve
-    if(!path.empty())
-      for(auto h : edges)
-        off = (std::min)(off, std::sqrt(CGAL::squared_distance(path.back(), vtp_test::Kernel::Segment_3(mesh.point(mesh.source(h)),
-                                                                                              mesh.point(mesh.target(h))))));
-    ++totals.curve_paths;
-    if(path.empty() || path.front() != mesh.point(v) || !(std::abs(length - d[v]) <= PATH_TOLERANCE * (d[v] + scale * 1e-3))
-       || !(off <= 1e-9 * scale))
-    {
-      failure << "curve: path from vertex " << std::size_t(v) << ": " << path.size() << " points, length " << length
-              << ", distance " << d[v] << ", its end " << off << " off the curve";
-      return failure.str();
-    }
-  }
-  return std::string();
+  std::vector<vtp_test::Kernel::Segment_3> pieces;
+  for(auto h : edges)
+    pieces.emplace_back(mesh.point(mesh.source(h)), mesh.point(mesh.target(h)));
+  return check_curve_paths("curve", mesh, solver, d, scale, std::size_t(s) + 1, pieces, totals);
 }
 
 // Distances from a curve through faces: a walk from a face of s across up to 8 faces (a point inside each face,
@@ -954,20 +978,9 @@ std::string check_curve_through_faces(const Surface_mesh& mesh, Geodesic_distanc
     }
   }
   solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), samples);
-  const std::vector<double> ds = solver.distances();
-  std::ostringstream failure;
-  failure.precision(17);
-  for(std::size_t i = 0; i < d.size() && failure.str().empty(); ++i)
-  {
-    if(std::isfinite(d[i]) != std::isfinite(ds[i]) || std::isnan(d[i]))
-      failure << "curve through faces: vertex " << i << " at " << d[i] << ", samples " << ds[i];
-    else if(std::isfinite(d[i])
-            && (d[i] > ds[i] + TOLERANCE * scale || d[i] < ds[i] - step_length / 2. - TOLERANCE * scale))
-      failure << "curve through faces: vertex " << i << " at " << d[i] << ", not within [" << ds[i] - step_length / 2.
-              << ", " << ds[i] << "] (the samples every " << step_length << ")";
-  }
-  if(!failure.str().empty())
-    return failure.str();
+  const std::string bounds = check_sampled_bounds("curve through faces", d, solver.distances(), step_length, scale);
+  if(!bounds.empty())
+    return bounds;
 #ifdef CGAL_VTP_GEODESICS_LINKED_WITH_OPENMP
   solver.compute<CGAL::Parallel_tag>(vtp_test::Discard_map(), VP::number_of_threads(2));
   const Difference parallel = compare(solver.distances(), d, std::size_t(s));
@@ -976,33 +989,10 @@ std::string check_curve_through_faces(const Surface_mesh& mesh, Geodesic_distanc
     return "curve through faces: pvtp differs from vtp by " + describe(parallel);
 #endif
   solver.compute<CGAL::Sequential_tag>(vtp_test::Discard_map(), VP::record_paths(true));
-  const std::size_t n = d.size();
-  for(std::size_t j = 0; j < 5; ++j)
-  {
-    const Vertex_index v(static_cast<Surface_mesh::size_type>((std::size_t(s) + 3 + j * (n / 5 + 1)) % n));
-    if(!std::isfinite(d[v]))
-      continue;
-    std::vector<vtp_test::Point_3> path;
-    try { solver.shortest_path_points(v, std::back_inserter(path)); }
-    catch(const std::exception& e) { return "curve through faces: path from vertex " + std::to_string(std::size_t(v)) + ": " + e.what(); }
-    double length = 0.;
-    for(std::size_t k = 1; k < path.size(); ++k)
-      length += std::sqrt(CGAL::squared_distance(path[k - 1], path[k]));
-    double off = std::numeric_limits<double>::infinity();
-    if(!path.empty())
-      for(const auto& piece : pieces)
-        off = (std::min)(off, std::sqrt(CGAL::squared_distance(
-                                path.back(), vtp_test::Kernel::Segment_3(point_of(piece.first), point_of(piece.second)))));
-    ++totals.curve_paths;
-    if(path.empty() || path.front() != mesh.point(v) || !(std::abs(length - d[v]) <= PATH_TOLERANCE * (d[v] + scale * 1e-3))
-       || !(off <= 1e-9 * scale))
-    {
-      failure << "curve through faces: path from vertex " << std::size_t(v) << ": " << path.size() << " points, length "
-              << length << ", distance " << d[v] << ", its end " << off << " off the curve";
-      return failure.str();
-    }
-  }
-  return std::string();
+  std::vector<vtp_test::Kernel::Segment_3> segments;
+  for(const auto& piece : pieces)
+    segments.emplace_back(point_of(piece.first), point_of(piece.second));
+  return check_curve_paths("curve through faces", mesh, solver, d, scale, std::size_t(s) + 3, segments, totals);
 }
 
 bool run_case(const Settings& settings, std::size_t index, Totals& totals)

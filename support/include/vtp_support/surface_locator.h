@@ -51,6 +51,15 @@ private:
   std::unique_ptr<Tree> m_tree;
 };
 
+// The length of the diagonal of the bounding box of the mesh's vertices (0 without vertex).
+double bounding_box_diagonal(const Mesh& mesh);
+
+// A point of a source curve given as a position (vtp_geodesics --source-curve, the Python module's curves=)
+// farther from the surface than this share of bounding_box_diagonal() is refused: the other positions are
+// replaced by their nearest surface points, but a curve far off the surface is more likely a curve of another
+// mesh, or in other units.
+constexpr double curve_point_tolerance = 1e-6;
+
 } // namespace vtp_support
 
 #endif // VTP_SUPPORT_SURFACE_LOCATOR_H

@@ -165,46 +165,9 @@ private:
         return true;
       if(!(sy > 0.))
         return false;
-      Index e;
-      double p0x, p0y, wx, wy, position;
-      if(m.is_degenerate_face[f])
-      {
-        // a face of (almost) zero area is crossed straight, as the windows cross it: the line goes on from
-        // the same point into the face across C-A or B-C, whichever holds the point (as in emit_point())
-        // (at C itself, through the edge of non-zero length)
-        if(xo < g.cx || (xo == g.cx && !(g.l_next > 0.)))
-        {
-          e = Mesh_arrays::prev(o);  // C -> A
-          p0x = g.cx; p0y = g.cy; wx = -g.cx; wy = -g.cy;
-        }
-        else
-        {
-          e = Mesh_arrays::next(o);  // B -> C
-          p0x = g.length; p0y = 0.; wx = g.cx - g.length; wy = g.cy;
-        }
-        position = std::sqrt((xo - p0x) * (xo - p0x) + p0y * p0y);
-      }
-      else
-      {
-        // leave through C-A or B-C, on the side of C opposite to the line
-        const double dx = sx - xo, dy = sy;
-        const double side = dx * g.cy - dy * (g.cx - xo);
-        if(side >= 0.)
-        {
-          e = Mesh_arrays::next(o);  // B -> C
-          p0x = g.length; p0y = 0.; wx = g.cx - g.length; wy = g.cy;
-        }
-        else
-        {
-          e = Mesh_arrays::prev(o);  // C -> A
-          p0x = g.cx; p0y = g.cy; wx = -g.cx; wy = -g.cy;
-        }
-        const double den = dx * wy - dy * wx;
-        double v = den != 0. ? (dx * (0. - p0y) - dy * (xo - p0x)) / den : 0.;
-        v = (std::min)((std::max)(v, 0.), 1.);
-        position = v * std::sqrt(wx * wx + wy * wy);
-      }
-      const double w = std::sqrt(wx * wx + wy * wy);
+      const Face_exit out_of = leave_face(o, xo, sx - xo, sy);
+      const Index e = out_of.e;
+      const double p0x = out_of.p0x, p0y = out_of.p0y, wx = out_of.wx, wy = out_of.wy, w = out_of.w;
       if(!(w > 0.))
         return false;
       const double ux = wx / w, uy = wy / w;
@@ -212,7 +175,7 @@ private:
       double ex, ey;
       rotate_into(sx - p0x, sy - p0y, ux, uy, ex, ey);
       h = e;
-      x = (std::min)((std::max)(position * (m.geometry[e].length / w), 0.), m.geometry[e].length);
+      x = (std::min)((std::max)(out_of.position * (m.geometry[e].length / w), 0.), m.geometry[e].length);
       sx = ex;
       sy = ey;
       const int through_end = through_vertex(h, x, sx, sy, sigma, out, origin);
@@ -273,30 +236,9 @@ private:
       }
       if(!(by > 0.))
         return false;
-      Index e;
-      double p0x, p0y, wx, wy, position;
-      const bool to_ca = m.is_degenerate_face[f] ? (xo < g.cx || (xo == g.cx && !(g.l_next > 0.)))
-                                                  : !(bx * g.cy - by * (g.cx - xo) >= 0.);
-      if(to_ca)
-      {
-        e = Mesh_arrays::prev(o);  // C -> A
-        p0x = g.cx; p0y = g.cy; wx = -g.cx; wy = -g.cy;
-      }
-      else
-      {
-        e = Mesh_arrays::next(o);  // B -> C
-        p0x = g.length; p0y = 0.; wx = g.cx - g.length; wy = g.cy;
-      }
-      if(m.is_degenerate_face[f])
-        position = std::sqrt((xo - p0x) * (xo - p0x) + p0y * p0y);
-      else
-      {
-        const double den = bx * wy - by * wx;
-        double v = den != 0. ? (bx * (0. - p0y) - by * (xo - p0x)) / den : 0.;
-        v = (std::min)((std::max)(v, 0.), 1.);
-        position = v * std::sqrt(wx * wx + wy * wy);
-      }
-      const double w = std::sqrt(wx * wx + wy * wy);
+      const Face_exit out_of = leave_face(o, xo, bx, by);
+      const Index e = out_of.e;
+      const double wx = out_of.wx, wy = out_of.wy, w = out_of.w;
       if(!(w > 0.))
         return false;
       double nbx, nby;
@@ -304,12 +246,54 @@ private:
       bx = nbx;
       by = nby;
       h = e;
-      x = (std::min)((std::max)(position * (m.geometry[e].length / w), 0.), m.geometry[e].length);
+      x = (std::min)((std::max)(out_of.position * (m.geometry[e].length / w), 0.), m.geometry[e].length);
       p.element = e;
       p.x = x;
       push(out, p);
     }
     return false;
+  }
+
+  // Where a line leaves face(o), from the point (xo, 0) of o in the direction (dx, dy) (dy > 0, frame of o): the
+  // half-edge e it crosses (C -> A or B -> C, on the side of C opposite to the line), the frame of e in that of o
+  // (its origin p0, its vector w, of length `w`) and the abscissa along e where it crosses (in the unit of the
+  // frame of o). A face of (almost) zero area is crossed straight, as the windows cross it: the line goes on from
+  // the same point into the face across C-A or B-C, whichever holds the point (as in emit_point()) (at C itself,
+  // through the edge of non-zero length). Both walks use it (follow(), follow_line()).
+  struct Face_exit
+  {
+    Index e;
+    double p0x, p0y, wx, wy, w, position;
+  };
+  Face_exit leave_face(Index o, double xo, double dx, double dy) const
+  {
+    const Mesh_arrays& m = m_mesh;
+    const Halfedge_geometry& g = m.geometry[o];
+    const bool degenerate = m.is_degenerate_face[Mesh_arrays::face(o)] != 0;
+    const bool to_ca = degenerate ? (xo < g.cx || (xo == g.cx && !(g.l_next > 0.)))
+                                  : !(dx * g.cy - dy * (g.cx - xo) >= 0.);
+    Face_exit r;
+    if(to_ca)
+    {
+      r.e = Mesh_arrays::prev(o);  // C -> A
+      r.p0x = g.cx; r.p0y = g.cy; r.wx = -g.cx; r.wy = -g.cy;
+    }
+    else
+    {
+      r.e = Mesh_arrays::next(o);  // B -> C
+      r.p0x = g.length; r.p0y = 0.; r.wx = g.cx - g.length; r.wy = g.cy;
+    }
+    r.w = std::sqrt(r.wx * r.wx + r.wy * r.wy);
+    if(degenerate)
+      r.position = std::sqrt((xo - r.p0x) * (xo - r.p0x) + r.p0y * r.p0y);
+    else
+    {
+      const double den = dx * r.wy - dy * r.wx;
+      double v = den != 0. ? (dx * (0. - r.p0y) - dy * (xo - r.p0x)) / den : 0.;
+      v = (std::min)((std::max)(v, 0.), 1.);
+      r.position = v * r.w;
+    }
+    return r;
   }
 
   // Whether the straight part towards the image (sx, sy) (frame of h, below h) of the origin, at the
